@@ -1,0 +1,53 @@
+// corlab: coefficient of restitution of elastic-plastic impacts.
+// Thin CLI: parse -> options -> validate -> run -> write. No physics here.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <memory>
+
+#include "command.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/version.hpp"
+
+namespace corlab::cli {
+std::vector<Command>& command_registry() {
+  static std::vector<Command> registry;
+  return registry;
+}
+}  // namespace corlab::cli
+
+int main(int argc, char** argv) {
+  using namespace corlab::cli;
+  CLI::App app{"corlab: coefficient of restitution of elastic-plastic impacts (SI units)"};
+  app.set_version_flag("--version", std::string(corlab::kVersion));
+  app.require_subcommand(1);
+
+  auto commands = command_registry();
+  std::sort(commands.begin(), commands.end(),
+            [](const Command& a, const Command& b) { return a.order < b.order; });
+  std::function<int()> action;
+  for (const auto& command : commands) {
+    CLI::App* sub = app.add_subcommand(command.name, command.description);
+    auto run = std::make_shared<std::function<int()>>(command.setup(*sub));
+    sub->callback([run, &action] { action = *run; });
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& err) {
+    return app.exit(err);
+  } catch (const corlab::InputError& err) {
+    std::fprintf(stderr, "corlab: error: %s\n", err.what());
+    return 2;
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const corlab::InputError& err) {
+    std::fprintf(stderr, "corlab: error: %s\n", err.what());
+    return 2;
+  } catch (const std::exception& err) {
+    std::fprintf(stderr, "corlab: internal error: %s\n", err.what());
+    return 3;
+  }
+}

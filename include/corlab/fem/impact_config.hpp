@@ -1,0 +1,97 @@
+#pragma once
+/// @file impact_config.hpp
+/// Everything that defines one impact simulation. Defaults reproduce Ma et al. 2023, Table 1, at
+/// 5 m/s: steel sphere R = 35 mm (E = 210 GPa, nu = 0.3, rho = 7850) on a 70 mm x 70 mm steel
+/// substrate with sigma_y = 500 MPa, gap 0.1 mm, smallest element 0.25 mm at the contact.
+///
+/// Text keys (TOML tables / `--set key=value`), all SI:
+///   sphere.radius, sphere.material, sphere.E, sphere.nu, sphere.rho, sphere.sigma_y
+///   substrate.radius, substrate.depth, substrate.material, substrate.E, substrate.nu,
+///   substrate.rho, substrate.sigma_y, substrate.hardening
+///   impact.velocity, impact.gap
+///   mesh.h_min, mesh.growth, mesh.h_max, mesh.refine_factor, mesh.contact_elements, mesh.file
+///   solver.safety_factor, solver.hourglass, solver.bulk_viscosity_linear,
+///   solver.bulk_viscosity_quadratic, solver.penalty_scale, solver.t_max
+///   output.times, output.history_every
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "corlab/materials/material.hpp"
+
+namespace corlab::fem {
+
+struct SphereConfig {
+  double radius = 35e-3;  ///< R [m]
+  Material material{.name = "steel_ma2023 (elastic sphere)",
+                    .youngs_modulus = 210e9,
+                    .poisson_ratio = 0.3,
+                    .density = 7850.0,
+                    .yield_stress = std::nullopt,
+                    .hardening_modulus = 0.0,
+                    .source = "Ma et al. 2023, Table 1"};  ///< elastic unless yield_stress is set
+};
+
+struct SubstrateConfig {
+  double radius = 70e-3;  ///< radial extent [m] (paper: L = 2R)
+  double depth = 70e-3;   ///< depth [m]; the bottom face is fixed
+  Material material{.name = "steel_ma2023",
+                    .youngs_modulus = 210e9,
+                    .poisson_ratio = 0.3,
+                    .density = 7850.0,
+                    .yield_stress = 500e6,
+                    .hardening_modulus = 0.0,
+                    .source = "Ma et al. 2023, Table 1"};  ///< J2 if yield_stress is set
+};
+
+struct ImpactConditions {
+  double velocity = 5.0;  ///< impact speed v > 0 [m/s], sphere moving towards the substrate
+  double gap = 0.1e-3;    ///< initial gap [m]; crossed exactly (free flight), no steps spent
+};
+
+struct MeshConfig {
+  double h_min = 0.25e-3;  ///< element size at the contact [m] (paper: 0.25 mm)
+  /// Upper bound on h at the contact as a fraction of the predicted contact radius:
+  /// h <= a_max / contact_elements, so slow impacts stay resolved. 0 disables the bound.
+  double contact_elements = 12.0;
+  double refine_factor = 1.5;  ///< refined zone = refine_factor x predicted contact radius [-]
+  double growth = 1.15;        ///< size ratio of neighbouring elements outside the zone [-]
+  double h_max = 5e-3;         ///< largest element size [m]
+  std::filesystem::path file;  ///< Gmsh .msh file; empty = built-in generator
+};
+
+struct SolverConfig {
+  double safety_factor = 0.6;  ///< dt = safety_factor x stable step estimate [-]
+  double hourglass = 0.05;     ///< stiffness hourglass coefficient (Flanagan-Belytschko) [-]
+  double bulk_viscosity_linear = 0.06;     ///< b1 [-] (ABAQUS/Explicit default)
+  double bulk_viscosity_quadratic = 1.2;   ///< b2 [-] (ABAQUS/Explicit default)
+  double penalty_scale = 0.1;  ///< contact penalty as a fraction of the stability limit [-]
+  double t_max = 0.0;          ///< hard stop [s]; 0 = 20 x the Hertz contact time
+};
+
+struct OutputConfig {
+  std::vector<double> field_times;  ///< times [s] at which to write VTU fields (empty = none)
+  int history_every = 10;           ///< write a history row every N steps
+};
+
+struct ImpactConfig {
+  SphereConfig sphere;
+  SubstrateConfig substrate;
+  ImpactConditions impact;
+  MeshConfig mesh;
+  SolverConfig solver;
+  OutputConfig output;
+};
+
+/// Throws InputError naming the first invalid field (e.g. "invalid impact.velocity = 0: ...").
+void validate(const ImpactConfig& config);
+
+/// Sets one key (see file comment) from text; throws InputError for an unknown key or bad value.
+void apply_setting(ImpactConfig& config, std::string_view key, std::string_view value);
+
+/// Reads a TOML file of the keys above over the defaults; throws InputError on any problem.
+ImpactConfig load_impact_config(const std::filesystem::path& file);
+
+}  // namespace corlab::fem

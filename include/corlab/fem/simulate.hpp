@@ -1,0 +1,28 @@
+#pragma once
+/// @file simulate.hpp
+/// Entry point of the explicit axisymmetric impact solver. Reentrant: no globals, so a study may
+/// run one simulation per thread.
+
+#include <atomic>
+#include <functional>
+
+#include "corlab/fem/impact_config.hpp"
+#include "corlab/fem/impact_result.hpp"
+#include "corlab/fem/mesh.hpp"
+
+namespace corlab::fem {
+
+struct SimulationControl {
+  /// Polled every few hundred steps; when it turns true the run stops and throws
+  /// std::runtime_error("interrupted").
+  const std::atomic<bool>* cancel = nullptr;
+  /// Called now and then with the fraction done (estimate, 0..1).
+  std::function<void(double)> progress;
+  /// Called at each requested field time with the current mesh and fields (for VTU output).
+  std::function<void(double time, const struct FieldSnapshot&)> on_fields;
+};
+
+/// Runs one impact (validates the config first; throws InputError when it is invalid).
+ImpactResult simulate(const ImpactConfig& config, const SimulationControl& control = {});
+
+}  // namespace corlab::fem

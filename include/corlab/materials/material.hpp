@@ -1,0 +1,52 @@
+#pragma once
+/// @file material.hpp
+/// An isotropic material as the impact models and the solver see it (SI units).
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace corlab {
+
+/// Isotropic elastic or elastic-plastic (J2, linear isotropic hardening) material.
+struct Material {
+  std::string name;                   ///< database key or "inline"
+  double youngs_modulus = 0.0;        ///< E [Pa]
+  double poisson_ratio = 0.0;         ///< nu [-], in (-1, 0.5)
+  double density = 0.0;               ///< rho [kg/m^3]
+  std::optional<double> yield_stress; ///< sigma_y [Pa]; empty = purely elastic
+  double hardening_modulus = 0.0;     ///< H [Pa], plastic tangent d(sigma_y)/d(eps_p); 0 = perfectly plastic
+  std::string source;                 ///< where the values come from (citation)
+
+  /// Shear modulus G = E / (2 (1 + nu)) [Pa].
+  double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
+  /// Bulk modulus K = E / (3 (1 - 2 nu)) [Pa].
+  double bulk_modulus() const { return youngs_modulus / (3.0 * (1.0 - 2.0 * poisson_ratio)); }
+  /// P-wave (constrained) modulus lambda + 2 G [Pa].
+  double p_wave_modulus() const {
+    return youngs_modulus * (1.0 - poisson_ratio) /
+           ((1.0 + poisson_ratio) * (1.0 - 2.0 * poisson_ratio));
+  }
+  /// Dilatational wave speed sqrt((lambda + 2G)/rho) [m/s].
+  double dilatational_wave_speed() const;
+};
+
+/// Checks every field; throws InputError naming `<field_prefix>.<field>` on the first bad value.
+/// Constraints: E > 0, nu in (-1, 0.5), rho > 0, sigma_y (if set) in (0, E) (a yield strain
+/// above 1 is no metal), H >= 0. `require_yield` demands a yield stress (substrates).
+void validate(const Material& material, std::string_view field_prefix, bool require_yield = false);
+
+/// Effective (contact) modulus of a pair: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 [Pa]
+/// (Ma et al. 2023 eq. 3; Johnson 1985 eq. 4.22).
+double effective_modulus(const Material& sphere, const Material& substrate);
+
+/// Effective modulus from the four constants [Pa].
+double effective_modulus(double e1, double nu1, double e2, double nu2);
+
+/// Ma et al. 2023 eq. 5: k1 = E* / (rho v^2) [-], rho = sphere density [kg/m^3], v [m/s].
+double k1(double effective_modulus, double sphere_density, double velocity);
+
+/// Ma et al. 2023 eq. 6: k2 = sigma_y / E* [-], sigma_y = substrate yield stress [Pa].
+double k2(double yield_stress, double effective_modulus);
+
+}  // namespace corlab

@@ -1,0 +1,7 @@
+"""corlab: coefficient of restitution (CoR) of elastic-plastic impacts, SI units.
+
+The compiled core (`corlab._core`) holds the materials, the analytic CoR models, the explicit
+impact solver and the study tools; this package re-exports them.
+"""
+from ._core import *  # noqa: F401,F403
+from ._core import __version__  # noqa: F401

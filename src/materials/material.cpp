@@ -1,0 +1,43 @@
+#include "corlab/materials/material.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "corlab/core/error.hpp"
+
+namespace corlab {
+
+double Material::dilatational_wave_speed() const { return std::sqrt(p_wave_modulus() / density); }
+
+void validate(const Material& material, std::string_view field_prefix, bool require_yield) {
+  const std::string p(field_prefix);
+  require_positive(p + ".E", material.youngs_modulus, "[Pa]");
+  require_open_range(p + ".nu", material.poisson_ratio, -1.0, 0.5);
+  require_positive(p + ".rho", material.density, "[kg/m^3]");
+  if (material.yield_stress) {
+    const double sy = *material.yield_stress;
+    if (!(std::isfinite(sy) && sy > 0.0 && sy < material.youngs_modulus)) {
+      throw_invalid(p + ".sigma_y", sy, "in (0, E) [Pa] (a yield strain above 1 is no metal)");
+    }
+  } else if (require_yield) {
+    throw_invalid(p + ".sigma_y", "missing", "given for an elastic-plastic substrate [Pa]");
+  }
+  require_non_negative(p + ".H", material.hardening_modulus, "[Pa]");
+}
+
+double effective_modulus(double e1, double nu1, double e2, double nu2) {
+  return 1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2);
+}
+
+double effective_modulus(const Material& sphere, const Material& substrate) {
+  return effective_modulus(sphere.youngs_modulus, sphere.poisson_ratio, substrate.youngs_modulus,
+                           substrate.poisson_ratio);
+}
+
+double k1(double effective_modulus, double sphere_density, double velocity) {
+  return effective_modulus / (sphere_density * velocity * velocity);
+}
+
+double k2(double yield_stress, double effective_modulus) { return yield_stress / effective_modulus; }
+
+}  // namespace corlab

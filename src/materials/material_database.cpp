@@ -1,0 +1,154 @@
+#include "corlab/materials/material_database.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <toml++/toml.h>
+
+#include "corlab/core/error.hpp"
+
+namespace corlab {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+double parse_number(std::string_view text, const std::string& field) {
+  double value = 0.0;
+  const auto* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
+    throw_invalid(field, text, "a finite number");
+  }
+  return value;
+}
+
+// Sets one field of `m` from key=value; returns false for an unknown key.
+bool set_field(Material& m, std::string_view key, double value) {
+  if (key == "E") {
+    m.youngs_modulus = value;
+  } else if (key == "nu") {
+    m.poisson_ratio = value;
+  } else if (key == "rho") {
+    m.density = value;
+  } else if (key == "sy" || key == "sigma_y") {
+    m.yield_stress = value;
+  } else if (key == "H") {
+    m.hardening_modulus = value;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::filesystem::path data_directory() {
+  if (const char* env = std::getenv("CORLAB_DATA_DIR"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  return CORLAB_DATA_DIR;
+}
+
+MaterialDatabase MaterialDatabase::load(const std::filesystem::path& file) {
+  toml::table table;
+  try {
+    table = toml::parse_file(file.string());
+  } catch (const toml::parse_error& err) {
+    throw InputError(fmt::format("invalid material database '{}': {} (line {})", file.string(),
+                                 err.description(), err.source().begin.line));
+  }
+  MaterialDatabase db;
+  for (const auto& [key, node] : table) {
+    const auto* entry = node.as_table();
+    const std::string name(key.str());
+    if (entry == nullptr) throw_invalid("material database entry", name, "a [table]");
+    Material m;
+    m.name = name;
+    for (const auto& [field_key, value] : *entry) {
+      const std::string_view k = field_key.str();
+      if (k == "source") {
+        m.source = value.value_or(std::string());
+      } else if (k == "description") {
+        continue;
+      } else if (auto number = value.value<double>()) {
+        if (!set_field(m, k, *number)) {
+          throw_invalid(fmt::format("materials.{}.{}", name, k), *number, "a known key");
+        }
+      } else {
+        throw_invalid(fmt::format("materials.{}.{}", name, k), "non-number", "a number");
+      }
+    }
+    validate(m, "materials." + name);
+    db.materials_.emplace(name, std::move(m));
+  }
+  return db;
+}
+
+const MaterialDatabase& MaterialDatabase::builtin() {
+  static const MaterialDatabase db = load(data_directory() / "materials.toml");
+  return db;
+}
+
+bool MaterialDatabase::contains(std::string_view name) const {
+  return materials_.find(name) != materials_.end();
+}
+
+const Material& MaterialDatabase::get(std::string_view name, std::string_view field) const {
+  const auto it = materials_.find(name);
+  if (it == materials_.end()) {
+    throw_invalid(field, name, fmt::format("one of [{}] or E=..,nu=..,rho=..[,sy=..]",
+                                           fmt::join(names(), ", ")));
+  }
+  return it->second;
+}
+
+std::vector<std::string> MaterialDatabase::names() const {
+  std::vector<std::string> out;
+  out.reserve(materials_.size());
+  for (const auto& [name, m] : materials_) out.push_back(name);
+  return out;
+}
+
+Material parse_material_spec(std::string_view spec,
+                             std::string_view field,
+                             const MaterialDatabase& database) {
+  const std::string f(field);
+  Material m;
+  m.name = "inline";
+  bool first = true;
+  bool any_value = false;
+  while (true) {
+    const auto comma = spec.find(',');
+    const std::string_view token = trim(spec.substr(0, comma));
+    const auto eq = token.find('=');
+    if (eq == std::string_view::npos) {
+      if (!first || token.empty()) {
+        throw_invalid(f, token, "a key=value pair (keys: E, nu, rho, sy, H)");
+      }
+      m = database.get(token, f);
+    } else {
+      const std::string_view key = trim(token.substr(0, eq));
+      const double value = parse_number(trim(token.substr(eq + 1)), f + "." + std::string(key));
+      if (!set_field(m, key, value)) {
+        throw_invalid(f + " key", key, "one of E, nu, rho, sy, sigma_y, H");
+      }
+      any_value = true;
+    }
+    first = false;
+    if (comma == std::string_view::npos) break;
+    spec.remove_prefix(comma + 1);
+  }
+  if (any_value && m.name != "inline") m.name += " (modified)";
+  validate(m, f);
+  return m;
+}
+
+}  // namespace corlab
