@@ -11,7 +11,8 @@ REPORT_PRESET ?= quick
 DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   libeigen3-dev libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev \
   libgtest-dev libgmock-dev libbenchmark-dev pybind11-dev python3-dev python3-numpy \
-  python3-matplotlib python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev
+  python3-matplotlib python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
+  libgsl-dev libmuparser-dev
 
 .PHONY: deps configure build run test test-cpp test-python bench format clean
 

@@ -1,6 +1,101 @@
-// Bindings for the models area (filled in by the module's owner).
+// Analytic CoR models: corlab.models(), corlab.predict(), corlab.yield_velocity().
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <variant>
+
 #include "bindings.hpp"
+#include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/registry.hpp"
+
+namespace py = pybind11;
 
 namespace corlab::python {
-void bind_models(pybind11::module_& /*m*/) {}
+
+namespace {
+
+using MaterialArg = std::variant<Material, std::string>;
+
+Material to_material(const MaterialArg& arg, const char* field) {
+  if (const auto* spec = std::get_if<std::string>(&arg)) return parse_material_spec(*spec, field);
+  return std::get<Material>(arg);
+}
+
+restitution::Model bind_model(const std::string& model,
+                              const MaterialArg& sphere,
+                              const MaterialArg& substrate,
+                              std::optional<bool> clamp,
+                              double radius) {
+  restitution::ModelOptions options;
+  options.clamp = clamp;
+  options.radius = radius;
+  return restitution::make_model(model, to_material(sphere, "sphere"),
+                                 to_material(substrate, "substrate"), options);
+}
+
+py::dict info_dict(const restitution::ModelInfo& info) {
+  py::dict d;
+  d["name"] = info.name;
+  d["title"] = info.title;
+  d["citation"] = info.citation;
+  d["equation"] = info.equation;
+  d["validity"] = info.validity;
+  d["status"] = std::string(restitution::to_string(info.status));
+  d["status_note"] = info.status_note;
+  d["clamped_by_default"] = info.clamped_by_default;
+  return d;
+}
+
+}  // namespace
+
+void bind_models(py::module_& m) {
+  m.def(
+      "models",
+      [] {
+        py::list out;
+        for (const auto& info : restitution::model_catalog()) out.append(info_dict(info));
+        return out;
+      },
+      "List of dicts (name, title, citation, equation, validity, status, status_note, "
+      "clamped_by_default) of every analytic CoR model. status is 'verified-paper', "
+      "'verified-second-source' or 'unverified'.");
+  m.def("model_names", &restitution::model_names, "Names of the analytic CoR models.");
+  m.def(
+      "predict",
+      [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
+         double v, std::optional<bool> clamp,
+         double radius) { return bind_model(model, sphere, substrate, clamp, radius).cor(v); },
+      py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
+      py::arg("clamp") = py::none(), py::arg("radius") = 1.0,
+      "CoR e [-] of `model` for a sphere hitting a substrate at speed v [m/s]. sphere and "
+      "substrate are Material objects or specs ('alumina_ma2023', 'E=..,nu=..,rho=..,sy=..'). "
+      "v may be a float (returns a float) or a numpy array (returns an array of the same "
+      "shape). clamp: None = model default. Raises ValueError on bad input.");
+  m.def(
+      "predict",
+      [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
+         const py::array_t<double, py::array::c_style | py::array::forcecast>& v,
+         std::optional<bool> clamp, double radius) {
+        const auto bound = bind_model(model, sphere, substrate, clamp, radius);
+        py::array_t<double> out(v.request().shape);
+        const std::span<const double> in(v.data(), static_cast<std::size_t>(v.size()));
+        const std::span<double> res(out.mutable_data(), static_cast<std::size_t>(out.size()));
+        {
+          py::gil_scoped_release release;
+          bound.cor(in, res);
+        }
+        return out;
+      },
+      py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
+      py::arg("clamp") = py::none(), py::arg("radius") = 1.0);
+  m.def(
+      "yield_velocity",
+      [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate) {
+        return bind_model(model, sphere, substrate, std::nullopt, 1.0).yield_velocity();
+      },
+      py::arg("model"), py::arg("sphere"), py::arg("substrate"),
+      "The model's yield velocity [m/s] (e = 1 below it).");
+}
+
 }  // namespace corlab::python

@@ -1,6 +1,129 @@
-// Bindings for the study area (filled in by the module's owner).
+// Parametric sweeps: load_spec, run_sweep, read_results.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <future>
+#include <thread>
+
 #include "bindings.hpp"
+#include "corlab/study/results_table.hpp"
+#include "corlab/study/sweep.hpp"
+#include "corlab/study/sweep_spec.hpp"
+
+namespace py = pybind11;
 
 namespace corlab::python {
-void bind_study(pybind11::module_& /*m*/) {}
+namespace {
+
+py::dict settings_dict(const study::Settings& settings) {
+  py::dict d;
+  for (const auto& [k, v] : settings) d[py::str(k)] = v;
+  return d;
+}
+
+py::dict spec_dict(const study::SweepSpec& spec) {
+  py::dict d;
+  d["name"] = spec.name;
+  d["description"] = spec.description;
+  d["base"] = settings_dict(spec.base);
+  py::dict grid;
+  for (const auto& [k, values] : spec.grid) grid[py::str(k)] = values;
+  d["grid"] = grid;
+  py::list cases;
+  for (const auto& c : spec.cases) cases.append(settings_dict(c));
+  d["cases"] = cases;
+  d["swept_keys"] = spec.swept_keys();
+  py::list runs;
+  for (const auto& run : spec.expand()) {
+    py::dict r;
+    r["id"] = run.id;
+    r["settings"] = settings_dict(run.settings);
+    runs.append(r);
+  }
+  d["runs"] = runs;
+  return d;
+}
+
+py::dict summary_dict(const study::SweepSummary& s) {
+  py::dict d;
+  d["total"] = s.total;
+  d["already_done"] = s.already_done;
+  d["ran"] = s.ran;
+  d["failed"] = s.failed;
+  d["not_separated"] = s.not_separated;
+  d["remaining"] = s.remaining();
+  d["wall_s"] = s.wall_s;
+  d["interrupted"] = s.interrupted;
+  d["workers"] = s.workers;
+  d["ranks"] = s.ranks;
+  return d;
+}
+
+}  // namespace
+
+void bind_study(py::module_& m) {
+  m.def(
+      "load_spec", [](const std::string& path) { return spec_dict(study::load_sweep_spec(path)); },
+      py::arg("path"),
+      "Parse and validate a sweep spec (TOML). Returns a dict: name, description, base, grid, "
+      "cases, swept_keys and runs (each {'id', 'settings'}). Bad spec -> ValueError.");
+
+  m.def(
+      "run_sweep",
+      [](const std::string& spec_path, const std::string& out_dir, int jobs, bool progress) {
+        const study::SweepSpec spec = study::load_sweep_spec(spec_path);
+        std::atomic<bool> cancel{false};
+        study::SweepOptions options;
+        options.jobs = jobs;
+        options.progress = progress;
+        options.cancel = &cancel;
+        // Run without the GIL in a thread; this thread checks for Ctrl-C now and then, so a
+        // KeyboardInterrupt cancels the sweep (finished rows are kept) instead of being ignored.
+        std::future<study::SweepSummary> done;
+        {
+          py::gil_scoped_release release;
+          done = std::async(std::launch::async,
+                            [&] { return study::run_sweep(spec, out_dir, options); });
+          while (done.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready) {
+            py::gil_scoped_acquire acquire;
+            if (PyErr_CheckSignals() != 0) {
+              cancel.store(true);
+              PyErr_Clear();
+            }
+          }
+        }
+        const study::SweepSummary summary = done.get();
+        if (cancel.load()) {
+          PyErr_SetNone(PyExc_KeyboardInterrupt);
+          throw py::error_already_set();
+        }
+        return summary_dict(summary);
+      },
+      py::arg("spec_path"), py::arg("out_dir"), py::arg("jobs") = 0, py::arg("progress") = false,
+      "Run every case of the spec with the impact solver into out_dir/results.csv (resumes a "
+      "previous run). jobs = cases at a time (0 = all cores). Returns the summary as a dict.");
+
+  m.def(
+      "read_results",
+      [](const std::string& path) {
+        const study::ResultsTable table = study::read_results(path);
+        py::dict d;
+        for (const auto& column : table.columns()) {
+          if (table.is_numeric(column)) {
+            const std::vector<double> values = table.numbers(column);
+            d[py::str(column)] =
+                py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+          } else {
+            d[py::str(column)] = table.text(column);
+          }
+        }
+        return d;
+      },
+      py::arg("path"),
+      "Read a results.csv: dict column -> numpy array (numeric columns) or list of str.");
+}
+
 }  // namespace corlab::python

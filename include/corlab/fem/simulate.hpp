@@ -6,6 +6,7 @@
 #include <atomic>
 #include <functional>
 
+#include "corlab/fem/field_snapshot.hpp"
 #include "corlab/fem/impact_config.hpp"
 #include "corlab/fem/impact_result.hpp"
 #include "corlab/fem/mesh.hpp"

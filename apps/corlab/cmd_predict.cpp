@@ -1,0 +1,167 @@
+// `corlab predict`: evaluate analytic CoR models for a sphere/substrate pair over velocities.
+//   corlab predict --model ma2023 --sphere alumina_ma2023 --substrate aluminium_ma2023
+//                  --velocity 0.05:6:50 --spacing log --format csv
+#include <fmt/core.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "command.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/registry.hpp"
+
+namespace corlab::cli {
+namespace {
+
+struct PredictOptions {
+  std::string model;
+  std::string sphere;
+  std::string substrate;
+  std::string velocity;
+  std::string spacing = "lin";
+  std::string format = "csv";
+  std::string clamp = "default";
+  double radius = 1.0;
+};
+
+constexpr const char* kRangeSyntax =
+    "V or START:STOP:N with 0 < START <= STOP and an integer N >= 1 [m/s]";
+
+bool parse_double(std::string_view text, double& out) {
+  const auto* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, out);
+  return ec == std::errc() && ptr == end && !text.empty();
+}
+
+// "V" or "START:STOP:N" -> velocities (lin or log spacing); one-line InputError otherwise.
+std::vector<double> parse_velocities(const std::string& text, const std::string& spacing) {
+  std::vector<std::string_view> parts;
+  std::string_view rest(text);
+  while (true) {
+    const auto colon = rest.find(':');
+    parts.push_back(rest.substr(0, colon));
+    if (colon == std::string_view::npos) break;
+    rest.remove_prefix(colon + 1);
+  }
+  if (parts.size() == 1) {
+    double v = 0.0;
+    if (!parse_double(parts[0], v)) throw_invalid("velocity", text, kRangeSyntax);
+    restitution::require_velocity(v);
+    return {v};
+  }
+  double start = 0.0;
+  double stop = 0.0;
+  double count = 0.0;
+  if (parts.size() != 3 || !parse_double(parts[0], start) || !parse_double(parts[1], stop) ||
+      !parse_double(parts[2], count) || !(std::isfinite(start) && std::isfinite(stop)) ||
+      !(start > 0.0) || !(stop >= start) || !(count >= 1.0) || count != std::floor(count) ||
+      count > 1e8) {
+    throw_invalid("velocity", text, kRangeSyntax);
+  }
+  const auto n = static_cast<std::size_t>(count);
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = n == 1 ? 0.0 : static_cast<double>(i) / static_cast<double>(n - 1);
+    v[i] = spacing == "log" ? start * std::pow(stop / start, t) : start + (stop - start) * t;
+  }
+  if (n > 1) v.back() = stop;
+  return v;
+}
+
+int run_predict(const PredictOptions& o) {
+  const Material sphere = parse_material_spec(o.sphere, "sphere");
+  const Material substrate = parse_material_spec(o.substrate, "substrate");
+  const std::vector<double> velocities = parse_velocities(o.velocity, o.spacing);
+  std::vector<std::string> names;
+  if (o.model == "all") {
+    names = restitution::model_names();
+  } else {
+    names.push_back(restitution::model_info(o.model).name);  // throws for an unknown name
+  }
+  restitution::ModelOptions options;
+  options.radius = o.radius;
+  if (o.clamp == "on") options.clamp = true;
+  if (o.clamp == "off") options.clamp = false;
+
+  std::vector<restitution::Model> models;
+  for (const auto& name : names)
+    models.push_back(restitution::make_model(name, sphere, substrate, options));
+  for (const auto& m : models) {
+    if (m.info().status == restitution::Status::kUnverified) {
+      std::fprintf(stderr, "corlab: warning: model '%s' is UNVERIFIED: %s\n", m.info().name.c_str(),
+                   m.info().status_note.c_str());
+    }
+  }
+  const double e_star = effective_modulus(sphere, substrate);
+  const double sy = *substrate.yield_stress;
+  std::vector<double> e(velocities.size());
+  if (o.format == "json") {
+    nlohmann::json out;
+    out["sphere"] = o.sphere;
+    out["substrate"] = o.substrate;
+    out["effective_modulus"] = e_star;
+    out["k2"] = k2(sy, e_star);
+    out["models"] = nlohmann::json::array();
+    for (const auto& m : models) {
+      m.cor(velocities, e);
+      nlohmann::json k1s = nlohmann::json::array();
+      for (double v : velocities) k1s.push_back(k1(e_star, sphere.density, v));
+      out["models"].push_back({{"model", m.info().name},
+                               {"status", restitution::to_string(m.info().status)},
+                               {"status_note", m.info().status_note},
+                               {"clamped", m.clamped()},
+                               {"v_y", m.yield_velocity()},
+                               {"velocity", velocities},
+                               {"k1", k1s},
+                               {"e", e}});
+    }
+    fmt::print("{}\n", out.dump(2));
+    return 0;
+  }
+  fmt::print("model,velocity,e,k1,k2,v_y,status\n");
+  for (const auto& m : models) {
+    m.cor(velocities, e);
+    const double vy = m.yield_velocity();
+    const auto status = restitution::to_string(m.info().status);
+    for (std::size_t i = 0; i < velocities.size(); ++i) {
+      fmt::print("{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n", m.info().name, velocities[i],
+                 e[i], k1(e_star, sphere.density, velocities[i]), k2(sy, e_star), vy, status);
+    }
+  }
+  return 0;
+}
+
+const CommandRegistration kRegistration{Command{
+    "predict", "Evaluate analytic CoR models e(v) for a sphere on a substrate",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto o = std::make_shared<PredictOptions>();
+      sub.add_option("--model", o->model, "model name (see `corlab models`) or 'all'")->required();
+      sub.add_option("--sphere", o->sphere,
+                     "sphere material: database name or E=..,nu=..,rho=..[,sy=..]")
+          ->required();
+      sub.add_option("--substrate", o->substrate,
+                     "substrate material (needs a yield stress sy): name or inline spec")
+          ->required();
+      sub.add_option("--velocity", o->velocity, "impact speed V or range START:STOP:N [m/s]")
+          ->required();
+      sub.add_option("--spacing", o->spacing, "range spacing: lin|log")
+          ->check(CLI::IsMember({"lin", "log"}));
+      sub.add_option("--format", o->format, "output format: csv|json")
+          ->check(CLI::IsMember({"csv", "json"}));
+      sub.add_option("--clamp", o->clamp, "clamp e to [0,1]: default|on|off")
+          ->check(CLI::IsMember({"default", "on", "off"}));
+      sub.add_option("--radius", o->radius,
+                     "sphere radius [m] for the energy models (e is R-independent)");
+      return [o] { return run_predict(*o); };
+    },
+    21}};
+
+}  // namespace
+}  // namespace corlab::cli

@@ -1,0 +1,157 @@
+// `corlab reproduce --preset quick|full --out DIR [--jobs N]`: the studies of Ma et al. (2023),
+// the fits of their model forms and the HTML report, end to end. Resumable: rerunning the same
+// command continues where it stopped (finished runs are kept in DIR).
+//
+// Sample runs:
+//   corlab reproduce --preset quick --out out/report            # ~10 min on 2 cores
+//   corlab reproduce --preset full --out out/full --jobs 16     # the paper's grids (hours)
+//   corlab reproduce --preset quick --out out/r --only table2 --no-report
+// Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 130 interrupted.
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/study/reproduce.hpp"
+
+namespace corlab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::atomic<bool> g_cancel{false};
+
+void on_interrupt(int /*signal*/) {
+  g_cancel.store(true);
+  std::signal(SIGINT, SIG_DFL);
+}
+
+struct ReproduceArgs {
+  std::string preset = "quick";
+  std::string out;
+  int jobs = 0;
+  std::vector<std::string> only;
+  bool no_report = false;
+  bool quiet = false;
+};
+
+std::string shell_quote(const std::string& s) {
+  std::string out = "'";
+  for (const char c : s) {
+    if (c == '\'') {
+      out += "'\\''";
+    } else {
+      out += c;
+    }
+  }
+  return out + "'";
+}
+
+/// The command line of this process as typed (from /proc/self/cmdline), for the report.
+std::string own_command_line() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string out;
+  std::string arg;
+  for (const char c : all) {
+    if (c == '\0') {
+      out += (out.empty() ? "" : " ") +
+             (arg.find_first_of(" '\"$") == std::string::npos ? arg : shell_quote(arg));
+      arg.clear();
+    } else {
+      arg += c;
+    }
+  }
+  return out;
+}
+
+/// <build>/python next to <build>/bin/corlab; CORLAB_PYTHONPATH overrides.
+fs::path python_package_dir() {
+  if (const char* env = std::getenv("CORLAB_PYTHONPATH"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  return exe.parent_path().parent_path() / "python";
+}
+
+int make_report(const fs::path& out_dir) {
+  const fs::path pydir = python_package_dir();
+  if (pydir.empty() || !fs::exists(pydir / "corlab" / "report.py")) {
+    std::fprintf(stderr, "corlab: cannot find the Python package (looked in '%s'; set "
+                 "CORLAB_PYTHONPATH): no report\n", pydir.string().c_str());
+    return 1;
+  }
+  std::string pythonpath = pydir.string();
+  if (const char* old = std::getenv("PYTHONPATH"); old != nullptr && *old != '\0') {
+    pythonpath += ":" + std::string(old);
+  }
+  ::setenv("PYTHONPATH", pythonpath.c_str(), 1);
+  ::setenv("MPLBACKEND", "Agg", 1);
+  const std::string cmd = "/usr/bin/python3 -m corlab.report " + shell_quote(out_dir.string());
+  std::fprintf(stderr, "corlab: report: PYTHONPATH=%s %s\n", pydir.string().c_str(), cmd.c_str());
+  const int status = std::system(cmd.c_str());
+  if (status != 0) {
+    std::fprintf(stderr, "corlab: the report failed (status %d)\n", status);
+    return 1;
+  }
+  std::fprintf(stderr, "corlab: report written to %s\n",
+               (out_dir / "report.html").string().c_str());
+  return 0;
+}
+
+int run(const ReproduceArgs& args) {
+  if (args.jobs < 0) throw_invalid("--jobs", args.jobs, ">= 0 (0 = all cores)");
+  study::ReproduceOptions options;
+  options.preset = args.preset;
+  options.out_dir = args.out;
+  options.jobs = args.jobs;
+  options.only = args.only;
+  options.progress = !args.quiet;
+  options.cancel = &g_cancel;
+  options.command_line = own_command_line();
+  std::signal(SIGINT, on_interrupt);
+  const nlohmann::json result = study::reproduce(options);
+  std::signal(SIGINT, SIG_DFL);
+  if (g_cancel.load()) {
+    std::fprintf(stderr, "corlab: interrupted; rerun the same command to continue\n");
+    return 130;
+  }
+  int failed = 0;
+  for (const auto& [name, s] : result["studies"].items()) failed += s.value("failed", 0);
+  std::fprintf(stderr, "corlab: studies done in %.1f s (%d runs this time, %d failed); fit.json "
+               "written\n", result.value("run_wall_s", 0.0), result.value("runs_this_invocation", 0),
+               failed);
+  int status = failed > 0 ? 1 : 0;
+  if (!args.no_report && make_report(args.out) != 0) status = 1;
+  return status;
+}
+
+const CommandRegistration kRegistration{Command{
+    "reproduce",
+    "Reproduce Ma et al. (2023): run the studies, fit the model forms, write the HTML report",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto args = std::make_shared<ReproduceArgs>();
+      sub.add_option("--preset", args->preset, "quick (~10 min on 2 cores) or full (paper grids)")
+          ->check(CLI::IsMember({"quick", "full"}));
+      sub.add_option("--out", args->out, "output directory (resumable)")->required();
+      sub.add_option("--jobs", args->jobs, "runs at the same time (0 = all cores)");
+      sub.add_option("--only", args->only, "run only these studies (names as in studies/<preset>/)");
+      sub.add_flag("--no-report", args->no_report, "skip the Python report");
+      sub.add_flag("--quiet", args->quiet, "no progress on stderr");
+      return [args] { return run(*args); };
+    },
+    60}};
+
+}  // namespace
+}  // namespace corlab::cli

@@ -1,0 +1,125 @@
+// `corlab sweep SPEC --out DIR`: run a parametric study (one impact simulation per case), in
+// parallel over all cores, or over MPI ranks when started with `mpirun -n N`.
+//
+// Sample runs:
+//   corlab sweep studies/table2.toml --out out/table2           # all cores, progress bar
+//   corlab sweep studies/table2.toml --out out/table2 --dry-run # list the cases
+//   mpirun -n 8 corlab sweep studies/table2.toml --out out/table2
+// Exit status: 0 all cases finished without failure, 1 some failed, 2 bad input, 130 interrupted.
+#include <fmt/core.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "command.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/study/progress.hpp"
+#include "corlab/study/sweep.hpp"
+#include "corlab/study/sweep_spec.hpp"
+
+namespace corlab::cli {
+namespace {
+
+std::atomic<bool> g_cancel{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+void on_interrupt(int /*signal*/) {
+  g_cancel.store(true);
+  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C stops at once (finished rows are on disk)
+}
+
+struct SweepArgs {
+  std::string spec;
+  std::string out;
+  int jobs = 0;
+  bool quiet = false;
+  bool dry_run = false;
+};
+
+int list_cases(const study::SweepSpec& spec) {
+  const auto cases = spec.expand();
+  const auto keys = spec.swept_keys();
+  fmt::print("case_id");
+  for (const auto& key : keys) fmt::print("  {}", key);
+  fmt::print("\n");
+  for (const auto& run : cases) {
+    fmt::print("{}", run.id);
+    for (const auto& key : keys) {
+      std::string value;
+      for (const auto& [k, v] : run.settings) {
+        if (k == key) value = v;
+      }
+      fmt::print("  {}", value);
+    }
+    fmt::print("\n");
+  }
+  std::fprintf(stderr, "corlab: sweep %s: %zu cases (dry run, nothing was run)\n",
+               spec.name.c_str(), cases.size());
+  return 0;
+}
+
+int run(const SweepArgs& args) {
+  const study::SweepSpec spec = study::load_sweep_spec(args.spec);
+  if (args.dry_run) return list_cases(spec);
+  if (args.out.empty()) {
+    throw_invalid("--out", args.out, "given (the directory for results.csv)");
+  }
+  if (args.jobs < 0) throw_invalid("--jobs", args.jobs, ">= 0 (0 = all cores)");
+  study::SweepOptions options;
+  options.jobs = args.jobs;
+  options.progress = !args.quiet;
+  options.cancel = &g_cancel;
+  std::signal(SIGINT, on_interrupt);
+  const study::SweepSummary summary = study::run_sweep(spec, args.out, options);
+  std::signal(SIGINT, SIG_DFL);
+  if (summary.rank != 0) return summary.interrupted ? 130 : summary.failed > 0 ? 1 : 0;
+
+  const std::string csv = (std::filesystem::path(args.out) / "results.csv").string();
+  std::string where =
+      summary.ranks > 1 ? fmt::format("{} MPI ranks, {} at a time", summary.ranks, summary.workers)
+                        : fmt::format("{} at a time", summary.workers);
+  std::fprintf(stderr,
+               "corlab: sweep %s: %d ran (%d failed, %d not separated), %d already done, %d "
+               "total, %s, in %s -> %s\n",
+               spec.name.c_str(), summary.ran, summary.failed, summary.not_separated,
+               summary.already_done, summary.total, where.c_str(),
+               study::format_duration(summary.wall_s).c_str(), csv.c_str());
+  if (summary.interrupted) {
+    std::fprintf(stderr,
+                 "corlab: interrupted: %d of %d cases remain; run the same command again to "
+                 "resume (finished rows are kept in %s)\n",
+                 summary.remaining(), summary.total, csv.c_str());
+    return 130;
+  }
+  if (summary.failed > 0) {
+    std::fprintf(stderr,
+                 "corlab: %d cases failed (status failed, message in column error); a "
+                 "rerun retries them\n",
+                 summary.failed);
+    return 1;
+  }
+  return 0;
+}
+
+const CommandRegistration kRegistration{Command{
+    "sweep",
+    "Run a parametric study (TOML spec) into DIR/results.csv; parallel, resumable, MPI-aware",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto args = std::make_shared<SweepArgs>();
+      sub.add_option("spec", args->spec, "study spec (TOML: [study], [base], [grid], [[cases]])")
+          ->required();
+      sub.add_option("--out,-o", args->out,
+                     "output directory: results.csv, spec.toml (a rerun resumes)");
+      sub.add_option("--jobs,-j", args->jobs,
+                     "cases at a time per process (0 = all cores; under mpirun 1 per rank)");
+      sub.add_flag("--quiet,-q", args->quiet, "no progress bar");
+      sub.add_flag("--dry-run", args->dry_run, "list the expanded cases and exit");
+      return [args] { return run(*args); };
+    },
+    40}};
+
+}  // namespace
+}  // namespace corlab::cli

@@ -1,0 +1,29 @@
+#pragma once
+/// @file impact_output.hpp
+/// Writers for one impact: the history table (CSV) and the summary (JSON, with the config echoed).
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "corlab/fem/impact_config.hpp"
+#include "corlab/fem/impact_result.hpp"
+
+namespace corlab::fem {
+
+/// The config as JSON, keyed by the text keys of impact_config.hpp (SI units).
+nlohmann::json config_to_json(const ImpactConfig& config);
+
+/// The summary numbers of a result (no history) plus the config under "config". Keys include
+/// e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], energy_balance_error [-],
+/// elements, nodes, steps, wall_s, element_steps_per_s.
+nlohmann::json summary_to_json(const ImpactResult& result, const ImpactConfig& config);
+
+/// Writes summary_to_json to `file` (pretty-printed). Throws std::runtime_error on I/O failure.
+void write_summary_json(const ImpactResult& result,
+                        const ImpactConfig& config,
+                        const std::filesystem::path& file);
+
+/// Writes the history as CSV with a header naming the units, one row per history entry.
+void write_history_csv(const ImpactHistory& history, const std::filesystem::path& file);
+
+}  // namespace corlab::fem

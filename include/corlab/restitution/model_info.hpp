@@ -1,0 +1,39 @@
+#pragma once
+/// @file model_info.hpp
+/// Descriptive metadata of an analytic coefficient-of-restitution (CoR) model: citation,
+/// equation, validity range and verification status.
+
+#include <string>
+#include <string_view>
+
+namespace corlab::restitution {
+
+/// How far the implemented formula has been checked against public sources.
+/// Mapping of the statuses of docs/reference models.md:
+///  - the seed paper's own text (Ma et al. 2023)            -> kVerifiedPaper
+///  - "confirmed (two sources)", "confirmed (one source + derivation)"
+///                                                         -> kVerifiedSecondSource
+///  - "one source" (not cross-checked), "unconfirmed"      -> kUnverified
+/// The original wording is kept in ModelInfo::status_note.
+enum class Status {
+  kVerifiedPaper,         ///< formula read in the seed paper's text (and re-derived)
+  kVerifiedSecondSource,  ///< confirmed by a second public source or an independent derivation
+  kUnverified,            ///< constants or form not confirmed; do not treat as exact
+};
+
+/// "verified-paper", "verified-second-source" or "unverified".
+std::string_view to_string(Status status);
+
+/// Metadata of one registered model (see registry.hpp).
+struct ModelInfo {
+  std::string name;                     ///< registry key, e.g. "ma2023"
+  std::string title;                    ///< short human-readable name
+  std::string citation;                 ///< author, year, journal, equation numbers
+  std::string equation;                 ///< the formula in plain text
+  std::string validity;                 ///< validity range / calibration range
+  Status status = Status::kUnverified;  ///< verification status (see Status)
+  std::string status_note;  ///< the reference's wording of the status and what is unconfirmed
+  bool clamped_by_default = true;  ///< whether e is clamped to [0, 1] unless told otherwise
+};
+
+}  // namespace corlab::restitution

@@ -1,0 +1,79 @@
+#pragma once
+/// @file registry.hpp
+/// Runtime registry of the analytic CoR models: lookup by name (CLI, Python, studies), list with
+/// metadata, and checked scalar / vectorised evaluation.
+///
+///   auto model = corlab::restitution::make_model("ma2023", sphere, substrate);
+///   double e = model.cor(1.0);                       // [m/s] -> [-]
+///   std::vector<double> es = model.cor(velocities);  // one allocation (the output)
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "corlab/materials/material.hpp"
+#include "corlab/restitution/jackson_green2010.hpp"
+#include "corlab/restitution/johnson1985.hpp"
+#include "corlab/restitution/ma2023.hpp"
+#include "corlab/restitution/model_info.hpp"
+#include "corlab/restitution/thornton1997.hpp"
+#include "corlab/restitution/wu2003.hpp"
+
+namespace corlab::restitution {
+
+/// Options that apply across models.
+struct ModelOptions {
+  std::optional<bool> clamp;  ///< clamp e to [0, 1]; empty = the model's default
+  double radius = 1.0;        ///< sphere radius R [m] (energy models only; e is R-independent)
+};
+
+/// A model bound to a material pair. Cheap to copy.
+class Model {
+ public:
+  using Kernel = std::
+      variant<Ma2023, Thornton1997, JacksonGreen2010, JacksonGreen2010Fit, Wu2003, Johnson1985>;
+
+  Model(const ModelInfo& info, Kernel kernel, bool clamped);
+
+  /// Metadata (name, citation, equation, validity, status).
+  const ModelInfo& info() const { return *info_; }
+  /// Whether this instance clamps e to [0, 1].
+  bool clamped() const { return clamped_; }
+  /// The model's own yield velocity [m/s] (e = 1 below it).
+  double yield_velocity() const;
+  /// CoR at v [m/s]; throws InputError naming "velocity" unless v is finite and > 0.
+  double cor(double velocity) const;
+  /// Vectorised CoR: e[i] = cor(v[i]); checks every velocity first (InputError names the index)
+  /// and that the spans have equal length. No allocation.
+  void cor(std::span<const double> velocities, std::span<double> out) const;
+  /// Vectorised CoR returning a new vector.
+  std::vector<double> cor(std::span<const double> velocities) const;
+  /// The underlying kernel (for tests and advanced use).
+  const Kernel& kernel() const { return kernel_; }
+
+ private:
+  const ModelInfo* info_;
+  Kernel kernel_;
+  bool clamped_;
+};
+
+/// Every registered model with its metadata, in a fixed order.
+const std::vector<ModelInfo>& model_catalog();
+
+/// Registered names in catalog order.
+std::vector<std::string> model_names();
+
+/// Metadata by name; throws InputError "invalid model = 'foo': must be one of [...]".
+const ModelInfo& model_info(std::string_view name);
+
+/// Binds model `name` to a sphere and a substrate (validated; the substrate needs a yield
+/// stress). Throws InputError for an unknown name or bad materials/options.
+Model make_model(std::string_view name,
+                 const Material& sphere,
+                 const Material& substrate,
+                 const ModelOptions& options = {});
+
+}  // namespace corlab::restitution

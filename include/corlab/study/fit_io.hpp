@@ -1,0 +1,43 @@
+#pragma once
+/// @file fit_io.hpp
+/// Glue between results tables, the fitters and JSON: samples from a results.csv, JSON forms of
+/// the fit results (used by fit.json, `corlab fit` and the Python bindings).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "corlab/study/fit_expression.hpp"
+#include "corlab/study/fit_paper.hpp"
+#include "corlab/study/linear_regression.hpp"
+#include "corlab/study/results_table.hpp"
+
+namespace corlab::study {
+
+/// Group label of a (rho, E*, sigma_y) triple, e.g. "rho7850_E115.4GPa_sy500MPa".
+std::string group_label(double sphere_rho, double E_star, double sigma_y);
+
+/// The rows with status "ok" as restitution samples (columns e, velocity, sphere_rho, E_star,
+/// sigma_y); case_id = group_label() so that one paper "case" collects all its velocities.
+/// Rows without a yield stress (elastic substrate) are skipped. Throws InputError if a needed
+/// column is missing.
+std::vector<RestitutionSample> restitution_samples(const ResultsTable& table);
+
+/// The numeric columns of a table (for fit_expression()); text columns are left out.
+DataColumns numeric_columns(const ResultsTable& table);
+
+nlohmann::json to_json(const GoodnessOfFit& g);
+nlohmann::json to_json(const Coefficient& c);
+nlohmann::json to_json(const LinearFit& fit);
+nlohmann::json to_json(const NonlinearFit& fit);
+nlohmann::json to_json(const RestitutionLawFit& fit);
+nlohmann::json to_json(const YieldVelocityFit& fit);
+
+/// Forms (i)-(ii) on a results.csv and, when the table holds >= 3 E* values and >= 2 yield
+/// stresses, forms (iii)-(iv) on the per-case crossing velocities. Returns
+/// {"restitution_law": ..., "yield_velocity": ... | null}.
+nlohmann::json fit_paper_forms(const ResultsTable& table, const PaperFitOptions& options = {});
+
+}  // namespace corlab::study

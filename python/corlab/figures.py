@@ -1,0 +1,390 @@
+"""Figures of the reproduction report: our versions of Ma et al. (2023) Figs. 2-13.
+
+Every function takes the report directory (the output of ``corlab reproduce``) and the parsed
+``fit.json``, writes one PNG into ``<dir>/figures`` and returns its file name, or ``None`` when
+the data for it are missing (the report then says so). Axes carry SI units (mm, us and kN where
+those read better). No experimental points are drawn: no published numbers are available to
+corlab (docs/reference models.md section 7).
+"""
+from __future__ import annotations
+
+import csv
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+PAPER = {"s": 0.056, "alpha": 1.16, "beta": 0.253, "n": 4.5, "m": -3.5, "c": 0.05, "K": 15.81}
+SIGMA0 = 100e6
+E0 = 100e9
+
+
+def read_csv(path):
+    """Rows of a CSV file as dicts (numbers stay text); [] if the file does not exist."""
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def read_columns(path):
+    """A numeric CSV (history.csv) as {column: [float]}."""
+    rows = read_csv(path)
+    if not rows:
+        return {}
+    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+
+
+def num(x):
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return math.nan
+    return v
+
+
+def _save(fig, out_dir, name):
+    os.makedirs(os.path.join(out_dir, "figures"), exist_ok=True)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "figures", name), dpi=110)
+    plt.close(fig)
+    return name
+
+
+def history_runs(out_dir, study):
+    """[(settings dict, history columns, summary dict)] of a history study."""
+    import json
+
+    runs = []
+    for row in read_csv(os.path.join(out_dir, study, "cases.csv")):
+        run_dir = os.path.join(out_dir, study, "runs", row["case_id"])
+        summary = os.path.join(run_dir, "summary.json")
+        if not os.path.exists(summary):
+            continue
+        with open(summary) as f:
+            s = json.load(f)
+        runs.append((row, read_columns(os.path.join(run_dir, "history.csv")), s))
+    return runs
+
+
+def fig2_mesh(out_dir, fit):
+    runs = history_runs(out_dir, "verification_mesh")
+    if not runs:
+        return None
+    runs.sort(key=lambda r: -num(r[0].get("mesh.h_min")))
+    fig, ax = plt.subplots(1, 3, figsize=(13, 3.8))
+    for row, h, s in runs:
+        t = [x * 1e6 for x in h["time_s"]]
+        label = f"h_min = {num(row['mesh.h_min']) * 1e3:g} mm (e = {s['e']:.4f})"
+        ax[0].plot(t, [(d + s["config"]["impact"]["gap"]) * 1e3 for d in h["indentation_m"]],
+                   label=label)
+        ax[1].plot(t, h["sphere_velocity_m_per_s"], label=label)
+        ax[2].plot(t, [f / 1e3 for f in h["contact_force_N"]], label=label)
+    ax[0].set_ylabel("sphere displacement [mm]")
+    ax[1].set_ylabel("sphere velocity (+ towards substrate) [m/s]")
+    ax[2].set_ylabel("normal contact force [kN]")
+    for a in ax:
+        a.set_xlabel("time [us]")
+        a.grid(alpha=0.3)
+    ax[2].legend(fontsize=7)
+    fig.suptitle("Fig. 2: mesh sizes at 5 m/s (Table 1 materials)")
+    return _save(fig, out_dir, "fig02_mesh.png")
+
+
+def _hertz_force(delta, E_star, R):
+    return 4.0 / 3.0 * E_star * math.sqrt(R) * max(delta, 0.0) ** 1.5
+
+
+def effective_modulus(cfg):
+    s = cfg["sphere"]["material"]
+    b = cfg["substrate"]["material"]
+    return 1.0 / ((1 - s["nu"] ** 2) / s["E"] + (1 - b["nu"] ** 2) / b["E"])
+
+
+def fig3_hertz(out_dir, fit):
+    runs = history_runs(out_dir, "verification_hertz")
+    if not runs:
+        return None
+    fig, ax = plt.subplots(figsize=(6.2, 4.4))
+    for row, h, s in runs:
+        cfg = s["config"]
+        elastic = cfg["substrate"]["material"]["sigma_y"] is None
+        label = "FE, elastic substrate" if elastic else "FE, elastic-plastic (sigma_y = 500 MPa)"
+        ax.plot([d * 1e3 for d in h["indentation_m"]], [f / 1e3 for f in h["contact_force_N"]],
+                label=f"{label}, e = {s['e']:.4f}")
+        if elastic:
+            E_star = effective_modulus(cfg)
+            R = cfg["sphere"]["radius"]
+            dmax = max(h["indentation_m"])
+            ds = [dmax * k / 100 for k in range(101)]
+            ax.plot([d * 1e3 for d in ds], [_hertz_force(d, E_star, R) / 1e3 for d in ds], "k--",
+                    label="Hertz: F = 4/3 E* R^1/2 delta^3/2")
+    ax.set_xlabel("indentation delta [mm]")
+    ax.set_ylabel("contact force F [kN]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title("Fig. 3: contact force vs indentation at 5 m/s")
+    return _save(fig, out_dir, "fig03_force_indentation.png")
+
+
+def fig5_energy(out_dir, fit):
+    runs = [r for r in history_runs(out_dir, "verification_hertz")
+            if r[2]["config"]["substrate"]["material"]["sigma_y"] is not None]
+    if not runs:
+        return None
+    row, h, s = runs[0]
+    t = [x * 1e6 for x in h["time_s"]]
+    fig, ax = plt.subplots(figsize=(6.6, 4.4))
+    keys = [("kinetic_energy_J", "kinetic"), ("strain_energy_J", "elastic strain"),
+            ("plastic_dissipation_J", "plastic dissipation"),
+            ("hourglass_energy_J", "hourglass"), ("viscous_dissipation_J", "bulk viscosity"),
+            ("contact_energy_J", "contact penalty")]
+    total = [0.0] * len(t)
+    for k, label in keys:
+        ax.plot(t, h[k], label=label)
+        total = [a + b for a, b in zip(total, h[k])]
+    ax.plot(t, total, "k--", label="total")
+    ax.set_xlabel("time [us]")
+    ax.set_ylabel("energy [J]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title("Fig. 5: energies at 5 m/s (sigma_y = 500 MPa)")
+    return _save(fig, out_dir, "fig05_energy.png")
+
+
+def _law(fit):
+    law = fit.get("fits", {}).get("restitution_law", {})
+    return None if "error" in law or not law else law
+
+
+def _table2_points(out_dir, fit):
+    """{group: [(ln k1, e)]} of the ok Table 2 runs, grouped like the fit."""
+    groups = {}
+    for c in fit.get("fits", {}).get("comparison", []):
+        if c["study"] != "table2":
+            continue
+        k1 = c["E_star"] / (c["sphere_rho"] * c["velocity"] ** 2)
+        groups.setdefault(c["group"], []).append((math.log(k1), c["e_fe"], c))
+    return groups
+
+
+def fig6_e_vs_k1(out_dir, fit):
+    law = _law(fit)
+    groups = _table2_points(out_dir, fit)
+    if not groups:
+        return None
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    intercepts = {c["case"]: c["a"]["value"] for c in (law or {}).get("cases", [])}
+    s = (law or {}).get("slope", {}).get("value", math.nan)
+    for i, (g, pts) in enumerate(sorted(groups.items())):
+        pts.sort()
+        color = f"C{i % 10}"
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=color, ms=4,
+                label=g.replace("_E115.4GPa", ""))
+        if g in intercepts:
+            xs = [pts[0][0], pts[-1][0]]
+            ax.plot(xs, [min(1.0, intercepts[g] + s * x) for x in xs], "-", color=color, lw=1)
+    ax.set_xlabel("ln k1 = ln(E*/(rho v^2)) [-]")
+    ax.set_ylabel("coefficient of restitution e [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=6, ncol=2)
+    ax.set_title(f"Fig. 6: e vs ln k1 (lines: e = a_i + s ln k1, s = {s:.4f}; paper 0.056)")
+    return _save(fig, out_dir, "fig06_e_vs_lnk1.png")
+
+
+def fig7_fit_error(out_dir, fit):
+    law = _law(fit)
+    groups = _table2_points(out_dir, fit)
+    if not law or not groups:
+        return None
+    intercepts = {c["case"]: c["a"]["value"] for c in law["cases"]}
+    s = law["slope"]["value"]
+    xs, ys = [], []
+    for g, pts in groups.items():
+        if g not in intercepts:
+            continue
+        for lk1, e, _ in pts:
+            if e < 1 - 1e-3:
+                xs.append(e)
+                ys.append(intercepts[g] + s * lk1)
+    if not xs:
+        return None
+    fig, ax = plt.subplots(figsize=(5.2, 5))
+    ax.plot(xs, ys, "o", ms=4, label="plastic FE points")
+    lo, hi = min(xs + ys) * 0.95, 1.0
+    ax.plot([lo, hi], [lo, hi], "k-", lw=1, label="y = x")
+    ax.plot([lo, hi], [lo * 1.05, hi * 1.05], "k--", lw=0.8, label="+-5 %")
+    ax.plot([lo, hi], [lo * 0.95, hi * 0.95], "k--", lw=0.8)
+    ax.set_xlabel("e from the FE solver [-]")
+    ax.set_ylabel("e from eq. 9 (our a_i, s) [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title("Fig. 7: fitting error of eq. 9")
+    return _save(fig, out_dir, "fig07_fit_error.png")
+
+
+def fig8_a_vs_k2(out_dir, fit):
+    law = _law(fit)
+    if not law or not law.get("cases"):
+        return None
+    fig, ax = plt.subplots(figsize=(6, 4.4))
+    x = [math.log(c["k2"]) for c in law["cases"]]
+    y = [c["a"]["value"] for c in law["cases"]]
+    err = [c["a"]["ci_upper"] - c["a"]["value"] for c in law["cases"]]
+    ax.errorbar(x, y, yerr=err, fmt="o", ms=4, capsize=2, label="a_i (95 % CI)")
+    xs = [min(x) - 0.1, max(x) + 0.1]
+    if law["alpha"]["value"] is not None and not math.isnan(num(law["alpha"]["value"])):
+        ax.plot(xs, [law["alpha"]["value"] + law["beta"]["value"] * v for v in xs], "-",
+                label=f"ours: a = {law['alpha']['value']:.3f} + {law['beta']['value']:.4f} ln k2")
+    ax.plot(xs, [PAPER["alpha"] + PAPER["beta"] * v for v in xs], "k--",
+            label="paper: a = 1.16 + 0.253 ln k2")
+    ax.set_xlabel("ln k2 = ln(sigma_y/E*) [-]")
+    ax.set_ylabel("intercept a [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    ax.set_title("Fig. 8: intercept a vs ln k2")
+    return _save(fig, out_dir, "fig08_a_vs_lnk2.png")
+
+
+def _yield_fit(fit, key="yield_velocity_fe"):
+    y = fit.get("fits", {}).get(key)
+    return None if not y or "error" in y else y
+
+
+def fig9_rho_vy2(out_dir, fit):
+    y = _yield_fit(fit)
+    if not y:
+        return None
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    groups = {}
+    for s in y["samples"]:
+        groups.setdefault(round(s["E_star"] / 1e9, 3), []).append(s)
+    b_of = {round(g["E_star"] / 1e9, 3): g["b"]["value"] for g in y["groups"]}
+    n = y["n"]["value"]
+    for i, (es, pts) in enumerate(sorted(groups.items())):
+        color = f"C{i % 10}"
+        ax.plot([p["sigma_y"] / 1e6 for p in pts], [p["sphere_rho"] * p["v_y"] ** 2 for p in pts],
+                "o", color=color, ms=4, label=f"E* = {es:g} GPa")
+        sig = sorted({p["sigma_y"] for p in pts})
+        ss = [sig[0] + (sig[-1] - sig[0]) * k / 50 for k in range(51)]
+        if es in b_of:
+            ax.plot([v / 1e6 for v in ss], [b_of[es] * (v / SIGMA0) ** n for v in ss], "-",
+                    color=color, lw=1)
+        ax.plot([v / 1e6 for v in ss],
+                [PAPER["c"] * (es * 1e9 / E0) ** PAPER["m"] * (v / SIGMA0) ** PAPER["n"] for v in ss],
+                ":", color=color, lw=1)
+    ax.set_yscale("log")
+    ax.set_xlabel("substrate yield stress sigma_y [MPa]")
+    ax.set_ylabel("rho v_y^2 [Pa]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    ax.set_title(f"Fig. 9: rho v_y^2 = b (sigma_y/100 MPa)^n; ours n = {n:.3f} (solid), "
+                 "paper 4.5 (dotted)", fontsize=9)
+    return _save(fig, out_dir, "fig09_rho_vy2.png")
+
+
+def fig10_b_vs_E(out_dir, fit):
+    y = _yield_fit(fit)
+    if not y or not y["groups"]:
+        return None
+    fig, ax = plt.subplots(figsize=(6, 4.4))
+    es = [g["E_star"] / 1e9 for g in y["groups"]]
+    b = [g["b"]["value"] for g in y["groups"]]
+    yerr = [[g["b"]["value"] - g["b"]["ci_lower"] for g in y["groups"]],
+            [g["b"]["ci_upper"] - g["b"]["value"] for g in y["groups"]]]
+    ax.errorbar(es, b, yerr=yerr, fmt="o", capsize=2, label="b per E* (95 % CI)")
+    grid = [min(es) + (max(es) - min(es)) * k / 50 for k in range(51)]
+    c, m = num(y["c"]["value"]), num(y["m"]["value"])
+    if not math.isnan(c):
+        ax.plot(grid, [c * (e * 1e9 / E0) ** m for e in grid], "-",
+                label=f"ours: b = {c:.4g} Pa (E*/100 GPa)^{m:.3f}")
+    ax.plot(grid, [PAPER["c"] * (e * 1e9 / E0) ** PAPER["m"] for e in grid], "k--",
+            label="paper: b = 0.05 Pa (E*/100 GPa)^-3.5")
+    ax.set_yscale("log")
+    ax.set_xlabel("effective modulus E* [GPa]")
+    ax.set_ylabel("b [Pa]")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    ax.set_title("Fig. 10: b vs E*")
+    return _save(fig, out_dir, "fig10_b_vs_E.png")
+
+
+MODEL_STYLE = {"ma2023": ("k-", "Ma et al. 2023 eq. 19"), "thornton1997": ("C0--", "Thornton 1997"),
+               "wu2003": ("C1:", "Wu et al. 2003 (UNVERIFIED form)"), "jg1": ("C2-.", "J-G1"),
+               "jg2": ("C3-.", "J-G2"), "ours": ("C4-", "eq. 19 with our constants")}
+
+
+def _fe_points(fit, study):
+    pts = {}
+    for c in fit.get("fits", {}).get("comparison", []):
+        if c["study"] == study:
+            pts.setdefault(c["group"], []).append((c["velocity"], c["e_fe"]))
+    return pts
+
+
+def fig_pairs(out_dir, fit, study, file_prefix, title_of):
+    """One figure per material pair: FE points and the analytic model curves."""
+    curves = fit.get("fits", {}).get("curves", {}).get(study, {})
+    pts = _fe_points(fit, study)
+    names = []
+    for i, (group, cur) in enumerate(sorted(curves.items())):
+        fig, ax = plt.subplots(figsize=(6.4, 4.6))
+        v = cur["velocity"]
+        for name, values in cur["models"].items():
+            if isinstance(values, dict):
+                continue
+            style, label = MODEL_STYLE.get(name, ("-", name))
+            ax.plot(v, values, style, lw=1.2, label=label)
+        p = sorted(pts.get(group, []))
+        if p:
+            ax.plot([q[0] for q in p], [q[1] for q in p], "ko", mfc="white", ms=6,
+                    label="FE (corlab solver)")
+        ax.set_xscale("log")
+        ax.set_xlabel("impact velocity v [m/s]")
+        ax.set_ylabel("coefficient of restitution e [-]")
+        ax.set_ylim(0, 1.25)
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+        ax.set_title(title_of(i, cur), fontsize=9)
+        names.append(_save(fig, out_dir, f"{file_prefix}_{i + 1}.png"))
+    return names
+
+
+def fig11_12_alumina(out_dir, fit):
+    def title(i, cur):
+        fig_no = 11 if "alumin" in cur["substrate"] else 12
+        return (f"Fig. {fig_no}: {cur['sphere']} on {cur['substrate']} "
+                "(no experimental points: none available)")
+    return fig_pairs(out_dir, fit, "alumina", "fig11_12_alumina", title)
+
+
+def fig13_table4(out_dir, fit):
+    def title(i, cur):
+        return f"Fig. 13: {cur['sphere']} on {cur['substrate']}"
+    return fig_pairs(out_dir, fit, "table4", "fig13_table4", title)
+
+
+def fig_onset(out_dir, fit):
+    onset = fit.get("fits", {}).get("yield_onset", [])
+    if not onset or not any(o["probes"] for o in onset):
+        return None
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    for i, o in enumerate(onset):
+        probes = sorted(o["probes"], key=lambda p: p["velocity"])
+        ax.plot([p["velocity"] for p in probes], [max(p["plastic_strain_max"], 1e-12) for p in probes],
+                "o-", color=f"C{i}", label=o["group"])
+        for key, style in (("v_hertz_onset", ":"), ("v_y_paper_eq18", "--")):
+            if o.get(key):
+                ax.axvline(o[key], color=f"C{i}", ls=style, lw=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("impact velocity v [m/s]")
+    ax.set_ylabel("largest plastic strain left [-] (1e-12 = none)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7)
+    ax.set_title("Yield onset by bisection (dotted: Hertz p0 = 1.6 sigma_y; dashed: Ma eq. 18)",
+                 fontsize=8)
+    return _save(fig, out_dir, "fig_onset.png")

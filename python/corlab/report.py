@@ -1,0 +1,429 @@
+"""HTML report of ``corlab reproduce``: ``python3 -m corlab.report DIR``.
+
+Reads ``DIR/fit.json`` (written by ``corlab reproduce``) and the run files under DIR, draws our
+versions of Ma et al. (2023) Figs. 2-13 (``corlab.figures``) and writes ``DIR/report.html``:
+fitted coefficients with 95 % confidence intervals next to the paper's, the error of the paper's
+model against our solver per case, run counts and times, the command and versions, and a
+discussion of the differences computed from the numbers (nothing in it is typed in by hand).
+"""
+from __future__ import annotations
+
+import html
+import json
+import math
+import os
+import platform
+import sys
+
+from . import figures
+
+QUICK_OMITS = [
+    "Contact mesh: h_min = 1 mm with h <= a_max/4 (paper: 0.25 mm); the verification runs of "
+    "Figs. 3-5 use 0.5 mm; Fig. 2 uses 1.5, 1 and 0.5 mm (the full preset adds 0.35, 0.25 and "
+    "0.18 mm).",
+    "Table 2: sigma_y in {300, 700, 1300} MPa (omits 500 and 1000), all three densities, "
+    "velocities {1, 3, 10, 30} m/s (paper: 0.1-70 m/s; full preset: 11 velocities 0.1-70 m/s).",
+    "Yield velocity: rho = 7850 kg/m^3 only (omits 3925), E* in {50, 63.8, 80} GPa (omits 60 "
+    "and 70), sigma_y in {100, 300, 600} MPa (omits 200, 400, 500), velocities {2, 10} m/s.",
+    "Yield onset by bisection: one case (rho 7850, E* 63.8 GPa, sigma_y 300 MPa), 5 steps on "
+    "ln v in [0.02, 1] m/s (full: 7 cases, 8 steps in [0.01, 3] m/s).",
+    "Table 3 pairs: velocities {1, 3, 6, 20} m/s (full: 12 velocities 0.2-70 m/s).",
+    "Table 4 cases: velocities {2, 10} m/s (full: 1-50 m/s).",
+]
+
+
+def esc(x):
+    return html.escape(str(x))
+
+
+def fmt(x, digits=4):
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return "-"
+    if math.isnan(v) or math.isinf(v):
+        return "-"
+    return f"{v:.{digits}g}"
+
+
+def pct(x, digits=2):
+    try:
+        v = float(x)
+    except (TypeError, ValueError):
+        return "-"
+    return "-" if math.isnan(v) else f"{100 * v:.{digits}f} %"
+
+
+def table(headers, rows):
+    out = ["<table><tr>" + "".join(f"<th>{esc(h)}</th>" for h in headers) + "</tr>"]
+    for r in rows:
+        out.append("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>")
+    out.append("</table>")
+    return "\n".join(out)
+
+
+def covers(c):
+    """'yes'/'no' whether the paper's value lies in our interval."""
+    try:
+        lo, hi, p = float(c["ci_lower"]), float(c["ci_upper"]), float(c["paper"])
+    except (TypeError, ValueError, KeyError):
+        return "-"
+    if any(math.isnan(v) for v in (lo, hi, p)):
+        return "-"
+    return "yes" if lo <= p <= hi else "<b>no</b>"
+
+
+def coef_row(label, c, form):
+    if not c:
+        return [esc(label), "-", "-", "-", "-", "-", esc(form)]
+    return [esc(label), fmt(c.get("value"), 5), fmt(c.get("standard_error"), 3),
+            f"[{fmt(c.get('ci_lower'), 5)}, {fmt(c.get('ci_upper'), 5)}]", fmt(c.get("paper"), 5),
+            covers(c), esc(form)]
+
+
+def coefficient_table(fits):
+    law = fits.get("restitution_law", {})
+    yv = fits.get("yield_velocity_fe", {})
+    eq12 = fits.get("yield_velocity_eq12", {})
+    rows = []
+    if "error" not in law:
+        rows.append(coef_row("s (slope of ln k1)", law.get("slope"), "(i) Table 2, eq. 9"))
+        rows.append(coef_row("alpha", law.get("alpha"), "(ii) eq. 11"))
+        rows.append(coef_row("beta", law.get("beta"), "(ii) eq. 11"))
+    for key, label in (("yield_velocity_fe", "v_y from FE crossings"),
+                       ("yield_velocity_eq12", "v_y from our eq. 12")):
+        y = fits.get(key, {})
+        if not y or "error" in y:
+            continue
+        rows.append(coef_row(f"n [{label}]", y.get("n"), "(iii) eq. 15"))
+        rows.append(coef_row(f"m [{label}]", y.get("m"), "(iv) eq. 17"))
+        rows.append(coef_row(f"c [Pa] [{label}]", y.get("c"), "(iv) eq. 17"))
+        rows.append(coef_row(f"K [{label}] one step", y.get("K"), "eq. 18 constant"))
+        rows.append([esc(f"K [{label}] two step c sigma0^-n E0^-m"), fmt(y.get("K_two_step"), 5),
+                     "-", "-", "15.81", "-", "eq. 18 constant"])
+    del yv, eq12
+    return table(["coefficient", "ours", "std. error", "95 % CI", "paper", "paper in CI?", "form"],
+                 rows)
+
+
+def goodness_rows(fits):
+    rows = []
+    law = fits.get("restitution_law", {})
+    for key, label in (("goodness_form_i", "(i) e = a_i + s ln k1 (Table 2 plastic points)"),
+                       ("goodness_form_ii", "(ii) a_i = alpha + beta ln k2"),
+                       ("goodness_combined", "eq. 12 with our alpha, beta, s")):
+        g = law.get(key)
+        if g:
+            rows.append([esc(label), fmt(g["r_squared"], 5), pct(g["max_relative_error"]),
+                         pct(g["rms_relative_error"])])
+    for fk, name in (("yield_velocity_fe", "FE crossings"), ("yield_velocity_eq12", "our eq. 12")):
+        y = fits.get(fk, {})
+        for key, label in (("goodness_form_iii", f"(iii) rho v_y^2 = b sigma_bar^n ({name})"),
+                           ("goodness_form_iv", f"(iv) b = c E_bar^m ({name})"),
+                           ("goodness_v_y", f"v_y = sqrt(K sigma^n E*^m / rho) ({name})")):
+            g = y.get(key) if isinstance(y, dict) else None
+            if g:
+                rows.append([esc(label), fmt(g["r_squared"], 5), pct(g["max_relative_error"]),
+                             pct(g["rms_relative_error"])])
+    return table(["fit", "R^2", "max rel. error", "RMS rel. error"], rows)
+
+
+def model_error_table(fits, key="e_paper"):
+    groups = {}
+    for c in fits.get("comparison", []):
+        e_fe, e_m = c["e_fe"], c.get(key)
+        if e_m is None or e_fe is None:
+            continue
+        groups.setdefault((c["study"], c["group"]), []).append((c["velocity"], e_fe, e_m))
+    rows = []
+    for (study, group), pts in sorted(groups.items()):
+        rel = [(m - f) / f for _, f, m in pts if f]
+        if not rel:
+            continue
+        worst = max(range(len(rel)), key=lambda i: abs(rel[i]))
+        rows.append([esc(study), esc(group), str(len(pts)),
+                     pct(sum(rel) / len(rel)),
+                     pct(math.sqrt(sum(r * r for r in rel) / len(rel))),
+                     f"{pct(rel[worst])} at {fmt(pts[worst][0], 3)} m/s"])
+    return table(["study", "case (group)", "runs", "mean rel. error", "RMS rel. error",
+                  "largest rel. error"], rows), groups
+
+
+def overall_error(groups):
+    rel = [(m - f) / f for pts in groups.values() for _, f, m in pts if f]
+    if not rel:
+        return math.nan, math.nan, 0
+    return (math.sqrt(sum(r * r for r in rel) / len(rel)), max(abs(r) for r in rel), len(rel))
+
+
+def verification_section(out_dir, fit):
+    parts = []
+    paper = fit.get("paper", {})
+    runs = figures.history_runs(out_dir, "verification_hertz")
+    rows = []
+    for row, h, s in runs:
+        cfg = s["config"]
+        elastic = cfg["substrate"]["material"]["sigma_y"] is None
+        E_star = figures.effective_modulus(cfg)
+        R = cfg["sphere"]["radius"]
+        rho = cfg["sphere"]["material"]["rho"]
+        v = cfg["impact"]["velocity"]
+        m = 4.0 / 3.0 * math.pi * R ** 3 * rho
+        if elastic:
+            # Hertz impact (Johnson 1985 ch. 11): delta_max, F_max, contact time 2.94 delta/v
+            dmax = (15 * m * v * v / (16 * E_star * math.sqrt(R))) ** 0.4
+            fmax = 4 / 3 * E_star * math.sqrt(R) * dmax ** 1.5
+            tc = 2.94 * dmax / v
+            rows.append(["elastic substrate", fmt(s["e"], 4), "1 (Hertz)",
+                         f"{fmt(s['F_max'] / 1e3, 5)} kN vs Hertz {fmt(fmax / 1e3, 5)} kN "
+                         f"({pct(s['F_max'] / fmax - 1)})",
+                         f"{fmt(s['delta_max'] * 1e3, 5)} mm vs Hertz {fmt(dmax * 1e3, 5)} mm "
+                         f"({pct(s['delta_max'] / dmax - 1)})",
+                         f"{fmt(s['t_contact'] * 1e6, 5)} us vs Hertz {fmt(tc * 1e6, 5)} us "
+                         f"({pct(s['t_contact'] / tc - 1)})"])
+        else:
+            e_derived = math.sqrt(1 - paper.get("energy_loss_5ms_J", 12.61) / (0.5 * m * v * v))
+            rows.append(["sigma_y = 500 MPa", fmt(s["e"], 4),
+                         f"{e_derived:.3f} (from the paper's 12.61 J loss)",
+                         f"sphere energy loss {fmt(s['energy_sphere_loss'], 4)} J (paper 12.61 J)",
+                         f"hysteresis area {fmt(s['hysteresis_area'], 4)} J (paper 12.63 J); "
+                         f"difference {pct(s['hysteresis_area'] / s['energy_sphere_loss'] - 1)} "
+                         "(paper 0.16 %)",
+                         f"hourglass {pct(s['energy_hourglass'] / s['energy_initial'], 3)} of the "
+                         f"initial energy (paper 0.0693 %); energy balance error "
+                         f"{fmt(s['energy_balance_error'], 2)}"])
+    if rows:
+        parts.append(table(["run at 5 m/s", "e (ours)", "e (reference)", "", "", ""], rows))
+    mesh = figures.history_runs(out_dir, "verification_mesh")
+    if mesh:
+        mesh.sort(key=lambda r: -figures.num(r[0]["mesh.h_min"]))
+        finest = mesh[-1][2]["e"]
+        parts.append(table(
+            ["h_min [mm]", "elements", "steps", "e", "e - e(finest)", "F_max [kN]", "wall [s]"],
+            [[fmt(figures.num(r[0]["mesh.h_min"]) * 1e3, 3), str(r[2]["elements"]),
+              str(r[2]["steps"]), fmt(r[2]["e"], 5), fmt(r[2]["e"] - finest, 3),
+              fmt(r[2]["F_max"] / 1e3, 5), fmt(r[2]["wall_s"], 3)] for r in mesh]))
+    return "\n".join(parts)
+
+
+def onset_table(fits):
+    rows = []
+    for o in fits.get("yield_onset", []):
+        ratio = o["v_y_paper_eq18"] / o["v_onset"] if o.get("v_onset") else math.nan
+        rows.append([esc(o["group"]), fmt(o["v_elastic"], 4), fmt(o["v_plastic"], 4),
+                     fmt(o["v_onset"], 4), fmt(o["v_hertz_onset"], 4), fmt(o["v_y_paper_eq18"], 4),
+                     fmt(o.get("v_y_ours"), 4), fmt(ratio, 3), str(len(o["probes"]))])
+    return table(["case", "highest elastic v [m/s]", "lowest plastic v [m/s]", "onset (geo. mean)",
+                  "Hertz p0 = 1.6 sigma_y", "Ma eq. 18 v_y", "our eq. 18 v_y",
+                  "Ma v_y / onset", "runs"], rows)
+
+
+def runs_table(fit):
+    rows = []
+    total_runs, total_wall = 0, 0.0
+    for name, s in fit.get("studies", {}).items():
+        rows.append([esc(name), esc(s.get("description", "")), str(s.get("total", "-")),
+                     str(s.get("already_done", "-")), str(s.get("ran", "-")),
+                     str(s.get("failed", "-")), fmt(s.get("wall_s"), 4)])
+        total_runs += int(s.get("ran", 0))
+        total_wall += float(s.get("wall_s", 0.0))
+    rows.append(["<b>all</b>", "", "", "", f"<b>{total_runs}</b>", "", f"<b>{fmt(total_wall, 4)}</b>"])
+    return table(["study", "description", "runs in spec", "done earlier", "ran now", "failed",
+                  "wall [s]"], rows)
+
+
+def discussion(fit):
+    fits = fit.get("fits", {})
+    law = fits.get("restitution_law", {})
+    items = []
+    if law and "error" not in law:
+        s = law["slope"]
+        items.append(
+            f"Slope of ln k1: ours s = {fmt(s['value'], 4)} (95 % CI [{fmt(s['ci_lower'], 4)}, "
+            f"{fmt(s['ci_upper'], 4)}]) against the paper's 0.056, a difference of "
+            f"{pct(s['value'] / 0.056 - 1, 1)}; the paper's value is "
+            f"{'inside' if covers(s) == 'yes' else 'outside'} our interval. It rests on "
+            f"{law['points_used']} plastic points in {len(law['cases'])} cases "
+            f"({law['points_excluded']} points excluded as elastic or failed).")
+        a, b = law["alpha"], law["beta"]
+        if a.get("value") is not None and not math.isnan(figures.num(a.get("value"))):
+            items.append(
+                f"Intercept law a = alpha + beta ln k2: ours alpha = {fmt(a['value'], 4)} "
+                f"[{fmt(a['ci_lower'], 4)}, {fmt(a['ci_upper'], 4)}], beta = {fmt(b['value'], 4)} "
+                f"[{fmt(b['ci_lower'], 4)}, {fmt(b['ci_upper'], 4)}] against 1.16 and 0.253. "
+                "Alpha and beta are strongly correlated (alpha is the extrapolation of the line to "
+                "ln k2 = 0, far outside the data at ln k2 ~ -6 to -4), so compare the predicted e "
+                "rather than alpha alone.")
+    _, groups = model_error_table(fits, "e_paper")
+    rms, worst, n = overall_error(groups)
+    if n:
+        items.append(
+            f"The paper's model (eq. 19 with its published constants) against our solver over "
+            f"{n} runs: RMS relative error {pct(rms)}, largest {pct(worst)}. The paper states its "
+            "fit stays within 5 % of its own FE results (Fig. 7).")
+    _, ours = model_error_table(fits, "e_ours")
+    rms_o, worst_o, n_o = overall_error(ours)
+    if n_o:
+        items.append(f"Eq. 19 with our refitted constants over the same runs: RMS {pct(rms_o)}, "
+                     f"largest {pct(worst_o)}.")
+    y = fits.get("yield_velocity_fe", {})
+    if y and "error" not in y:
+        items.append(
+            f"Yield-velocity law from our FE crossings: n = {fmt(y['n']['value'], 4)} "
+            f"[{fmt(y['n']['ci_lower'], 4)}, {fmt(y['n']['ci_upper'], 4)}] (paper 4.5), "
+            f"m = {fmt(y['m']['value'], 4)} (paper -3.5), one-step K = {fmt(y['K']['value'], 4)} "
+            "(paper 15.81; K's interval is wide because it is the value at sigma_y = E* = 1 Pa, "
+            "far outside the data).")
+    pe = fits.get("yield_velocity_paper_eq12", {})
+    if pe and "error" not in pe:
+        items.append(
+            "Self-check of the procedure: back-calculating v_y from the paper's own eq. 12 over "
+            f"the same (rho, E*, sigma_y) grid and fitting (iii)-(iv) gives n = "
+            f"{fmt(pe['n']['value'], 4)}, m = {fmt(pe['m']['value'], 4)}, K = "
+            f"{fmt(pe['K']['value'], 4)}: the published 4.5, -3.5 and 15.81 are this crossing "
+            "rounded (exact exponents 0.253/0.056 = 4.52 and -3.52), so eq. 18 is a fit of a "
+            "fit, not an independent measurement.")
+    onset = [o for o in fits.get("yield_onset", []) if o.get("v_onset")]
+    for o in onset:
+        if o["v_onset"] and not math.isnan(figures.num(o["v_onset"])):
+            items.append(
+                f"Yield onset straight from the solver ({esc(o['group'])}): first plastic strain "
+                f"between {fmt(o['v_elastic'], 3)} and {fmt(o['v_plastic'], 3)} m/s; Hertz theory "
+                f"(p0 = 1.6 sigma_y) predicts {fmt(o['v_hertz_onset'], 3)} m/s, while the paper's "
+                f"eq. 18 gives v_y = {fmt(o['v_y_paper_eq18'], 3)} m/s. The paper's v_y is the "
+                "e = 1 crossing of its log law, not the onset of yield.")
+    items.append(
+        "Experimental points: the paper compares with Kharaz & Gorham (2000), but no published "
+        "numbers of those experiments are available to corlab (docs/reference models.md section "
+        "7). None are drawn or used; no point was invented, estimated or digitised. Figs. 11-12 "
+        "compare the analytic models with our FE results only.")
+    items.append(
+        "The Wu et al. (2003) curve uses an UNVERIFIED candidate form (models.md section 3); "
+        "treat it as indicative only. Thornton uses p_y = 1.6 sigma_y; which p_y the paper used "
+        "is not stated.")
+    return "<ul>" + "".join(f"<li>{i}</li>" for i in items) + "</ul>"
+
+
+def versions():
+    import matplotlib
+    import numpy
+
+    out = {"python": platform.python_version(), "numpy": numpy.__version__,
+           "matplotlib": matplotlib.__version__, "platform": platform.platform()}
+    try:
+        from . import _core
+
+        out["corlab (python module)"] = _core.__version__
+    except ImportError:
+        pass
+    return out
+
+
+CSS = """body{font-family:sans-serif;max-width:1200px;margin:2em auto;line-height:1.4}
+table{border-collapse:collapse;margin:0.6em 0;font-size:0.9em}
+td,th{border:1px solid #bbb;padding:3px 6px;text-align:left}th{background:#eee}
+img{max-width:100%;border:1px solid #ddd;margin:4px 0}code{background:#f4f4f4;padding:1px 3px}
+.warn{background:#fff3cd;padding:0.5em;border:1px solid #e0c060}"""
+
+
+def make_report(out_dir):
+    """Writes <out_dir>/report.html and the figures; returns the report path."""
+    with open(os.path.join(out_dir, "fit.json")) as f:
+        fit = json.load(f)
+    fits = fit.get("fits", {})
+    figs = {}
+    for key, fn in (("fig2", figures.fig2_mesh), ("fig3", figures.fig3_hertz),
+                    ("fig5", figures.fig5_energy), ("fig6", figures.fig6_e_vs_k1),
+                    ("fig7", figures.fig7_fit_error), ("fig8", figures.fig8_a_vs_k2),
+                    ("fig9", figures.fig9_rho_vy2), ("fig10", figures.fig10_b_vs_E),
+                    ("fig11_12", figures.fig11_12_alumina), ("fig13", figures.fig13_table4),
+                    ("onset", figures.fig_onset)):
+        try:
+            figs[key] = fn(out_dir, fit)
+        except Exception as err:  # a broken figure must not lose the rest of the report
+            figs[key] = None
+            print(f"corlab.report: figure {key} failed: {err}", file=sys.stderr)
+
+    def img(key, caption):
+        names = figs.get(key)
+        if not names:
+            return f"<p><i>{esc(caption)}: no data (study not run or no finished runs).</i></p>"
+        if isinstance(names, str):
+            names = [names]
+        return "".join(f'<p><img src="figures/{esc(n)}" alt="{esc(caption)}"></p>' for n in names)
+
+    err_paper, _ = model_error_table(fits, "e_paper")
+    err_ours, _ = model_error_table(fits, "e_ours")
+    preset = fit.get("preset", "?")
+    omitted = ""
+    if preset == "quick":
+        omitted = ('<div class="warn"><b>Quick preset.</b> What it omits relative to the paper '
+                   "(the full preset, <code>--preset full</code>, runs the paper's grids):<ul>" +
+                   "".join(f"<li>{esc(x)}</li>" for x in QUICK_OMITS) + "</ul></div>")
+    ver = versions()
+    body = f"""<!DOCTYPE html><html><head><meta charset="utf-8">
+<title>corlab: reproduction of Ma et al. (2023)</title><style>{CSS}</style></head><body>
+<h1>Reproduction of Ma et al. (2023), Chinese J. Theor. Appl. Mech. 55(4):982-990</h1>
+<p>"Research on normal restitution coefficient based on dimensionless analyses",
+doi 10.6052/0459-1879-22-583. Our FE solver is corlab's explicit axisymmetric code, not ABAQUS.
+All numbers below are computed from the runs in this directory.</p>
+{omitted}
+<h2>Summary</h2>{discussion(fit)}
+<h2>Fitted coefficients (95 % confidence intervals, Student t)</h2>
+<p>Linear least squares by SVD with standard errors from s^2 (X^T X)^-1; (iii)-(iv) in log
+space. "paper in CI?" asks whether the published value lies inside our interval. The intervals
+carry only the scatter of our points about each form, not the discretisation error of the
+solver.</p>
+{coefficient_table(fits)}
+<h3>Goodness of fit</h3>{goodness_rows(fits)}
+<h2>Error of the paper's model against our solver, per case</h2>
+<p>Relative error (e_model - e_FE)/e_FE of Ma eq. 19 with the published constants (corlab's
+<code>ma2023</code> model), for every finished run with a plastic substrate.</p>
+{err_paper}
+<h3>Same, with our refitted constants</h3>{err_ours}
+<h2>Verification (paper section 1)</h2>
+{verification_section(out_dir, fit)}
+{img("fig2", "Fig. 2")}{img("fig3", "Fig. 3")}{img("fig5", "Fig. 5")}
+<h2>Restitution law (paper section 2.1)</h2>
+{img("fig6", "Fig. 6")}{img("fig7", "Fig. 7")}{img("fig8", "Fig. 8")}
+<h2>Yield velocity (paper section 2.2)</h2>
+<p>v_y of each case is the e = 1 crossing of its fitted line e = a_i + s ln k1 (the paper's
+back-calculation); E* is realised with equal bodies, nu = 0.3, E = 2(1 - nu^2) E* = 1.82 E*.</p>
+{img("fig9", "Fig. 9")}{img("fig10", "Fig. 10")}
+<h3>Yield onset straight from the solver (not in the paper)</h3>
+{onset_table(fits)}{img("onset", "yield onset")}
+<h2>Model comparison (paper section 3, Tables 3-4)</h2>
+<p><b>No experimental points</b>: no published numbers of Kharaz &amp; Gorham (2000) are
+available to corlab; none are shown and none were digitised.</p>
+{img("fig11_12", "Figs. 11-12")}{img("fig13", "Fig. 13")}
+<h2>Runs and time</h2>{runs_table(fit)}
+<p>Fitting took {fmt(fit.get('fit_wall_s'), 3)} s. Runs in parallel: {esc(fit.get('jobs'))}
+(hardware threads: {esc(fit.get('hardware_threads'))}).</p>
+<h2>Command and versions</h2>
+<p><code>{esc(fit.get('command', ''))}</code> (then <code>python3 -m corlab.report {esc(out_dir)}
+</code>)</p>
+{table(["item", "value"], [[esc(k), esc(v)] for k, v in [
+    ("preset", preset), ("corlab", fit.get("corlab_version")), ("compiler", fit.get("compiler")),
+    ("build", fit.get("build_type")), ("date (UTC)", fit.get("date_utc"))] + list(ver.items())])}
+</body></html>"""
+    path = os.path.join(out_dir, "report.html")
+    with open(path, "w") as f:
+        f.write(body)
+    return path
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if len(argv) != 1:
+        print("usage: python3 -m corlab.report DIR  (DIR holds fit.json from corlab reproduce)",
+              file=sys.stderr)
+        return 2
+    if not os.path.exists(os.path.join(argv[0], "fit.json")):
+        print(f"corlab.report: error: no fit.json in {argv[0]}", file=sys.stderr)
+        return 2
+    print(make_report(argv[0]))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,109 @@
+"""Tests of the analytic CoR model bindings (corlab.models, corlab.predict, corlab.yield_velocity)."""
+import math
+
+import numpy as np
+import pytest
+
+import corlab
+
+SPHERE = "alumina_ma2023"
+AL = "aluminium_ma2023"
+STEEL = "steel_jackson2010"
+
+
+def test_models_lists_every_model_with_metadata():
+    infos = corlab.models()
+    names = [m["name"] for m in infos]
+    assert names == corlab.model_names()
+    for required in ("ma2023", "ma2023-exact", "thornton1997", "thornton1997-cnu",
+                     "thornton1997-sy", "jg1", "jg2", "jg2010-fit", "jg2010-fit-c", "wu2003",
+                     "johnson1985"):
+        assert required in names
+    for m in infos:
+        assert m["status"] in ("verified-paper", "verified-second-source", "unverified")
+        assert m["citation"] and m["equation"] and m["validity"] and m["status_note"]
+    by_name = {m["name"]: m for m in infos}
+    assert by_name["wu2003"]["status"] == "unverified"
+    assert by_name["wu2003"]["clamped_by_default"] is False
+    assert by_name["ma2023"]["status"] == "verified-paper"
+
+
+def test_predict_scalar_golden_values():
+    e = corlab.predict("ma2023", SPHERE, AL, 1.0)
+    assert isinstance(e, float)
+    assert e == pytest.approx(0.7932, abs=5e-5)
+    assert corlab.predict("ma2023", SPHERE, STEEL, 1.0) == pytest.approx(0.8908, abs=5e-5)
+    assert corlab.predict("thornton1997", SPHERE, AL, 1.0) == pytest.approx(0.5716, abs=5e-5)
+    assert corlab.predict("thornton1997", SPHERE, STEEL, 1) == pytest.approx(0.7127, abs=5e-5)
+
+
+def test_predict_numpy_in_numpy_out_same_shape():
+    v = np.array([[0.1, 0.5], [1.0, 6.0]])
+    e = corlab.predict("ma2023", SPHERE, AL, v)
+    assert isinstance(e, np.ndarray)
+    assert e.shape == v.shape
+    assert e.dtype == np.float64
+    expected = [[1.000, 0.871], [0.793, 0.592]]  # reference sec. 9
+    np.testing.assert_allclose(e, expected, atol=6e-4)
+    for idx in np.ndindex(v.shape):
+        assert e[idx] == corlab.predict("ma2023", SPHERE, AL, float(v[idx]))
+
+
+def test_predict_accepts_lists_and_material_objects():
+    sphere = corlab.material(SPHERE)
+    substrate = corlab.Material(E=68e9, nu=0.33, rho=2700.0, sigma_y=380e6)
+    e = corlab.predict("jg2010-fit", sphere, substrate, [0.1, 1.0, 6.0])
+    np.testing.assert_allclose(e, [0.968, 0.787, 0.614], atol=6e-4)
+
+
+def test_all_clamped_models_in_unit_interval():
+    v = np.logspace(-3, 3, 200)
+    for name in corlab.model_names():
+        e = corlab.predict(name, SPHERE, STEEL, v)
+        assert np.all(np.isfinite(e)), name
+        if name != "wu2003":
+            assert np.all((e >= 0.0) & (e <= 1.0)), name
+
+
+def test_wu_unclamped_by_default_and_clamp_option():
+    assert corlab.predict("wu2003", SPHERE, AL, 0.2) == pytest.approx(1.441, abs=6e-4)
+    assert corlab.predict("wu2003", SPHERE, AL, 0.2, clamp=True) == 1.0
+    assert corlab.predict("johnson1985", SPHERE, AL, 0.5, clamp=False) == pytest.approx(
+        1.314, abs=6e-4)
+
+
+def test_yield_velocity():
+    assert corlab.yield_velocity("ma2023", SPHERE, AL) == pytest.approx(0.15736, abs=5e-6)
+    assert corlab.yield_velocity("ma2023-exact", SPHERE, AL) == pytest.approx(0.15776, abs=5e-6)
+    assert corlab.yield_velocity("thornton1997", SPHERE, STEEL) == pytest.approx(0.1399, abs=5e-5)
+    assert corlab.yield_velocity("jg2", SPHERE, AL) == pytest.approx(0.0601, abs=5e-5)
+    assert corlab.yield_velocity("johnson1985", SPHERE, STEEL) == pytest.approx(0.1411, abs=5e-5)
+    assert math.isfinite(corlab.yield_velocity("jg1", SPHERE, STEEL))
+
+
+@pytest.mark.parametrize("v", [0.0, -1.0, float("nan"), float("inf")])
+def test_bad_velocity_raises_value_error(v):
+    with pytest.raises(ValueError, match=r"^invalid velocity = .*: must be > 0 \[m/s\]$"):
+        corlab.predict("ma2023", SPHERE, AL, v)
+
+
+def test_bad_velocity_in_array_names_index():
+    with pytest.raises(ValueError, match=r"invalid velocity\[2\] = -3"):
+        corlab.predict("ma2023", SPHERE, AL, np.array([1.0, 2.0, -3.0]))
+
+
+def test_unknown_model_raises_value_error():
+    with pytest.raises(ValueError, match=r"invalid model = 'foo': must be one of \[ma2023, "):
+        corlab.predict("foo", SPHERE, AL, 1.0)
+    with pytest.raises(ValueError, match="invalid model = 'foo'"):
+        corlab.yield_velocity("foo", SPHERE, AL)
+
+
+def test_substrate_without_yield_stress_raises():
+    with pytest.raises(ValueError, match=r"invalid substrate.sigma_y = 'missing'"):
+        corlab.predict("ma2023", SPHERE, SPHERE, 1.0)
+
+
+def test_bad_material_spec_raises():
+    with pytest.raises(ValueError, match=r"invalid sphere.rho = -1"):
+        corlab.predict("ma2023", "E=370e9,nu=0.22,rho=-1", AL, 1.0)

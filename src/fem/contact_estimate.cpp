@@ -1,0 +1,62 @@
+#include "corlab/fem/contact_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "corlab/materials/material.hpp"
+
+namespace corlab::fem {
+
+double hertz_contact_time_factor() {
+  // 2 int_0^1 (1 - x^(5/2))^(-1/2) dx = 2 (2/5) B(2/5, 1/2) = (4/5) sqrt(pi) G(2/5) / G(9/10).
+  return 0.8 * std::sqrt(std::numbers::pi) * std::tgamma(0.4) / std::tgamma(0.9);
+}
+
+HertzReference hertz_reference(double sphere_radius,
+                               double effective_modulus,
+                               double sphere_density,
+                               double velocity) {
+  HertzReference ref;
+  const double r = sphere_radius;
+  ref.effective_modulus = effective_modulus;
+  ref.mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * sphere_density;
+  ref.max_overlap = std::pow(
+      15.0 * ref.mass * velocity * velocity / (16.0 * effective_modulus * std::sqrt(r)), 0.4);
+  ref.max_force = 4.0 / 3.0 * effective_modulus * std::sqrt(r) * std::pow(ref.max_overlap, 1.5);
+  ref.contact_radius = std::sqrt(r * ref.max_overlap);
+  ref.contact_time = hertz_contact_time_factor() * ref.max_overlap / velocity;
+  return ref;
+}
+
+HertzReference hertz_reference(const ImpactConfig& config) {
+  return hertz_reference(config.sphere.radius,
+                         effective_modulus(config.sphere.material, config.substrate.material),
+                         config.sphere.material.density, config.impact.velocity);
+}
+
+double plastic_contact_radius(double sphere_radius,
+                              double sphere_density,
+                              double velocity,
+                              double yield_stress) {
+  const double r = sphere_radius;
+  const double mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * sphere_density;
+  const double mean_pressure = kPlasticMeanPressureFactor * yield_stress;
+  // m v^2 / 2 = pi p_m R delta^2  ->  delta; then a^2 = 2 R delta.
+  const double delta =
+      std::sqrt(mass * velocity * velocity / (2.0 * std::numbers::pi * mean_pressure * r));
+  return std::sqrt(2.0 * r * delta);
+}
+
+double predicted_contact_radius(const ImpactConfig& config) {
+  const double r = config.sphere.radius;
+  double a = hertz_reference(config).contact_radius;
+  if (config.substrate.material.yield_stress) {
+    a = std::max(a,
+                 plastic_contact_radius(r, config.sphere.material.density, config.impact.velocity,
+                                        *config.substrate.material.yield_stress));
+  }
+  return std::min(a, kMaxContactRadiusFraction * r);
+}
+
+}  // namespace corlab::fem

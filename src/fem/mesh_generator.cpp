@@ -1,0 +1,606 @@
+#include "corlab/fem/mesh_generator.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <utility>
+
+#include "corlab/core/error.hpp"
+#include "corlab/fem/contact_estimate.hpp"
+#include "corlab/fem/gmsh_reader.hpp"
+
+namespace corlab::fem {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+/// Smallest spacing allowed on edges whose distribution is derived from another edge, as a
+/// fraction of h (the smallest element sets the explicit time step).
+constexpr double kMinSpacingFraction = 0.9;
+/// Bottom-block arc angle limits [rad] and corner angle of the ring blocks at the core corners.
+constexpr double kMinBottomAngle = 10.0 * kPi / 180.0;
+constexpr double kMaxBottomAngle = 60.0 * kPi / 180.0;
+constexpr double kRingCornerAngle = 120.0 * kPi / 180.0;
+/// Depth of the uniform-h layer under the sphere's lowest point as a fraction of zone_depth: the
+/// elastic sphere's stresses peak at ~0.5 a below the contact (Johnson 1985, fig. 4.6).
+constexpr double kSphereUniformDepthFraction = 0.5;
+/// Ring thickness limits as fractions of R.
+constexpr double kMinRingFraction = 0.12;
+constexpr double kMaxRingFraction = 0.2;
+constexpr double kTopRingFraction = 0.5;
+
+struct Point {
+  double r = 0.0;
+  double z = 0.0;
+};
+
+Point operator+(Point a, Point b) { return {a.r + b.r, a.z + b.z}; }
+Point operator-(Point a, Point b) { return {a.r - b.r, a.z - b.z}; }
+Point operator*(double s, Point a) { return {s * a.r, s * a.z}; }
+double norm(Point a) { return std::hypot(a.r, a.z); }
+
+/// Sizes of a distribution from positions.
+std::vector<double> spacings(const std::vector<double>& x) {
+  std::vector<double> s(x.size() - 1);
+  for (std::size_t i = 0; i + 1 < x.size(); ++i) s[i] = x[i + 1] - x[i];
+  return s;
+}
+
+std::vector<double> positions_from_sizes(const std::vector<double>& sizes) {
+  std::vector<double> x(sizes.size() + 1, 0.0);
+  for (std::size_t i = 0; i < sizes.size(); ++i) x[i + 1] = x[i] + sizes[i];
+  return x;
+}
+
+/// Rescales the sizes flagged `graded` so that the total is `length`; when none is graded, all.
+void fit_length(std::vector<double>& sizes, const std::vector<bool>& graded, double length) {
+  double fixed = 0.0;
+  double free = 0.0;
+  for (std::size_t i = 0; i < sizes.size(); ++i) (graded[i] ? free : fixed) += sizes[i];
+  if (free <= 0.0 || fixed >= length) {
+    const double f = length / (fixed + free);
+    for (double& s : sizes) s *= f;
+    return;
+  }
+  const double f = (length - fixed) / free;
+  for (std::size_t i = 0; i < sizes.size(); ++i)
+    if (graded[i]) sizes[i] *= f;
+}
+
+/// Grows sizes from `start` (uniform for `uniform_length`) by `growth` up to `cap`; appends to
+/// `sizes` until their sum reaches `target`.
+void grow_sizes(double start,
+                double uniform_length,
+                double growth,
+                double cap,
+                double target,
+                std::vector<double>& sizes,
+                std::vector<bool>& graded) {
+  double x = 0.0;
+  double s = start;
+  while (x < target * (1.0 - 1e-12)) {
+    const bool uniform = x + 0.5 * start < uniform_length;
+    if (!uniform) s = std::max(start, std::min(s * growth, cap));
+    sizes.push_back(uniform ? start : s);
+    graded.push_back(!uniform);
+    x += sizes.back();
+  }
+}
+
+/// Picks between keeping the last (overshooting) size and dropping it, so that the rescaling of
+/// the graded part is closest to 1, then rescales.
+std::vector<double> close_distribution(std::vector<double> sizes,
+                                       std::vector<bool> graded,
+                                       double length) {
+  auto factor = [&](std::size_t n) {
+    double fixed = 0.0;
+    double free = 0.0;
+    for (std::size_t i = 0; i < n; ++i) (graded[i] ? free : fixed) += sizes[i];
+    if (free <= 0.0 || fixed >= length) return length / (fixed + free);
+    return (length - fixed) / free;
+  };
+  if (sizes.size() > 1) {
+    const double keep = factor(sizes.size());
+    const double drop = factor(sizes.size() - 1);
+    if (std::abs(std::log(drop)) < std::abs(std::log(keep))) {
+      sizes.pop_back();
+      graded.pop_back();
+    }
+  }
+  fit_length(sizes, graded, length);
+  return sizes;
+}
+
+/// Two-sided graded sizes over `length`: starts at s0 (uniform over `uniform_length`), ends at
+/// s1, grows by `growth` from both ends up to `cap`.
+std::vector<double> two_sided_sizes(
+    double length, double s0, double uniform_length, double s1, double growth, double cap) {
+  std::vector<double> left;
+  std::vector<double> right;
+  std::vector<bool> left_graded;
+  double x = 0.0;
+  double a = s0;
+  double b = s1;
+  bool first_right = true;
+  while (x < length * (1.0 - 1e-12)) {
+    const bool uniform = x + 0.5 * s0 < uniform_length;
+    if (uniform) {
+      left.push_back(s0);
+      left_graded.push_back(false);
+      x += s0;
+      continue;
+    }
+    // next candidates
+    const double next_a = std::max(s0, std::min(a * growth, cap));
+    const double next_b = first_right ? s1 : std::min(b * growth, cap);
+    if (next_b <= next_a) {
+      right.push_back(next_b);
+      b = next_b;
+      first_right = false;
+      x += next_b;
+    } else {
+      left.push_back(next_a);
+      left_graded.push_back(true);
+      a = next_a;
+      x += next_a;
+    }
+  }
+  std::vector<double> sizes = left;
+  std::vector<bool> graded = left_graded;
+  for (auto it = right.rbegin(); it != right.rend(); ++it) {
+    sizes.push_back(*it);
+    graded.push_back(true);
+  }
+  // rescale the graded part (dropping one interval if that is closer)
+  if (sizes.size() > 2) {
+    double fixed = 0.0;
+    double free = 0.0;
+    for (std::size_t i = 0; i < sizes.size(); ++i) (graded[i] ? free : fixed) += sizes[i];
+    // drop the largest graded interval when that makes the factor closer to one
+    auto largest = std::max_element(sizes.begin(), sizes.end());
+    const std::size_t k = static_cast<std::size_t>(largest - sizes.begin());
+    if (graded[k] && free - sizes[k] > 0.0 && fixed < length) {
+      const double keep = (length - fixed) / free;
+      const double drop = (length - fixed) / (free - sizes[k]);
+      if (std::abs(std::log(drop)) < std::abs(std::log(keep))) {
+        sizes.erase(sizes.begin() + static_cast<std::ptrdiff_t>(k));
+        graded.erase(graded.begin() + static_cast<std::ptrdiff_t>(k));
+      }
+    }
+  }
+  fit_length(sizes, graded, length);
+  return sizes;
+}
+
+/// Normalised positions (0..1) of a distribution.
+std::vector<double> fractions(const std::vector<double>& x) {
+  std::vector<double> f(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) f[i] = x[i] / x.back();
+  f.back() = 1.0;
+  return f;
+}
+
+/// Positions on an edge of `length` with the same count as `f` (fractions): f scaled, blended
+/// towards uniform just enough that no interval is below `min_size` (when possible).
+std::vector<double> fit_fractions(const std::vector<double>& f, double length, double min_size) {
+  const std::size_t n = f.size() - 1;
+  auto blend = [&](double w) {
+    std::vector<double> x(f.size());
+    for (std::size_t i = 0; i <= n; ++i)
+      x[i] = length * ((1.0 - w) * f[i] + w * static_cast<double>(i) / static_cast<double>(n));
+    x.back() = length;
+    return x;
+  };
+  auto smallest = [](const std::vector<double>& x) {
+    double m = x[1] - x[0];
+    for (std::size_t i = 1; i + 1 < x.size(); ++i) m = std::min(m, x[i + 1] - x[i]);
+    return m;
+  };
+  std::vector<double> x = blend(0.0);
+  if (smallest(x) >= min_size) return x;
+  if (smallest(blend(1.0)) < min_size) return blend(1.0);
+  double lo = 0.0;
+  double hi = 1.0;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (smallest(blend(mid)) >= min_size ? hi : lo) = mid;
+  }
+  return blend(hi);
+}
+
+/// Splits the largest intervals in half until the distribution has `n` intervals.
+std::vector<double> split_to_count(const std::vector<double>& x, std::size_t n) {
+  std::vector<double> sizes = spacings(x);
+  while (sizes.size() < n) {
+    const auto it = std::max_element(sizes.begin(), sizes.end());
+    const double half = 0.5 * *it;
+    *it = half;
+    sizes.insert(it, half);
+  }
+  return positions_from_sizes(sizes);
+}
+
+/// A curve as a dense polyline, evaluated by arc length.
+class Curve {
+ public:
+  explicit Curve(std::vector<Point> pts) : pts_(std::move(pts)), s_(pts_.size(), 0.0) {
+    for (std::size_t i = 1; i < pts_.size(); ++i) s_[i] = s_[i - 1] + norm(pts_[i] - pts_[i - 1]);
+  }
+  double length() const { return s_.back(); }
+  Point at(double s) const {
+    if (s <= 0.0) return pts_.front();
+    if (s >= s_.back()) return pts_.back();
+    const auto it = std::upper_bound(s_.begin(), s_.end(), s);
+    const std::size_t i = static_cast<std::size_t>(it - s_.begin());
+    const double t = (s - s_[i - 1]) / (s_[i] - s_[i - 1]);
+    return (1.0 - t) * pts_[i - 1] + t * pts_[i];
+  }
+  /// Points at the given arc-length positions, endpoints exact.
+  std::vector<Point> sample(const std::vector<double>& x) const {
+    std::vector<Point> out(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) out[i] = at(x[i]);
+    out.front() = pts_.front();
+    out.back() = pts_.back();
+    return out;
+  }
+
+ private:
+  std::vector<Point> pts_;
+  std::vector<double> s_;
+};
+
+constexpr int kCurveSamples = 4000;
+
+/// Cubic Hermite curve from p0 (unit tangent t0) to p1 (unit tangent t1), tangents scaled by the
+/// chord length.
+Curve hermite(Point p0, Point t0, Point p1, Point t1) {
+  const double c = norm(p1 - p0);
+  std::vector<Point> pts(kCurveSamples + 1);
+  for (int k = 0; k <= kCurveSamples; ++k) {
+    const double t = static_cast<double>(k) / kCurveSamples;
+    const double h00 = 2 * t * t * t - 3 * t * t + 1;
+    const double h10 = t * t * t - 2 * t * t + t;
+    const double h01 = -2 * t * t * t + 3 * t * t;
+    const double h11 = t * t * t - t * t;
+    pts[static_cast<std::size_t>(k)] = h00 * p0 + (h10 * c) * t0 + h01 * p1 + (h11 * c) * t1;
+  }
+  pts.front() = p0;
+  pts.back() = p1;
+  return Curve(std::move(pts));
+}
+
+/// Points on a circle (centre (0, zc), radius R) at angles phi measured from the downward
+/// direction: (R sin phi, zc - R cos phi).
+Point polar(double zc, double radius, double phi) {
+  if (phi == 0.0) return {0.0, zc - radius};
+  if (phi >= kPi) return {0.0, zc + radius};
+  return {radius * std::sin(phi), zc - radius * std::cos(phi)};
+}
+
+/// Structured block by discrete transfinite interpolation between four edge point lists:
+/// south (j = 0) and north (j = nj) indexed by i, west (i = 0) and east (i = ni) by j; corner
+/// points must agree. Returns (ni+1) x (nj+1) points, index i * (nj + 1) + j.
+std::vector<Point> coons(const std::vector<Point>& south,
+                         const std::vector<Point>& north,
+                         const std::vector<Point>& west,
+                         const std::vector<Point>& east) {
+  const std::size_t ni = south.size() - 1;
+  const std::size_t nj = west.size() - 1;
+  auto arc_fractions = [](const std::vector<Point>& e) {
+    std::vector<double> f(e.size(), 0.0);
+    for (std::size_t k = 1; k < e.size(); ++k) f[k] = f[k - 1] + norm(e[k] - e[k - 1]);
+    for (double& v : f) v /= f.back();
+    return f;
+  };
+  const auto fs = arc_fractions(south);
+  const auto fn = arc_fractions(north);
+  const auto fw = arc_fractions(west);
+  const auto fe = arc_fractions(east);
+  const Point p00 = south.front();
+  const Point p10 = south.back();
+  const Point p01 = north.front();
+  const Point p11 = north.back();
+  std::vector<Point> x((ni + 1) * (nj + 1));
+  for (std::size_t i = 0; i <= ni; ++i) {
+    for (std::size_t j = 0; j <= nj; ++j) {
+      Point p;
+      if (j == 0) {
+        p = south[i];
+      } else if (j == nj) {
+        p = north[i];
+      } else if (i == 0) {
+        p = west[j];
+      } else if (i == ni) {
+        p = east[j];
+      } else {
+        const double du = fn[i] - fs[i];
+        const double dv = fe[j] - fw[j];
+        const double u = (fs[i] + fw[j] * du) / (1.0 - du * dv);
+        const double v = fw[j] + u * dv;
+        p = (1.0 - v) * south[i] + v * north[i] + (1.0 - u) * west[j] + u * east[j] -
+            ((1.0 - u) * (1.0 - v) * p00 + u * (1.0 - v) * p10 + (1.0 - u) * v * p01 + u * v * p11);
+      }
+      x[i * (nj + 1) + j] = p;
+    }
+  }
+  return x;
+}
+
+/// Adds nodes and elements to a mesh, merging nodes at bitwise-equal coordinates within a body.
+class MeshBuilder {
+ public:
+  explicit MeshBuilder(Mesh& mesh) : mesh_(mesh) {}
+  void start_body(Body body) {
+    body_ = body;
+    index_.clear();
+  }
+  int node(Point p) {
+    const auto [it, inserted] = index_.try_emplace({p.r, p.z}, mesh_.num_nodes());
+    if (inserted) {
+      mesh_.r.push_back(p.r);
+      mesh_.z.push_back(p.z);
+      mesh_.node_body.push_back(body_);
+    }
+    return it->second;
+  }
+  /// Adds a block of (ni+1) x (nj+1) points (index i * (nj+1) + j); returns its node ids.
+  std::vector<int> block(const std::vector<Point>& pts, std::size_t ni, std::size_t nj) {
+    std::vector<int> ids(pts.size());
+    for (std::size_t k = 0; k < pts.size(); ++k) ids[k] = node(pts[k]);
+    for (std::size_t i = 0; i < ni; ++i) {
+      for (std::size_t j = 0; j < nj; ++j) {
+        std::array<int, 4> q{ids[i * (nj + 1) + j], ids[(i + 1) * (nj + 1) + j],
+                             ids[(i + 1) * (nj + 1) + j + 1], ids[i * (nj + 1) + j + 1]};
+        // counter-clockwise in (r, z): flip when the signed area is negative
+        const auto a = static_cast<std::size_t>(q[0]);
+        const auto c = static_cast<std::size_t>(q[2]);
+        const auto b = static_cast<std::size_t>(q[1]);
+        const auto d = static_cast<std::size_t>(q[3]);
+        const double area2 = (mesh_.r[c] - mesh_.r[a]) * (mesh_.z[d] - mesh_.z[b]) -
+                             (mesh_.z[c] - mesh_.z[a]) * (mesh_.r[d] - mesh_.r[b]);
+        if (area2 < 0.0) std::swap(q[1], q[3]);
+        mesh_.quads.push_back(q);
+        mesh_.element_body.push_back(body_);
+      }
+    }
+    return ids;
+  }
+
+ private:
+  Mesh& mesh_;
+  Body body_ = Body::kSphere;
+  std::map<std::pair<double, double>, int> index_;
+};
+
+/// Points on the sphere's arc from angle phi0 to phi1 at arc-length positions s (s.front() = 0,
+/// s.back() = the arc length); the end points are exactly polar(phi0) and polar(phi1), so that
+/// blocks sharing a corner share its node.
+std::vector<Point> arc_points(
+    double zc, double radius, double phi0, double phi1, const std::vector<double>& s) {
+  std::vector<Point> out(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k)
+    out[k] = polar(zc, radius, phi0 + (phi1 - phi0) * s[k] / s.back());
+  out.front() = polar(zc, radius, phi0);
+  out.back() = polar(zc, radius, phi1);
+  return out;
+}
+
+std::vector<Point> line_points(Point a, Point b, const std::vector<double>& f) {
+  std::vector<Point> out(f.size());
+  for (std::size_t k = 0; k < f.size(); ++k) out[k] = (1.0 - f[k]) * a + f[k] * b;
+  out.front() = a;
+  out.back() = b;
+  return out;
+}
+
+void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+  const double radius = o.sphere_radius;
+  const double zc = o.gap + radius;
+  const double h = o.h_contact;
+  const double g = o.growth;
+  const double min_size = kMinSpacingFraction * h;
+
+  // bottom ring block: arc P (phi = 0) -> Q (phi = alpha), depth d_ring
+  const double alpha = std::clamp(o.zone_radius / radius, kMinBottomAngle, kMaxBottomAngle);
+  const auto arc_b = graded_positions(radius * alpha, h, o.zone_radius, g, o.h_max);
+  const std::size_t ns = arc_b.size() - 1;
+  const double uniform_depth = kSphereUniformDepthFraction * o.zone_depth;
+  // ring thickness: thin enough that the core's bottom edge (n_s intervals) stays long enough
+  // for spacings >= kMinSpacingFraction h (the radial columns converge towards the centre)
+  auto e_out = [](double phi) { return Point{std::sin(phi), -std::cos(phi)}; };
+  auto e_tan = [](double phi) { return Point{std::cos(phi), std::sin(phi)}; };
+  const double ca = std::cos(kRingCornerAngle);
+  const double sa = std::sin(kRingCornerAngle);
+  const Point k_to_a = ca * e_out(alpha) - sa * e_tan(alpha);
+  auto bottom_curve = [&](double d) {
+    return hermite(polar(zc, radius - d, 0.0), {1.0, 0.0}, polar(zc, radius - d, alpha),
+                   -1.0 * k_to_a);
+  };
+  double d_ring = std::clamp(uniform_depth, kMinRingFraction * radius, kMaxRingFraction * radius);
+  const double needed = 1.05 * kMinSpacingFraction * h * static_cast<double>(ns);
+  while (d_ring > 4.0 * h && bottom_curve(d_ring).length() < needed) d_ring *= 0.9;
+  const auto depth_b = graded_positions(d_ring, h, uniform_depth, g, o.h_max);
+  const std::size_t nt = depth_b.size() - 1;
+  const auto depth_f = fractions(depth_b);
+  // top block arc: n_s intervals of roughly square elements (radial size d_top / n_t)
+  const double d_top0 = std::max(d_ring, kTopRingFraction * radius);
+  const double s_top_target = std::max(h, d_top0 / static_cast<double>(nt));
+  const double gamma = std::clamp(static_cast<double>(ns) * s_top_target / radius, kPi / 4.0,
+                                  kPi - alpha - kPi / 3.0);
+  const double beta = kPi - gamma;
+  // the core's top edge carries n_s intervals too: keep it long enough for spacings ~h
+  const double rho_top_min =
+      std::min(1.0 - kMinRingFraction, 1.2 * static_cast<double>(ns) * h / (gamma * radius)) *
+      radius;
+  const double d_top = std::max(d_ring, std::min(d_top0, radius - rho_top_min));
+
+  const Point pnt_p = polar(zc, radius, 0.0);
+  const Point pnt_q = polar(zc, radius, alpha);
+  const Point pnt_q2 = polar(zc, radius, beta);
+  const Point pnt_t = polar(zc, radius, kPi);
+  const Point pnt_a = polar(zc, radius - d_ring, 0.0);
+  const Point pnt_k = polar(zc, radius - d_ring, alpha);
+  const Point pnt_k2 = polar(zc, radius - d_top, beta);
+  const Point pnt_a2 = polar(zc, radius - d_top, kPi);
+
+  // core boundary curves with corner angles set at K and K': K -> A leaves K at the ring corner
+  // angle from the outward radial towards smaller phi, K -> K' towards larger phi
+  const Point k_to_k2 = ca * e_out(alpha) + sa * e_tan(alpha);
+  const Point k2_to_k = ca * e_out(beta) - sa * e_tan(beta);
+  const Point k2_to_a2 = ca * e_out(beta) + sa * e_tan(beta);
+  const Curve gamma_bottom = bottom_curve(d_ring);
+  const Curve gamma_right = hermite(pnt_k, k_to_k2, pnt_k2, -1.0 * k2_to_k);
+  const Curve gamma_top = hermite(pnt_a2, {1.0, 0.0}, pnt_k2, -1.0 * k2_to_a2);
+
+  // bottom block edges
+  const auto b_south = arc_points(zc, radius, 0.0, alpha, arc_b);  // P -> Q
+  const auto b_north = gamma_bottom.sample(fit_fractions(fractions(arc_b), gamma_bottom.length(),
+                                                         min_size));  // A -> K
+  const auto b_west = line_points(pnt_p, pnt_a, depth_f);             // P -> A
+  const auto b_east = line_points(pnt_q, pnt_k, depth_f);             // Q -> K
+
+  // right block: arc Q -> Q' (i), radial (j): Q->K to Q'->K'
+  const auto arc_b_sizes = spacings(arc_b);
+  const double s_q = arc_b_sizes.back();
+  const double s_top = radius * gamma / static_cast<double>(ns);
+  const double right_uniform = std::max(0.0, o.zone_radius - radius * alpha);
+  auto arc_r = positions_from_sizes(
+      two_sided_sizes(radius * (beta - alpha), s_q, right_uniform, s_top, g, o.h_max));
+  // core axis A -> A': continues the depth refinement below the ring, then grows
+  const auto depth_sizes = spacings(depth_b);
+  const double s_top_radial =
+      (d_top - d_ring) >= 0.0 ? depth_sizes.back() * d_top / d_ring : depth_sizes.back();
+  auto axis_x = positions_from_sizes(two_sided_sizes(norm(pnt_a2 - pnt_a), depth_sizes.back(),
+                                                     std::max(0.0, uniform_depth - d_ring),
+                                                     s_top_radial, g, o.h_max));
+  const std::size_t nr = std::max(arc_r.size(), axis_x.size()) - 1;
+  arc_r = split_to_count(arc_r, nr);
+  axis_x = split_to_count(axis_x, nr);
+  const auto r_south = arc_points(zc, radius, alpha, beta, arc_r);  // Q -> Q'
+  const auto r_north = gamma_right.sample(
+      fit_fractions(fractions(arc_r), gamma_right.length(), min_size));  // K -> K'
+  const auto r_west = b_east;                                            // Q -> K
+  const auto r_east = line_points(pnt_q2, pnt_k2, depth_f);              // Q' -> K'
+
+  // top block: arc T -> Q' (i, from the axis), radial T -> A' and Q' -> K'
+  std::vector<double> arc_t(ns + 1);
+  for (std::size_t k = 0; k <= ns; ++k)
+    arc_t[k] = radius * gamma * static_cast<double>(k) / static_cast<double>(ns);
+  std::vector<Point> t_south(ns + 1);
+  for (std::size_t k = 0; k <= ns; ++k) t_south[k] = polar(zc, radius, kPi - arc_t[k] / radius);
+  t_south.back() = pnt_q2;
+  const auto t_north =
+      gamma_top.sample(fit_fractions(fractions(arc_t), gamma_top.length(), min_size));  // A' -> K'
+  const auto t_west = line_points(pnt_t, pnt_a2, depth_f);                              // T -> A'
+  const auto t_east = r_east;                                                           // Q' -> K'
+
+  // core: south A -> K (bottom), north A' -> K' (top), west A -> A' (axis), east K -> K'
+  const auto c_west = line_points(pnt_a, pnt_a2, fractions(axis_x));
+
+  builder.start_body(Body::kSphere);
+  const auto ids_b = builder.block(coons(b_south, b_north, b_west, b_east), ns, nt);
+  const auto ids_r = builder.block(coons(r_south, r_north, r_west, r_east), nr, nt);
+  const auto ids_t = builder.block(coons(t_south, t_north, t_west, t_east), ns, nt);
+  builder.block(coons(b_north, t_north, c_west, r_north), ns, nr);
+
+  // surface nodes from the lowest point (bottom, right, then top block arcs), up to the first
+  // node past the equator
+  std::vector<int>& surf = mesh.sphere_surface_nodes;
+  std::vector<std::pair<int, double>> arc_nodes;  // (node, polar angle)
+  for (std::size_t i = 0; i <= ns; ++i)
+    arc_nodes.emplace_back(ids_b[i * (nt + 1)], alpha * arc_b[i] / arc_b.back());
+  for (std::size_t i = 1; i <= nr; ++i)
+    arc_nodes.emplace_back(ids_r[i * (nt + 1)], alpha + (beta - alpha) * arc_r[i] / arc_r.back());
+  for (std::size_t i = ns; i-- > 0;)
+    arc_nodes.emplace_back(ids_t[i * (nt + 1)], kPi - arc_t[i] / radius);
+  for (const auto& [node, phi] : arc_nodes) {
+    surf.push_back(node);
+    if (phi > 0.5 * kPi) break;
+  }
+}
+
+void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+  const auto xr =
+      graded_positions(o.substrate_radius, o.h_contact, o.zone_radius, o.growth, o.h_max);
+  const auto xd = graded_positions(o.substrate_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
+  const std::size_t ni = xr.size() - 1;
+  const std::size_t nj = xd.size() - 1;
+  std::vector<Point> pts((ni + 1) * (nj + 1));
+  for (std::size_t i = 0; i <= ni; ++i)
+    for (std::size_t j = 0; j <= nj; ++j)  // j = 0 at the base, j = nj at the top
+      pts[i * (nj + 1) + j] = {xr[i], j == nj ? 0.0 : -xd[nj - j]};
+  builder.start_body(Body::kSubstrate);
+  const auto ids = builder.block(pts, ni, nj);
+  for (std::size_t i = 0; i <= ni; ++i) {
+    mesh.substrate_surface_nodes.push_back(ids[i * (nj + 1) + nj]);
+    mesh.base_nodes.push_back(ids[i * (nj + 1)]);
+  }
+}
+
+}  // namespace
+
+std::vector<double> graded_positions(
+    double length, double h, double uniform_length, double growth, double h_max) {
+  std::vector<double> sizes;
+  std::vector<bool> graded;
+  grow_sizes(h, uniform_length, growth, std::max(h, h_max), length, sizes, graded);
+  auto x = positions_from_sizes(close_distribution(std::move(sizes), std::move(graded), length));
+  x.back() = length;  // exact end (the sum of the sizes may differ in the last bit)
+  return x;
+}
+
+void validate(const MeshOptions& o) {
+  require_positive("mesh.sphere_radius", o.sphere_radius, "[m]");
+  require_non_negative("mesh.gap", o.gap, "[m]");
+  require_positive("mesh.substrate_radius", o.substrate_radius, "[m]");
+  require_positive("mesh.substrate_depth", o.substrate_depth, "[m]");
+  require_positive("mesh.h_contact", o.h_contact, "[m]");
+  require_positive("mesh.zone_radius", o.zone_radius, "[m]");
+  require_positive("mesh.zone_depth", o.zone_depth, "[m]");
+  if (!(o.growth >= 1.0 && o.growth <= 2.0)) throw_invalid("mesh.growth", o.growth, "in [1, 2]");
+  require_positive("mesh.h_max", o.h_max, "[m]");
+  if (o.h_max < o.h_contact) throw_invalid("mesh.h_max", o.h_max, ">= the contact element size");
+  if (o.h_contact > 0.05 * o.sphere_radius)
+    throw_invalid("mesh.h_contact", o.h_contact, "<= R / 20 (too coarse for the sphere)");
+  const double max_elements_per_edge = 20000.0;
+  if (o.sphere_radius / o.h_contact > max_elements_per_edge ||
+      o.substrate_radius / o.h_contact > max_elements_per_edge ||
+      o.substrate_depth / o.h_contact > max_elements_per_edge)
+    throw_invalid("mesh.h_contact", o.h_contact, "coarser (more than 20000 elements per edge)");
+}
+
+MeshOptions mesh_options_for(const ImpactConfig& config) {
+  const double a = predicted_contact_radius(config);
+  MeshOptions o;
+  o.sphere_radius = config.sphere.radius;
+  o.gap = config.impact.gap;
+  o.substrate_radius = config.substrate.radius;
+  o.substrate_depth = config.substrate.depth;
+  o.h_contact = config.mesh.h_min;
+  if (config.mesh.contact_elements > 0.0)
+    o.h_contact = std::min(o.h_contact, a / config.mesh.contact_elements);
+  o.zone_radius = config.mesh.refine_factor * a;
+  o.zone_depth = o.zone_radius;
+  o.growth = config.mesh.growth;
+  o.h_max = std::max(config.mesh.h_max, o.h_contact);
+  return o;
+}
+
+Mesh generate_impact_mesh(const MeshOptions& options) {
+  validate(options);
+  Mesh mesh;
+  MeshBuilder builder(mesh);
+  generate_sphere(options, builder, mesh);
+  generate_substrate(options, builder, mesh);
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    if (mesh.r[static_cast<std::size_t>(n)] == 0.0) mesh.axis_nodes.push_back(n);
+  return mesh;
+}
+
+Mesh build_impact_mesh(const ImpactConfig& config) {
+  if (!config.mesh.file.empty()) return read_gmsh(config.mesh.file);
+  return generate_impact_mesh(mesh_options_for(config));
+}
+
+}  // namespace corlab::fem

@@ -1,0 +1,250 @@
+#include "corlab/restitution/registry.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+
+#include "corlab/core/error.hpp"
+
+namespace corlab::restitution {
+
+namespace {
+
+constexpr const char* kMaCitation =
+    "Ma J., Jie H., Bai M., Peng J., Chen H., Chen D. (2023) Chinese J. Theor. Appl. Mech. "
+    "55(4):982-990, eqs. 12, 18, 19";
+constexpr const char* kThorntonCitation =
+    "Thornton C. (1997) J. Appl. Mech. 64:383-386 (closed form as quoted by Jackson, Green & "
+    "Marghitu 2010, eq. 2)";
+constexpr const char* kThorntonEquation =
+    "e = sqrt(6 sqrt3/5) sqrt(1 - r^2/6) [r/(r + 2 sqrt(6/5 - r^2/5))]^(1/4), r = v_y/v; "
+    "v_y = 1.5605 sqrt(p_y^5/(E*^4 rho)); e = 1 for v <= v_y";
+constexpr const char* kThorntonNote =
+    "confirmed (two sources): contact law, yield velocity and closed form; which p_y the seed "
+    "paper used (1.6 sigma_y, C(nu) sigma_y or sigma_y) is unconfirmed";
+constexpr const char* kJgCitation =
+    "Jackson R.L., Green I., Marghitu D.B. (2010) Nonlinear Dyn. 60(3):217-229; loading law "
+    "Jackson & Green (2005) J. Tribol. 127(2):343-354";
+constexpr const char* kJgFitEquation =
+    "e = 1 - 0.0361 eps^-0.114 ln(V') (V' - 1)^(9.5 eps), V' = v/V_c, "
+    "V_c = 1.5605 (C S_y)^2.5/(E*^2 sqrt(rho)), C = 1.295 exp(0.736 nu); e = 1 for V' <= 1";
+
+std::vector<ModelInfo> build_catalog() {
+  std::vector<ModelInfo> c;
+  c.push_back(ModelInfo{
+      .name = "ma2023",
+      .title = "Ma et al. 2023 dimensionless log law",
+      .citation = kMaCitation,
+      .equation = "e = 1.16 + 0.253 ln(sigma_y/E*) + 0.056 ln(E*/(rho v^2)) for v >= v_y, "
+                  "v_y = sqrt(15.81 sigma_y^4.5/(rho E*^3.5)); e = 1 below; clamped to [0, 1]",
+      .validity = "FE calibration v = 0.1-70 m/s, sigma_y = 300-1300 MPa, E = 210 GPa, "
+                  "rho = 3925-15700 kg/m^3; fit error within +-5 %",
+      .status = Status::kVerifiedPaper,
+      .status_note = "confirmed (one source + derivation): the paper text; the derivation "
+                     "reproduces 15.81 and the e = 1 crossing. Eq. 18's v_y differs from the exact "
+                     "crossing (log branch 1.0003-1.0005 at v_y; removed by the clamp)",
+      .clamped_by_default = true});
+  c.push_back(ModelInfo{
+      .name = "ma2023-exact",
+      .title = "Ma et al. 2023 with the exact crossing velocity v_y*",
+      .citation = kMaCitation,
+      .equation = "e = 1 - 0.112 ln(v/v_y*) for v >= v_y*, "
+                  "v_y* = sqrt(exp(0.16/0.056) (sigma_y/E*)^(0.253/0.056) E*/rho); e = 1 below",
+      .validity = "as ma2023; continuous, monotone and <= 1 by construction",
+      .status = Status::kVerifiedPaper,
+      .status_note = "confirmed (one source + derivation): eq. 12 of the paper with the yield "
+                     "velocity replaced by the exact e = 1 crossing (checked numerically)",
+      .clamped_by_default = true});
+  const struct {
+    const char* name;
+    const char* title;
+    const char* py;
+  } thornton[] = {
+      {"thornton1997", "Thornton 1997, p_y = 1.6 sigma_y", "p_y = 1.6 sigma_y (default)"},
+      {"thornton1997-cnu", "Thornton 1997, p_y = C(nu) sigma_y",
+       "p_y = C(nu) sigma_y, C = 1.295 exp(0.736 nu)"},
+      {"thornton1997-sy", "Thornton 1997, p_y = sigma_y", "p_y = sigma_y"},
+  };
+  for (const auto& t : thornton) {
+    c.push_back(ModelInfo{.name = t.name,
+                          .title = t.title,
+                          .citation = kThorntonCitation,
+                          .equation = fmt::format("{}; {}", kThorntonEquation, t.py),
+                          .validity =
+                              "quasi-static elastic-perfectly plastic contact, any v > 0; known to "
+                              "under-predict e for metals",
+                          .status = Status::kVerifiedSecondSource,
+                          .status_note = kThorntonNote,
+                          .clamped_by_default = true});
+  }
+  c.push_back(ModelInfo{
+      .name = "jg1",
+      .title = "Jackson-Green-Marghitu 2010 J-G1 (Etsion 2005 unloading)",
+      .citation = std::string(kJgCitation) +
+                  "; unloading Etsion, Kligerman & Kadin (2005) Int. J. Solids Struct. "
+                  "42(13):3716-3729",
+      .equation = "e^2 = W_unload/W_load, W_load = int_0^w_max P_JG2005 dw = m v^2/2, "
+                  "W_unload = P_max (w_max - w_res)/(n + 1), n = 1.5 w*^-0.0331, "
+                  "w_res/w_max = 1.02 [1 - ((w* + 5.9)/6.9)^-0.54]; e = 1 for v <= V_c",
+      .validity = "Etsion fit 1 <= w*_max <= 110 (extrapolated beyond; e = 0 where w_res > "
+                  "w_max, w*_max > ~1e4)",
+      .status = Status::kUnverified,
+      .status_note = "structure one source (Ma et al. 2023); Etsion 2005 residual constants "
+                     "UNCONFIRMED (recollection, not read in a public text; the normalised "
+                     "JCG-2005 form is used so that w_res = 0 at w* = 1)",
+      .clamped_by_default = true});
+  c.push_back(ModelInfo{
+      .name = "jg2",
+      .title = "Jackson-Green-Marghitu 2010 J-G2 (continuous contact radius)",
+      .citation = kJgCitation,
+      .equation = "e^2 = W_unload/W_load, W_load = int_0^w_max P_JG2005 dw = m v^2/2, "
+                  "Hertz unloading with R_bar = 4E* a_m^3/(3P_max): "
+                  "W_unload = 3 P_max^2/(10 E* a_m); e = 1 for v <= V_c",
+      .validity = "JG 2005 FE fit w* <= ~110 (extrapolated beyond); Hertz (e = 1) for "
+                  "w* <= 1.9, small jump (~1e-3) at w* = 1.9 from the loading law",
+      .status = Status::kVerifiedSecondSource,
+      .status_note = "loading law confirmed (two sources); residual law confirmed (one source + "
+                     "derivation); that JGM 2010's J-G2 uses exactly this residual law is "
+                     "unconfirmed",
+      .clamped_by_default = true});
+  c.push_back(
+      ModelInfo{.name = "jg2010-fit",
+                .title = "Jackson-Green-Marghitu 2010 empirical fit, eps = S_y/E*",
+                .citation = kJgCitation,
+                .equation = std::string(kJgFitEquation) + "; eps = S_y/E*",
+                .validity = "fit to the JGM 2010 energy model; continuous at V' = 1",
+                .status = Status::kUnverified,
+                .status_note = "one source; the definition of eps is unconfirmed (S_y/E* here)",
+                .clamped_by_default = true});
+  c.push_back(ModelInfo{
+      .name = "jg2010-fit-c",
+      .title = "Jackson-Green-Marghitu 2010 empirical fit, eps = C S_y/E*",
+      .citation = kJgCitation,
+      .equation = std::string(kJgFitEquation) + "; eps = C(nu) S_y/E*",
+      .validity = "fit to the JGM 2010 energy model; continuous at V' = 1",
+      .status = Status::kUnverified,
+      .status_note = "one source; the definition of eps is unconfirmed (C(nu) S_y/E* here)",
+      .clamped_by_default = true});
+  c.push_back(ModelInfo{
+      .name = "wu2003",
+      .title = "Wu, Li & Thornton 2003 (UNVERIFIED candidate form B)",
+      .citation = "Wu C.-Y., Li L.-Y., Thornton C. (2003) Int. J. Impact Eng. 28(9):929-946 "
+                  "(equation not read; candidate form B of the corlab model reference)",
+      .equation = "e = 0.62 [(p_y/E*)(v/V_y)]^(-1/4) for v > V_y, p_y = 1.6 sigma_y, "
+                  "V_y = 1.5605 sqrt(p_y^5/(E*^4 rho)); e = 1 below; NOT clamped by default",
+      .validity = "unknown; exceeds 1 at low speed (as the seed paper reports for Wu's model)",
+      .status = Status::kUnverified,
+      .status_note = "unconfirmed: no text, abstract or implementation of the paper found; form "
+                     "B and its V_y definition are candidates only. Do not treat as exact",
+      .clamped_by_default = false});
+  c.push_back(ModelInfo{
+      .name = "johnson1985",
+      .title = "Johnson 1985 fully plastic rebound (p_d = 3Y)",
+      .citation = "Johnson K.L. (1985) Contact Mechanics, Cambridge University Press, ch. 11",
+      .equation = "e = sqrt(3.548) (2pi/3)^(-1/8) (p_d/E*)^(1/2) (rho v^2/p_d)^(-1/8), "
+                  "p_d = 3Y, for v > V_Y = sqrt(26 Y^5/(rho E*^4)); e = 1 below; clamped at 1",
+      .validity = "fully plastic impacts only (v >> V_Y); the raw formula exceeds 1 for "
+                  "v <~ 1-2 m/s on the seed pairs, hence the default clamp",
+      .status = Status::kVerifiedSecondSource,
+      .status_note = "fully plastic rebound confirmed (one source + derivation); V_Y expression "
+                     "confirmed (two sources, via Thornton) but the printed constant 26 and "
+                     "Johnson's equation numbers are unconfirmed",
+      .clamped_by_default = true});
+  return c;
+}
+
+std::size_t index_of(std::string_view name) {
+  const auto& catalog = model_catalog();
+  for (std::size_t i = 0; i < catalog.size(); ++i) {
+    if (catalog[i].name == name) return i;
+  }
+  throw_invalid("model", name, fmt::format("one of [{}]", fmt::join(model_names(), ", ")));
+}
+
+}  // namespace
+
+const std::vector<ModelInfo>& model_catalog() {
+  static const std::vector<ModelInfo> catalog = build_catalog();
+  return catalog;
+}
+
+std::vector<std::string> model_names() {
+  std::vector<std::string> names;
+  for (const auto& info : model_catalog()) names.push_back(info.name);
+  return names;
+}
+
+const ModelInfo& model_info(std::string_view name) { return model_catalog()[index_of(name)]; }
+
+Model::Model(const ModelInfo& info, Kernel kernel, bool clamped)
+    : info_(&info), kernel_(std::move(kernel)), clamped_(clamped) {}
+
+double Model::yield_velocity() const {
+  return std::visit([](const auto& k) { return k.yield_velocity(); }, kernel_);
+}
+
+double Model::cor(double velocity) const {
+  require_velocity(velocity);
+  return std::visit([velocity](const auto& k) { return k.cor(velocity); }, kernel_);
+}
+
+void Model::cor(std::span<const double> velocities, std::span<double> out) const {
+  if (out.size() != velocities.size()) {
+    throw_invalid("output size", static_cast<double>(out.size()),
+                  fmt::format("equal to the number of velocities ({})", velocities.size()));
+  }
+  require_velocities(velocities);
+  std::visit(
+      [&](const auto& k) {
+        for (std::size_t i = 0; i < velocities.size(); ++i) out[i] = k.cor(velocities[i]);
+      },
+      kernel_);
+}
+
+std::vector<double> Model::cor(std::span<const double> velocities) const {
+  std::vector<double> out(velocities.size());
+  cor(velocities, out);
+  return out;
+}
+
+Model make_model(std::string_view name,
+                 const Material& sphere,
+                 const Material& substrate,
+                 const ModelOptions& options) {
+  const ModelInfo& info = model_info(name);
+  require_positive("radius", options.radius, "[m]");
+  const ImpactPair pair = make_impact_pair(sphere, substrate, info.name);
+  const bool clamp = options.clamp.value_or(info.clamped_by_default);
+  const auto is = [&info](std::string_view n) { return info.name == n; };
+  Model::Kernel kernel;
+  if (is("ma2023") || is("ma2023-exact")) {
+    kernel = Ma2023{.pair = pair, .exact_crossing = is("ma2023-exact"), .clamp = clamp};
+  } else if (is("thornton1997")) {
+    kernel = Thornton1997{.pair = pair, .pressure = ThorntonPressure::kHertzOnset};
+  } else if (is("thornton1997-cnu")) {
+    kernel = Thornton1997{.pair = pair, .pressure = ThorntonPressure::kJacksonGreenC};
+  } else if (is("thornton1997-sy")) {
+    kernel = Thornton1997{.pair = pair, .pressure = ThorntonPressure::kYieldStress};
+  } else if (is("jg1") || is("jg2")) {
+    kernel =
+        JacksonGreen2010{.pair = pair,
+                         .residual = is("jg1") ? JacksonGreenResidual::kEtsion2005
+                                               : JacksonGreenResidual::kContinuousContactRadius,
+                         .radius = options.radius,
+                         .clamp = clamp};
+  } else if (is("jg2010-fit") || is("jg2010-fit-c")) {
+    kernel = JacksonGreen2010Fit{.pair = pair,
+                                 .strain = is("jg2010-fit")
+                                               ? JacksonGreenFitStrain::kYieldOverModulus
+                                               : JacksonGreenFitStrain::kCTimesYieldOverModulus,
+                                 .clamp = clamp};
+  } else if (is("wu2003")) {
+    kernel = Wu2003{.pair = pair, .clamp = clamp};
+  } else {
+    kernel = Johnson1985{.pair = pair, .clamp = clamp};
+  }
+  return Model(info, std::move(kernel), clamp);
+}
+
+}  // namespace corlab::restitution

@@ -1,0 +1,300 @@
+// The model forms of Ma et al. (2023), eqs. 9, 11, 15, 17, 18, fitted with inference.
+#include "corlab/study/fit_paper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "corlab/core/error.hpp"
+
+namespace corlab::study {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+Coefficient coefficient(const LinearFit& fit, Eigen::Index j, std::string name, double paper,
+                        std::string unit) {
+  Coefficient c;
+  c.name = std::move(name);
+  c.value = fit.coefficients[j];
+  c.standard_error = fit.standard_errors[j];
+  c.ci_lower = fit.ci_lower[j];
+  c.ci_upper = fit.ci_upper[j];
+  c.paper = paper;
+  c.unit = std::move(unit);
+  return c;
+}
+
+/// exp of a log-space coefficient: value exp(x), interval exp(x -+ t se), se by the delta method.
+Coefficient exp_coefficient(const LinearFit& fit, Eigen::Index j, std::string name, double paper,
+                            std::string unit) {
+  Coefficient c = coefficient(fit, j, std::move(name), paper, std::move(unit));
+  c.value = std::exp(fit.coefficients[j]);
+  c.standard_error = c.value * fit.standard_errors[j];
+  c.ci_lower = std::exp(fit.ci_lower[j]);
+  c.ci_upper = std::exp(fit.ci_upper[j]);
+  return c;
+}
+
+Coefficient nan_coefficient(std::string name, double paper, std::string unit) {
+  return Coefficient{std::move(name), kNaN, kNaN, kNaN, kNaN, paper, std::move(unit)};
+}
+
+Eigen::VectorXd to_vector(const std::vector<double>& v) {
+  return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+}
+
+}  // namespace
+
+double crossing_yield_velocity(double alpha, double beta, double slope, double sphere_rho,
+                               double E_star, double sigma_y) {
+  const double ln_k1 = (1.0 - alpha - beta * std::log(sigma_y / E_star)) / slope;
+  return std::sqrt(E_star / (sphere_rho * std::exp(ln_k1)));
+}
+
+double log_law_restitution(double alpha, double beta, double slope, double sphere_rho,
+                           double E_star, double sigma_y, double velocity) {
+  const double v_y = crossing_yield_velocity(alpha, beta, slope, sphere_rho, E_star, sigma_y);
+  if (velocity < v_y) return 1.0;
+  const double e = alpha + beta * std::log(sigma_y / E_star) +
+                   slope * std::log(E_star / (sphere_rho * velocity * velocity));
+  return std::clamp(e, 0.0, 1.0);
+}
+
+double power_law_yield_velocity(double K, double n, double m, double sphere_rho, double E_star,
+                                double sigma_y) {
+  return std::sqrt(K * std::pow(sigma_y, n) * std::pow(E_star, m) / sphere_rho);
+}
+
+RestitutionLawFit fit_restitution_law(const std::vector<RestitutionSample>& samples,
+                                      const PaperFitOptions& options) {
+  require_open_range("confidence", options.confidence, 0.0, 1.0);
+  require_non_negative("plastic_tolerance", options.plastic_tolerance);
+  RestitutionLawFit out;
+  // plastic, finite points grouped by case
+  std::map<std::string, std::vector<const RestitutionSample*>> by_case;
+  for (const auto& s : samples) {
+    const bool finite = std::isfinite(s.e) && s.velocity > 0 && s.sphere_rho > 0 &&
+                        s.E_star > 0 && s.sigma_y > 0;
+    if (!finite || s.e >= 1.0 - options.plastic_tolerance || s.e <= 0.0) {
+      ++out.points_excluded;
+      continue;
+    }
+    by_case[s.case_id].push_back(&s);
+  }
+  for (auto it = by_case.begin(); it != by_case.end();) {
+    if (static_cast<int>(it->second.size()) < options.min_points_per_case) {
+      out.points_excluded += static_cast<int>(it->second.size());
+      out.cases_excluded.push_back(it->first);
+      it = by_case.erase(it);
+    } else {
+      ++it;
+    }
+  }
+  const auto cases = static_cast<Eigen::Index>(by_case.size());
+  if (cases < 1) {
+    throw_invalid("cases with plastic points", 0.0,
+                  ">= 1 (each with >= " + std::to_string(options.min_points_per_case) + " points)");
+  }
+  Eigen::Index rows = 0;
+  for (const auto& [id, pts] : by_case) rows += static_cast<Eigen::Index>(pts.size());
+  out.points_used = static_cast<int>(rows);
+
+  // form (i): design [dummies | ln k1]
+  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(rows, cases + 1);
+  Eigen::VectorXd y(rows);
+  LinearFitOptions lin;
+  lin.confidence = options.confidence;
+  Eigen::Index r = 0;
+  Eigen::Index c = 0;
+  for (const auto& [id, pts] : by_case) {
+    lin.names.push_back("a[" + id + "]");
+    for (const auto* s : pts) {
+      X(r, c) = 1.0;
+      X(r, cases) = std::log(s->k1());
+      y[r] = s->e;
+      ++r;
+    }
+    ++c;
+  }
+  lin.names.push_back("s");
+  const LinearFit fit_i = fit_linear(X, y, lin);
+  out.slope = coefficient(fit_i, cases, "s", PaperConstants::kSlope, "-");
+  out.form_i = fit_i.goodness;
+  c = 0;
+  for (const auto& [id, pts] : by_case) {
+    CaseIntercept ci;
+    ci.case_id = id;
+    ci.sphere_rho = pts.front()->sphere_rho;
+    ci.E_star = pts.front()->E_star;
+    ci.sigma_y = pts.front()->sigma_y;
+    ci.k2 = pts.front()->k2();
+    ci.a = coefficient(fit_i, c, "a[" + id + "]", kNaN, "-");
+    ci.points = static_cast<int>(pts.size());
+    ci.v_cross = std::sqrt(ci.E_star /
+                           (ci.sphere_rho * std::exp((1.0 - ci.a.value) / out.slope.value)));
+    out.cases.push_back(ci);
+    ++c;
+  }
+
+  // form (ii): a_i = alpha + beta ln k2, over cases with distinct k2
+  std::set<double> distinct_k2;
+  for (const auto& ci : out.cases) distinct_k2.insert(ci.k2);
+  if (out.cases.size() >= 3 && distinct_k2.size() >= 2) {
+    Eigen::MatrixXd X2(cases, 2);
+    Eigen::VectorXd y2(cases);
+    for (Eigen::Index i = 0; i < cases; ++i) {
+      X2(i, 0) = 1.0;
+      X2(i, 1) = std::log(out.cases[static_cast<std::size_t>(i)].k2);
+      y2[i] = out.cases[static_cast<std::size_t>(i)].a.value;
+    }
+    LinearFitOptions lin2;
+    lin2.confidence = options.confidence;
+    lin2.names = {"alpha", "beta"};
+    const LinearFit fit_ii = fit_linear(X2, y2, lin2);
+    out.alpha = coefficient(fit_ii, 0, "alpha", PaperConstants::kAlpha, "-");
+    out.beta = coefficient(fit_ii, 1, "beta", PaperConstants::kBeta, "-");
+    out.form_ii = fit_ii.goodness;
+    // combined eq. 12 over the plastic points
+    std::vector<double> obs;
+    std::vector<double> pred;
+    for (const auto& [id, pts] : by_case) {
+      for (const auto* s : pts) {
+        obs.push_back(s->e);
+        pred.push_back(out.alpha.value + out.beta.value * std::log(s->k2()) +
+                       out.slope.value * std::log(s->k1()));
+      }
+    }
+    out.combined = goodness_of_fit(to_vector(obs), to_vector(pred), 3);
+  } else {
+    out.alpha = nan_coefficient("alpha", PaperConstants::kAlpha, "-");
+    out.beta = nan_coefficient("beta", PaperConstants::kBeta, "-");
+  }
+  return out;
+}
+
+YieldVelocityFit fit_yield_velocity(const std::vector<YieldVelocitySample>& samples,
+                                    const PaperFitOptions& options) {
+  require_open_range("confidence", options.confidence, 0.0, 1.0);
+  require_positive("sigma0", options.sigma0, "[Pa]");
+  require_positive("E0", options.E0, "[Pa]");
+  for (const auto& s : samples) {
+    require_positive("v_y[" + s.case_id + "]", s.v_y, "[m/s]");
+    require_positive("sphere_rho[" + s.case_id + "]", s.sphere_rho, "[kg/m^3]");
+    require_positive("E_star[" + s.case_id + "]", s.E_star, "[Pa]");
+    require_positive("sigma_y[" + s.case_id + "]", s.sigma_y, "[Pa]");
+  }
+  YieldVelocityFit out;
+  out.points = static_cast<int>(samples.size());
+  // E* groups (relative tolerance 1e-9)
+  std::vector<double> groups;
+  for (const auto& s : samples) {
+    const bool known = std::any_of(groups.begin(), groups.end(), [&](double g) {
+      return std::abs(g - s.E_star) <= 1e-9 * g;
+    });
+    if (!known) groups.push_back(s.E_star);
+  }
+  std::sort(groups.begin(), groups.end());
+  auto group_of = [&](double E_star) {
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      if (std::abs(groups[g] - E_star) <= 1e-9 * groups[g]) return static_cast<Eigen::Index>(g);
+    }
+    return Eigen::Index{-1};
+  };
+  const auto n = static_cast<Eigen::Index>(samples.size());
+  const auto G = static_cast<Eigen::Index>(groups.size());
+  std::set<double> distinct_sigma;
+  for (const auto& s : samples) distinct_sigma.insert(s.sigma_y);
+  if (distinct_sigma.size() < 2) {
+    throw_invalid("distinct sigma_y values", static_cast<double>(distinct_sigma.size()), ">= 2");
+  }
+
+  // form (iii): ln(rho v_y^2) = ln b_g + n ln sigma_bar
+  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(n, G + 1);
+  Eigen::VectorXd y(n);
+  LinearFitOptions lin;
+  lin.confidence = options.confidence;
+  for (Eigen::Index g = 0; g < G; ++g) lin.names.push_back("ln b[" + std::to_string(g) + "]");
+  lin.names.push_back("n");
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto& s = samples[static_cast<std::size_t>(i)];
+    X(i, group_of(s.E_star)) = 1.0;
+    X(i, G) = std::log(s.sigma_y / options.sigma0);
+    y[i] = std::log(s.sphere_rho * s.v_y * s.v_y);
+  }
+  const LinearFit fit_iii = fit_linear(X, y, lin);
+  out.n = coefficient(fit_iii, G, "n", PaperConstants::kExponentN, "-");
+  {
+    const Eigen::VectorXd obs = y.array().exp();
+    const Eigen::VectorXd pred = fit_iii.fitted.array().exp();
+    out.form_iii = goodness_of_fit(obs, pred, static_cast<int>(G + 1));
+  }
+  for (Eigen::Index g = 0; g < G; ++g) {
+    YieldGroup yg;
+    yg.E_star = groups[static_cast<std::size_t>(g)];
+    yg.b = exp_coefficient(fit_iii, g, "b", kNaN, "Pa");
+    yg.points = static_cast<int>((X.col(g).array() > 0.5).count());
+    out.groups.push_back(yg);
+  }
+
+  // form (iv): ln b_g = ln c + m ln E_bar
+  if (G >= 3) {
+    Eigen::MatrixXd X4(G, 2);
+    Eigen::VectorXd y4(G);
+    for (Eigen::Index g = 0; g < G; ++g) {
+      X4(g, 0) = 1.0;
+      X4(g, 1) = std::log(groups[static_cast<std::size_t>(g)] / options.E0);
+      y4[g] = fit_iii.coefficients[g];
+    }
+    LinearFitOptions lin4;
+    lin4.confidence = options.confidence;
+    lin4.names = {"ln c", "m"};
+    const LinearFit fit_iv = fit_linear(X4, y4, lin4);
+    out.c = exp_coefficient(fit_iv, 0, "c", PaperConstants::kC, "Pa");
+    out.m = coefficient(fit_iv, 1, "m", PaperConstants::kExponentM, "-");
+    out.form_iv = goodness_of_fit(y4.array().exp().matrix(), fit_iv.fitted.array().exp().matrix(),
+                                  2);
+    out.combined_two_step = out.c.value * std::pow(options.sigma0, -out.n.value) *
+                            std::pow(options.E0, -out.m.value);
+  } else {
+    out.c = nan_coefficient("c", PaperConstants::kC, "Pa");
+    out.m = nan_coefficient("m", PaperConstants::kExponentM, "-");
+    out.combined_two_step = kNaN;
+  }
+
+  // one-step: ln(rho v_y^2) = ln K + n ln sigma_y + m ln E*, needs >= 2 distinct E*
+  if (G >= 2 && n > 3) {
+    Eigen::MatrixXd X5(n, 3);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const auto& s = samples[static_cast<std::size_t>(i)];
+      X5(i, 0) = 1.0;
+      X5(i, 1) = std::log(s.sigma_y);
+      X5(i, 2) = std::log(s.E_star);
+    }
+    LinearFitOptions lin5;
+    lin5.confidence = options.confidence;
+    lin5.names = {"ln K", "n", "m"};
+    const LinearFit fit5 = fit_linear(X5, y, lin5);
+    out.combined = exp_coefficient(fit5, 0, "K", PaperConstants::kCombined, "Pa^(1-n-m)");
+    out.n_joint = coefficient(fit5, 1, "n (one step)", PaperConstants::kExponentN, "-");
+    out.m_joint = coefficient(fit5, 2, "m (one step)", PaperConstants::kExponentM, "-");
+    std::vector<double> obs;
+    std::vector<double> pred;
+    for (const auto& s : samples) {
+      obs.push_back(s.v_y);
+      pred.push_back(power_law_yield_velocity(out.combined.value, out.n_joint.value,
+                                              out.m_joint.value, s.sphere_rho, s.E_star,
+                                              s.sigma_y));
+    }
+    out.combined_v = goodness_of_fit(to_vector(obs), to_vector(pred), 3);
+  } else {
+    out.combined = nan_coefficient("K", PaperConstants::kCombined, "Pa^(1-n-m)");
+    out.n_joint = nan_coefficient("n (one step)", PaperConstants::kExponentN, "-");
+    out.m_joint = nan_coefficient("m (one step)", PaperConstants::kExponentM, "-");
+  }
+  return out;
+}
+
+}  // namespace corlab::study

@@ -1,0 +1,407 @@
+#include "corlab/study/results_table.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <sstream>
+
+#include "corlab/core/error.hpp"
+#include "corlab/materials/material.hpp"
+
+namespace corlab::study {
+namespace {
+
+std::string read_file(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw_invalid("results file", file.string(), "a readable file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Complete lines of a file (the part after the last '\n' is returned in `partial`).
+std::vector<std::string_view> complete_lines(std::string_view text, std::string_view& partial) {
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  while (true) {
+    const auto end = text.find('\n', start);
+    if (end == std::string_view::npos) break;
+    std::string_view line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    lines.push_back(line);
+    start = end + 1;
+  }
+  partial = text.substr(start);
+  return lines;
+}
+
+bool parse_double(std::string_view text, double& value) {
+  if (text.empty()) return false;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  if (*first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  return ec == std::errc() && ptr == last;
+}
+
+bool always_text(std::string_view column) {
+  return column == "case_id" || column == "status" || column == "error";
+}
+
+void write_all(int fd, std::string_view data, const std::filesystem::path& file) {
+  while (!data.empty()) {
+    const ssize_t written = ::write(fd, data.data(), data.size());
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error(
+          fmt::format("cannot write {}: {}", file.string(), std::strerror(errno)));
+    }
+    data.remove_prefix(static_cast<std::size_t>(written));
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& result_columns() {
+  static const std::vector<std::string> columns{"e",
+                                                "e_energy",
+                                                "F_max",
+                                                "delta_max",
+                                                "t_contact",
+                                                "crater_depth",
+                                                "plastic_strain_max",
+                                                "energy_initial",
+                                                "energy_sphere_loss",
+                                                "energy_dissipated_plastic",
+                                                "energy_hourglass",
+                                                "energy_balance_error",
+                                                "hysteresis_area",
+                                                "elements",
+                                                "steps",
+                                                "wall_s",
+                                                "element_steps_per_s",
+                                                "E_star",
+                                                "k1",
+                                                "k2",
+                                                "sphere_rho",
+                                                "sigma_y",
+                                                "velocity"};
+  return columns;
+}
+
+const std::vector<std::string>& timing_columns() {
+  static const std::vector<std::string> columns{"wall_s", "element_steps_per_s"};
+  return columns;
+}
+
+std::vector<std::string> results_header(const std::vector<std::string>& swept_keys) {
+  std::vector<std::string> header{"case_id", "status"};
+  header.insert(header.end(), swept_keys.begin(), swept_keys.end());
+  header.insert(header.end(), result_columns().begin(), result_columns().end());
+  header.emplace_back("error");
+  return header;
+}
+
+std::string format_number(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return fmt::format("{}", value);
+}
+
+std::vector<std::string> result_row(std::string_view case_id,
+                                    const std::vector<std::string>& swept_values,
+                                    const fem::ImpactConfig& config,
+                                    const fem::ImpactResult* result,
+                                    std::string_view error,
+                                    double wall_s) {
+  std::vector<std::string> row{std::string(case_id),
+                               std::string(result == nullptr   ? kStatusFailed
+                                           : result->separated ? kStatusOk
+                                                               : kStatusNotSeparated)};
+  row.insert(row.end(), swept_values.begin(), swept_values.end());
+  if (result != nullptr) {
+    const fem::ImpactResult& r = *result;
+    for (const double v :
+         {r.e, r.e_energy, r.force_max, r.indentation_max, r.contact_time, r.crater_depth,
+          r.plastic_strain_max, r.energy_initial, r.energy_sphere_loss, r.energy_dissipated_plastic,
+          r.energy_hourglass, r.energy_balance_error, r.hysteresis_area}) {
+      row.push_back(format_number(v));
+    }
+    row.push_back(fmt::format("{}", r.elements));
+    row.push_back(fmt::format("{}", r.steps));
+    row.push_back(format_number(r.wall_s > 0.0 ? r.wall_s : wall_s));
+    row.push_back(format_number(r.element_steps_per_s));
+  } else {
+    row.insert(row.end(), 15, std::string());
+    row.push_back(format_number(wall_s));
+    row.emplace_back();
+  }
+  // Derived dimensionless inputs (Ma et al. 2023 eqs. 3, 5, 6), so fits need no re-derivation.
+  const Material& sphere = config.sphere.material;
+  const Material& substrate = config.substrate.material;
+  const double e_star = effective_modulus(sphere, substrate);
+  const double velocity = config.impact.velocity;
+  const double sigma_y = substrate.yield_stress.value_or(std::numeric_limits<double>::quiet_NaN());
+  row.push_back(format_number(e_star));
+  row.push_back(format_number(k1(e_star, sphere.density, velocity)));
+  row.push_back(format_number(substrate.yield_stress ? k2(sigma_y, e_star)
+                                                     : std::numeric_limits<double>::quiet_NaN()));
+  row.push_back(format_number(sphere.density));
+  row.push_back(format_number(sigma_y));
+  row.push_back(format_number(velocity));
+  row.emplace_back(error);
+  return row;
+}
+
+std::string csv_line(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += ',';
+    std::string field = fields[i];
+    std::replace(field.begin(), field.end(), '\n', ' ');
+    std::replace(field.begin(), field.end(), '\r', ' ');
+    if (field.find_first_of(",\"") != std::string::npos ||
+        (!field.empty() && (field.front() == ' ' || field.back() == ' '))) {
+      line += '"';
+      for (const char c : field) {
+        if (c == '"') line += '"';
+        line += c;
+      }
+      line += '"';
+    } else {
+      line += field;
+    }
+  }
+  return line;
+}
+
+std::vector<std::string> split_csv_line(std::string_view line) {
+  std::vector<std::string> fields;
+  std::string field;
+  bool quoted = false;
+  bool in_quotes = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_quotes) {
+      if (c == '"') {
+        if (i + 1 < line.size() && line[i + 1] == '"') {
+          field += '"';
+          ++i;
+        } else {
+          in_quotes = false;
+        }
+      } else {
+        field += c;
+      }
+    } else if (c == '"' && field.empty() && !quoted) {
+      in_quotes = quoted = true;
+    } else if (c == ',') {
+      fields.push_back(std::move(field));
+      field.clear();
+      quoted = false;
+    } else {
+      field += c;
+    }
+  }
+  if (in_quotes) throw_invalid("CSV line", line, "terminated quotes");
+  fields.push_back(std::move(field));
+  return fields;
+}
+
+CsvAppender::CsvAppender(const std::filesystem::path& file, const std::vector<std::string>& header)
+    : file_(file) {
+  fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
+    throw InputError(fmt::format("invalid output file = '{}': must be writable ({})", file.string(),
+                                 std::strerror(errno)));
+  }
+  if (::lseek(fd_, 0, SEEK_END) == 0) append(header);
+}
+
+CsvAppender::~CsvAppender() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void CsvAppender::append(const std::vector<std::string>& fields) { append_line(csv_line(fields)); }
+
+void CsvAppender::append_line(std::string_view line) {
+  std::string data(line);
+  data += '\n';
+  write_all(fd_, data, file_);
+  ::fsync(fd_);
+}
+
+ExistingResults prepare_resume(const std::filesystem::path& file,
+                               const std::vector<std::string>& expected_header,
+                               const std::vector<std::string>& keep_status) {
+  ExistingResults existing;
+  if (!std::filesystem::exists(file)) return existing;
+  const std::string text = read_file(file);
+  std::string_view partial;
+  const auto lines = complete_lines(text, partial);
+  existing.dropped_partial_line = !partial.empty();
+  if (lines.empty()) {
+    if (existing.dropped_partial_line)
+      std::filesystem::remove(file);  // killed while writing header
+    return existing;
+  }
+  existing.header = split_csv_line(lines.front());
+  if (existing.header != expected_header) {
+    throw InputError(fmt::format(
+        "invalid output = '{}': must be a results.csv of this spec (its columns differ; use "
+        "another --out directory)",
+        file.string()));
+  }
+  const auto status_col =
+      static_cast<std::size_t>(std::find(expected_header.begin(), expected_header.end(), "status") -
+                               expected_header.begin());
+  std::string kept(lines.front());
+  kept += '\n';
+  bool changed = existing.dropped_partial_line;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto fields = split_csv_line(lines[i]);
+    if (fields.size() != expected_header.size()) {
+      throw InputError(fmt::format("invalid {} line {}: must have {} fields, has {}", file.string(),
+                                   i + 1, expected_header.size(), fields.size()));
+    }
+    const std::string& status = fields[status_col];
+    if (std::find(keep_status.begin(), keep_status.end(), status) == keep_status.end()) {
+      changed = true;
+      continue;
+    }
+    existing.status[fields[0]] = status;
+    ++existing.rows;
+    kept += lines[i];
+    kept += '\n';
+  }
+  if (changed) {
+    // Rewrite atomically: a kill now leaves either the old or the new file.
+    const std::filesystem::path temp = file.string() + ".tmp";
+    {
+      const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+      if (fd < 0) throw std::runtime_error("cannot write " + temp.string());
+      write_all(fd, kept, temp);
+      ::fsync(fd);
+      ::close(fd);
+    }
+    std::filesystem::rename(temp, file);
+  }
+  return existing;
+}
+
+ResultsTable::ResultsTable(std::vector<std::string> columns,
+                           std::vector<std::vector<std::string>> rows)
+    : columns_(std::move(columns)), cells_(columns_.size()), rows_(rows.size()) {
+  for (auto& column : cells_) column.reserve(rows_);
+  for (auto& row : rows) {
+    if (row.size() != columns_.size()) {
+      throw_invalid("results row", static_cast<double>(row.size()),
+                    fmt::format("{} fields (one per column)", columns_.size()));
+    }
+    for (std::size_t c = 0; c < columns_.size(); ++c) cells_[c].push_back(std::move(row[c]));
+  }
+}
+
+std::size_t ResultsTable::index_of(std::string_view name) const {
+  const auto it = std::find(columns_.begin(), columns_.end(), name);
+  if (it == columns_.end()) {
+    std::string known;
+    for (const auto& c : columns_) known += (known.empty() ? "" : ", ") + c;
+    throw_invalid("results column", name, fmt::format("one of {}", known));
+  }
+  return static_cast<std::size_t>(it - columns_.begin());
+}
+
+bool ResultsTable::has_column(std::string_view name) const {
+  return std::find(columns_.begin(), columns_.end(), name) != columns_.end();
+}
+
+bool ResultsTable::is_numeric(std::string_view name) const {
+  if (always_text(name)) return false;
+  const auto& cells = cells_[index_of(name)];
+  bool any = false;
+  for (const auto& cell : cells) {
+    if (cell.empty()) continue;
+    double value = 0.0;
+    if (!parse_double(cell, value)) return false;
+    any = true;
+  }
+  return any;
+}
+
+std::vector<double> ResultsTable::numbers(std::string_view name) const {
+  const auto& cells = cells_[index_of(name)];
+  std::vector<double> values(cells.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (cells[i].empty()) continue;
+    if (!parse_double(cells[i], values[i])) {
+      throw_invalid(fmt::format("results column {} row {}", name, i + 1), cells[i], "a number");
+    }
+  }
+  return values;
+}
+
+const std::vector<std::string>& ResultsTable::text(std::string_view name) const {
+  return cells_[index_of(name)];
+}
+
+const std::string& ResultsTable::cell(std::size_t row, std::string_view name) const {
+  return cells_[index_of(name)].at(row);
+}
+
+ResultsTable ResultsTable::where(std::string_view column, std::string_view value) const {
+  const auto& key = cells_[index_of(column)];
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t r = 0; r < rows_; ++r) {
+    if (key[r] != value) continue;
+    std::vector<std::string> row;
+    for (const auto& c : cells_) row.push_back(c[r]);
+    rows.push_back(std::move(row));
+  }
+  return ResultsTable(columns_, std::move(rows));
+}
+
+ResultsTable ResultsTable::sorted_by(std::string_view column) const {
+  const auto& key = cells_[index_of(column)];
+  std::vector<std::size_t> order(rows_);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&key](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  std::vector<std::vector<std::string>> rows;
+  for (const std::size_t r : order) {
+    std::vector<std::string> row;
+    for (const auto& c : cells_) row.push_back(c[r]);
+    rows.push_back(std::move(row));
+  }
+  return ResultsTable(columns_, std::move(rows));
+}
+
+ResultsTable read_results(const std::filesystem::path& csv) {
+  const std::string text = read_file(csv);
+  std::string_view partial;
+  const auto lines = complete_lines(text, partial);
+  if (lines.empty()) throw_invalid("results file", csv.string(), "a CSV file with a header line");
+  std::vector<std::string> header = split_csv_line(lines.front());
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    if (lines[i].empty()) continue;
+    auto fields = split_csv_line(lines[i]);
+    if (fields.size() != header.size()) {
+      throw InputError(fmt::format("invalid {} line {}: must have {} fields, has {}", csv.string(),
+                                   i + 1, header.size(), fields.size()));
+    }
+    rows.push_back(std::move(fields));
+  }
+  return ResultsTable(std::move(header), std::move(rows));
+}
+
+}  // namespace corlab::study

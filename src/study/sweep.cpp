@@ -1,0 +1,325 @@
+#include "corlab/study/sweep.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <set>
+
+#include "corlab/core/error.hpp"
+#include "sweep_internal.hpp"
+
+namespace corlab::study {
+namespace {
+
+int env_int(const char* name) {
+  const char* text = std::getenv(name);
+  if (text == nullptr) return -1;
+  int value = -1;
+  const std::string_view view(text);
+  const auto [ptr, ec] = std::from_chars(view.data(), view.data() + view.size(), value);
+  return ec == std::errc() && ptr == view.data() + view.size() ? value : -1;
+}
+
+using Clock = std::chrono::steady_clock;
+
+}  // namespace
+
+int launched_world_size() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"}) {
+    if (const int size = env_int(name); size > 0) return size;
+  }
+  return 1;
+}
+
+int launched_world_rank() {
+  for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"}) {
+    if (const int rank = env_int(name); rank >= 0) return rank;
+  }
+  return 0;
+}
+
+bool mpi_available() {
+#ifdef CORLAB_WITH_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+namespace detail {
+
+int default_jobs() { return std::max(1U, std::thread::hardware_concurrency()); }
+
+Outcome execute_case(const std::vector<SweepCase>& cases,
+                     std::size_t index,
+                     const std::vector<std::string>& swept_keys,
+                     const CaseRunner& runner,
+                     const std::atomic<bool>* cancel) {
+  const SweepCase& run = cases.at(index);
+  std::vector<std::string> swept_values;
+  for (const auto& key : swept_keys) {
+    const auto it = std::find_if(run.settings.begin(), run.settings.end(),
+                                 [&key](const Setting& s) { return s.first == key; });
+    swept_values.push_back(it == run.settings.end() ? std::string() : it->second);
+  }
+  Outcome outcome;
+  outcome.index = index;
+  fem::SimulationControl control;
+  control.cancel = cancel;
+  const auto start = Clock::now();
+  auto elapsed = [&start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  std::vector<std::string> row;
+  try {
+    const fem::ImpactResult result = runner(run.config, control);
+    outcome.wall_s = elapsed();
+    row = result_row(run.id, swept_values, run.config, &result, "", outcome.wall_s);
+  } catch (const std::exception& err) {
+    outcome.wall_s = elapsed();
+    if (cancel != nullptr && cancel->load()) {
+      outcome.status = kInterrupted;
+      return outcome;
+    }
+    row = result_row(run.id, swept_values, run.config, nullptr, err.what(), outcome.wall_s);
+  } catch (...) {
+    outcome.wall_s = elapsed();
+    row =
+        result_row(run.id, swept_values, run.config, nullptr, "unknown exception", outcome.wall_s);
+  }
+  outcome.status = row.at(1);
+  outcome.line = csv_line(row);
+  return outcome;
+}
+
+std::string serialize(const Outcome& outcome) {
+  return fmt::format("{}\t{}\t{}\t{}", outcome.index, outcome.status, format_number(outcome.wall_s),
+                     outcome.line);
+}
+
+Outcome deserialize(std::string_view message) {
+  Outcome outcome;
+  std::string_view fields[3];
+  for (auto& field : fields) {
+    const auto tab = message.find('\t');
+    if (tab == std::string_view::npos) throw std::runtime_error("malformed sweep message");
+    field = message.substr(0, tab);
+    message.remove_prefix(tab + 1);
+  }
+  std::from_chars(fields[0].data(), fields[0].data() + fields[0].size(), outcome.index);
+  outcome.status = std::string(fields[1]);
+  std::from_chars(fields[2].data(), fields[2].data() + fields[2].size(), outcome.wall_s);
+  outcome.line = std::string(message);
+  return outcome;
+}
+
+WorkerPool::WorkerPool(int threads, Source next, Run run) {
+  running_ = threads;
+  threads_.reserve(static_cast<std::size_t>(threads));
+  for (int t = 0; t < threads; ++t) {
+    threads_.emplace_back([this, next, run] {
+      while (const auto index = next()) {
+        Outcome outcome = run(*index);
+        const std::lock_guard lock(mutex_);
+        outcomes_.push_back(std::move(outcome));
+        ready_.notify_all();
+      }
+      const std::lock_guard lock(mutex_);
+      --running_;
+      ready_.notify_all();
+    });
+  }
+}
+
+WorkerPool::~WorkerPool() { join(); }
+
+std::vector<Outcome> WorkerPool::take(std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  ready_.wait_for(lock, timeout, [this] { return !outcomes_.empty() || running_ == 0; });
+  std::vector<Outcome> taken(std::make_move_iterator(outcomes_.begin()),
+                             std::make_move_iterator(outcomes_.end()));
+  outcomes_.clear();
+  return taken;
+}
+
+bool WorkerPool::stopped() const {
+  const std::lock_guard lock(mutex_);
+  return running_ == 0;
+}
+
+void WorkerPool::join() {
+  for (auto& thread : threads_) {
+    if (thread.joinable()) thread.join();
+  }
+}
+
+std::optional<std::size_t> CaseQueue::next() {
+  const std::lock_guard lock(mutex_);
+  if ((cancel_ != nullptr && cancel_->load()) || next_ >= pending_.size()) return std::nullopt;
+  return pending_[next_++];
+}
+
+Plan make_plan(const SweepSpec& spec) {
+  Plan plan;
+  plan.cases = spec.expand();
+  plan.swept_keys = spec.swept_keys();
+  plan.header = results_header(plan.swept_keys);
+  return plan;
+}
+
+void ensure_directory(const std::filesystem::path& out_dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  if (ec || !std::filesystem::is_directory(out_dir)) {
+    throw InputError(
+        fmt::format("invalid --out = '{}': must be a directory that can be created ({})",
+                    out_dir.string(), ec ? ec.message() : "not a directory"));
+  }
+}
+
+void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan) {
+  ensure_directory(out_dir);
+  {
+    const auto spec_copy = out_dir / "spec.toml";
+    const auto temp = out_dir / "spec.toml.tmp";
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    out << spec.to_toml();
+    out.close();
+    if (!out)
+      throw InputError(fmt::format("invalid --out = '{}': must be writable", out_dir.string()));
+    std::filesystem::rename(temp, spec_copy);
+  }
+  const std::vector<std::string> keep{std::string(kStatusOk), std::string(kStatusNotSeparated)};
+  const ExistingResults existing = prepare_resume(out_dir / "results.csv", plan.header, keep);
+  plan.pending.clear();
+  plan.already_done = 0;
+  for (std::size_t i = 0; i < plan.cases.size(); ++i) {
+    if (existing.status.count(plan.cases[i].id) != 0) {
+      ++plan.already_done;
+    } else {
+      plan.pending.push_back(i);
+    }
+  }
+}
+
+DirectoryLock::DirectoryLock(const std::filesystem::path& out_dir) {
+  const auto file = out_dir / ".sweep.lock";
+  fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
+    throw InputError(fmt::format("invalid --out = '{}': must be writable ({})", out_dir.string(),
+                                 std::strerror(errno)));
+  }
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd_);
+    fd_ = -1;
+    throw InputError(fmt::format(
+        "invalid --out = '{}': must not be in use by another running sweep", out_dir.string()));
+  }
+}
+
+DirectoryLock::~DirectoryLock() {
+  if (fd_ >= 0) ::close(fd_);  // releases the lock
+}
+
+Recorder::Recorder(const std::filesystem::path& csv, const Plan& plan, int workers, bool progress)
+    : appender_(csv, plan.header),
+      total_(static_cast<int>(plan.cases.size())),
+      already_done_(plan.already_done),
+      workers_(workers) {
+  if (progress) {
+    progress_ = std::make_unique<ProgressBar>(stderr, total_, workers_);
+    progress_->update(already_done_, 0, -1.0, true);
+  }
+}
+
+void Recorder::record(const Outcome& outcome) {
+  if (outcome.status == kInterrupted) {
+    ++interrupted_;
+    return;
+  }
+  appender_.append_line(outcome.line);
+  ++ran_;
+  wall_sum_ += outcome.wall_s;
+  if (outcome.status == kStatusFailed) ++failed_;
+  if (outcome.status == kStatusNotSeparated) ++not_separated_;
+  if (progress_) progress_->update(already_done_ + ran_, failed_, wall_sum_ / ran_);
+}
+
+void Recorder::finish() {
+  if (progress_) progress_->finish();
+}
+
+SweepSummary Recorder::summary(double wall_s, bool cancelled) const {
+  SweepSummary s;
+  s.total = total_;
+  s.already_done = already_done_;
+  s.ran = ran_;
+  s.failed = failed_;
+  s.not_separated = not_separated_;
+  s.wall_s = wall_s;
+  s.workers = workers_;
+  s.interrupted = (cancelled || interrupted_ > 0) && s.remaining() > 0;
+  return s;
+}
+
+}  // namespace detail
+
+SweepSummary run_sweep(const SweepSpec& spec,
+                       const std::filesystem::path& out_dir,
+                       const SweepOptions& options) {
+  const CaseRunner runner =
+      options.runner
+          ? options.runner
+          : CaseRunner([](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
+              return fem::simulate(config, control);
+            });
+  std::atomic<bool> never{false};
+  const std::atomic<bool>* cancel = options.cancel != nullptr ? options.cancel : &never;
+  if (options.jobs < 0) throw_invalid("jobs", options.jobs, ">= 0 (0 = all cores)");
+
+  if (const int world = launched_world_size(); world > 1) {
+#ifdef CORLAB_WITH_MPI
+    return detail::run_sweep_mpi(spec, out_dir, options, runner, cancel);
+#else
+    throw InputError(
+        fmt::format("invalid launch = mpirun with {} ranks: must be a corlab built with MPI "
+                    "(CORLAB_WITH_MPI); run without mpirun for a local sweep",
+                    world));
+#endif
+  }
+
+  const auto start = Clock::now();
+  detail::Plan plan = detail::make_plan(spec);
+  detail::ensure_directory(out_dir);
+  const detail::DirectoryLock lock(out_dir);
+  detail::prepare_output(spec, out_dir, plan);
+  const int jobs = std::max(1, std::min(options.jobs > 0 ? options.jobs : detail::default_jobs(),
+                                        static_cast<int>(plan.pending.size())));
+  detail::Recorder recorder(out_dir / "results.csv", plan, jobs, options.progress);
+  detail::CaseQueue queue(plan.pending, cancel);
+  {
+    detail::WorkerPool pool(
+        plan.pending.empty() ? 0 : jobs, [&queue] { return queue.next(); },
+        [&](std::size_t index) {
+          return detail::execute_case(plan.cases, index, plan.swept_keys, runner, cancel);
+        });
+    while (true) {
+      const bool stopped = pool.stopped();  // read before taking: no outcome can be missed
+      for (const auto& outcome : pool.take(std::chrono::milliseconds(200))) {
+        recorder.record(outcome);
+      }
+      if (stopped) break;
+    }
+    pool.join();
+  }
+  recorder.finish();
+  return recorder.summary(std::chrono::duration<double>(Clock::now() - start).count(),
+                          cancel->load());
+}
+
+}  // namespace corlab::study

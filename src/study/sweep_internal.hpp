@@ -1,0 +1,142 @@
+#pragma once
+// Private machinery shared by the local (sweep.cpp) and the MPI (sweep_mpi.cpp) sweep drivers.
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "corlab/study/progress.hpp"
+#include "corlab/study/results_table.hpp"
+#include "corlab/study/sweep.hpp"
+
+namespace corlab::study::detail {
+
+/// What running one case produced.
+struct Outcome {
+  std::size_t index = 0;  ///< into the expanded case list
+  std::string status;     ///< ok | failed | not_separated | interrupted (not recorded)
+  std::string line;       ///< the CSV row (empty when interrupted)
+  double wall_s = 0.0;    ///< measured wall time of the run [s]
+};
+
+inline constexpr std::string_view kInterrupted = "interrupted";
+
+/// Runs case `index` with `runner` (never throws; a failure becomes a `failed` row).
+Outcome execute_case(const std::vector<SweepCase>& cases,
+                     std::size_t index,
+                     const std::vector<std::string>& swept_keys,
+                     const CaseRunner& runner,
+                     const std::atomic<bool>* cancel);
+
+/// `Outcome` as one message for MPI ("index\tstatus\twall\tline") and back.
+std::string serialize(const Outcome& outcome);
+Outcome deserialize(std::string_view message);
+
+/// Threads that each take a case index from `next` (thread-safe; nullopt = stop), run it and
+/// queue the outcome for the one writer thread.
+class WorkerPool {
+ public:
+  using Source = std::function<std::optional<std::size_t>()>;
+  using Run = std::function<Outcome(std::size_t)>;
+  WorkerPool(int threads, Source next, Run run);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+  /// Outcomes queued so far (waits up to `timeout` for the first one).
+  std::vector<Outcome> take(std::chrono::milliseconds timeout);
+  /// All threads have stopped (their outcomes may still be queued).
+  bool stopped() const;
+  void join();
+
+ private:
+  mutable std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<Outcome> outcomes_;
+  int running_ = 0;
+  std::vector<std::thread> threads_;
+};
+
+/// Hands out the pending case indices in order; stops when cancelled.
+class CaseQueue {
+ public:
+  CaseQueue(std::vector<std::size_t> pending, const std::atomic<bool>* cancel)
+      : pending_(std::move(pending)), cancel_(cancel) {}
+  std::optional<std::size_t> next();
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::size_t> pending_;
+  std::size_t next_ = 0;
+  const std::atomic<bool>* cancel_;
+};
+
+/// The plan of a sweep in out_dir: every case, what is already done, what is pending.
+struct Plan {
+  std::vector<SweepCase> cases;
+  std::vector<std::string> swept_keys;
+  std::vector<std::string> header;
+  std::vector<std::size_t> pending;
+  int already_done = 0;
+};
+
+/// Expands the spec (every process).
+Plan make_plan(const SweepSpec& spec);
+/// Creates out_dir if needed; InputError if that fails.
+void ensure_directory(const std::filesystem::path& out_dir);
+/// Prepares out_dir for writing (writer only): directory, spec.toml, resume of results.csv,
+/// fills plan.pending / plan.already_done.
+void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan);
+
+/// Exclusive lock on <out_dir>/.sweep.lock for the writer's lifetime (one sweep per directory).
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const std::filesystem::path& out_dir);
+  ~DirectoryLock();
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+/// The one writer: appends rows, counts, draws progress.
+class Recorder {
+ public:
+  Recorder(const std::filesystem::path& csv, const Plan& plan, int workers, bool progress);
+  void record(const Outcome& outcome);
+  void finish();
+  SweepSummary summary(double wall_s, bool cancelled) const;
+
+ private:
+  CsvAppender appender_;
+  int total_;
+  int already_done_;
+  int workers_;
+  int ran_ = 0;
+  int failed_ = 0;
+  int not_separated_ = 0;
+  int interrupted_ = 0;
+  double wall_sum_ = 0.0;
+  std::unique_ptr<ProgressBar> progress_;
+};
+
+/// Default: all cores.
+int default_jobs();
+
+#ifdef CORLAB_WITH_MPI
+/// The distributed driver (sweep_mpi.cpp).
+SweepSummary run_sweep_mpi(const SweepSpec& spec,
+                           const std::filesystem::path& out_dir,
+                           const SweepOptions& options,
+                           const CaseRunner& runner,
+                           const std::atomic<bool>* cancel);
+#endif
+
+}  // namespace corlab::study::detail

@@ -1,0 +1,467 @@
+#include "corlab/study/sweep_spec.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "corlab/core/error.hpp"
+
+namespace corlab::study {
+namespace {
+
+constexpr std::string_view kTopLevel = "[study], [base], [grid], [[cases]]";
+
+/// A leaf of a TOML table with its dotted key and where it was written.
+struct Leaf {
+  std::string key;
+  const toml::node* node = nullptr;
+  std::uint32_t line = 0;
+  std::uint32_t column = 0;
+};
+
+/// Flattens nested tables ([base.mesh] h_min = .., or mesh.h_min = ..) into dotted keys, in the
+/// order they appear in the document (toml++ tables are sorted by key).
+void collect_leaves(const toml::table& table, const std::string& prefix, std::vector<Leaf>& out) {
+  for (const auto& [key, node] : table) {
+    std::string full =
+        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    if (const auto* sub = node.as_table()) {
+      collect_leaves(*sub, full, out);
+    } else {
+      out.push_back({std::move(full), &node, node.source().begin.line, node.source().begin.column});
+    }
+  }
+}
+
+std::vector<Leaf> leaves_in_order(const toml::table& table) {
+  std::vector<Leaf> leaves;
+  collect_leaves(table, "", leaves);
+  std::stable_sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) {
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  return leaves;
+}
+
+/// Removes line breaks so that every message stays on one line.
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  return text;
+}
+
+bool parses_as_number(std::string_view text) {
+  if (text.empty()) return false;
+  double value = 0.0;
+  const char* first = text.data();
+  if (*first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, text.data() + text.size(), value);
+  return ec == std::errc() && ptr == text.data() + text.size();
+}
+
+/// How a value appears in messages: numbers as they are, strings in quotes.
+std::string shown(std::string_view value) {
+  return parses_as_number(value) ? std::string(value) : fmt::format("'{}'", value);
+}
+
+class SpecError {
+ public:
+  explicit SpecError(std::string origin) : origin_(std::move(origin)) {}
+
+  /// "invalid spec <origin> <where>: <what>"
+  [[noreturn]] void fail(std::string_view where, std::string_view what) const {
+    if (where.empty())
+      throw InputError(one_line(fmt::format("invalid spec {}: {}", origin_, what)));
+    throw InputError(one_line(fmt::format("invalid spec {} {}: {}", origin_, where, what)));
+  }
+  /// "invalid spec <origin> <where> = <value>: <constraint>"
+  [[noreturn]] void fail_value(std::string_view where,
+                               std::string_view value,
+                               std::string_view constraint) const {
+    throw InputError(one_line(
+        fmt::format("invalid spec {} {} = {}: {}", origin_, where, shown(value), constraint)));
+  }
+  /// Re-throws a message of fem::apply_setting / fem::validate at a location of the spec. When the
+  /// message is about `key` itself ("invalid <key> = <v>: must ..."), only the constraint is kept.
+  [[noreturn]] void rethrow_at(std::string_view where,
+                               std::string_view key,
+                               std::string_view value,
+                               const InputError& err) const {
+    const std::string message = err.what();
+    // "invalid <field> = <value>: must <constraint>": about this key (or, for "<body>.material",
+    // about the material spec of <body>)?
+    constexpr std::string_view kInvalid = "invalid ";
+    const auto equals = message.find(" = ");
+    const auto must = message.find(": must ", equals == std::string::npos ? 0 : equals);
+    if (message.rfind(kInvalid, 0) == 0 && equals != std::string::npos &&
+        must != std::string::npos) {
+      const std::string field = message.substr(kInvalid.size(), equals - kInvalid.size());
+      if (field == key || std::string(key) == field + ".material") {
+        fail_value(where, value, message.substr(must + 2));
+      }
+    }
+    fail_value(where, value, message);
+  }
+
+ private:
+  std::string origin_;
+};
+
+std::string value_text(const toml::node& node, const SpecError& error, const std::string& where) {
+  if (const auto* s = node.as_string()) return s->get();
+  if (const auto* i = node.as_integer()) return fmt::format("{}", i->get());
+  if (const auto* f = node.as_floating_point()) return fmt::format("{}", f->get());
+  if (const auto* b = node.as_boolean()) return b->get() ? "true" : "false";
+  error.fail(where, "must be a number, a string or a boolean");
+}
+
+std::string quoted_key(std::string_view key) { return fmt::format("\"{}\"", key); }
+
+void set_or_replace(Settings& settings, const std::string& key, const std::string& value) {
+  for (auto& [k, v] : settings) {
+    if (k == key) {
+      v = value;
+      return;
+    }
+  }
+  settings.emplace_back(key, value);
+}
+
+bool is_material_key(std::string_view key) {
+  constexpr std::string_view suffix = ".material";
+  return key.size() >= suffix.size() && key.substr(key.size() - suffix.size()) == suffix;
+}
+
+Settings application_order(Settings settings) {
+  std::stable_partition(settings.begin(), settings.end(),
+                        [](const Setting& s) { return is_material_key(s.first); });
+  return settings;
+}
+
+/// Grid points in order, the last key varying fastest.
+std::vector<Settings> grid_points(const SweepSpec& spec) {
+  std::vector<Settings> points{Settings{}};
+  for (const auto& [key, values] : spec.grid) {
+    std::vector<Settings> next;
+    next.reserve(points.size() * values.size());
+    for (const auto& point : points) {
+      for (const auto& value : values) {
+        Settings extended = point;
+        extended.emplace_back(key, value);
+        next.push_back(std::move(extended));
+      }
+    }
+    points = std::move(next);
+  }
+  return points;
+}
+
+Settings merged(const SweepSpec& spec, const Settings& case_settings, const Settings& point) {
+  Settings all = spec.base;
+  for (const auto& [k, v] : case_settings) set_or_replace(all, k, v);
+  for (const auto& [k, v] : point) set_or_replace(all, k, v);
+  return application_order(std::move(all));
+}
+
+std::string settings_summary(const Settings& settings) {
+  std::string text;
+  for (const auto& [k, v] : settings) {
+    if (!text.empty()) text += ", ";
+    text += k + "=" + v;
+  }
+  return text;
+}
+
+bool valid_name(std::string_view name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+}
+
+/// Validates every setting where it was written, then every run; throws on the first problem.
+void validate_spec(const SweepSpec& spec,
+                   const SpecError& error,
+                   const std::vector<std::vector<std::string>>& case_where,
+                   const std::vector<std::string>& base_where) {
+  // 1. [base] alone over the defaults.
+  fem::ImpactConfig base_config;
+  const Settings base_ordered = application_order(spec.base);
+  for (const auto& [key, value] : base_ordered) {
+    const auto pos = std::find_if(spec.base.begin(), spec.base.end(),
+                                  [&](const Setting& s) { return s.first == key; });
+    const std::string& where = base_where[static_cast<std::size_t>(pos - spec.base.begin())];
+    try {
+      fem::apply_setting(base_config, key, value);
+    } catch (const InputError& err) {
+      error.rethrow_at(where, key, value, err);
+    }
+  }
+  try {
+    fem::validate(base_config);
+  } catch (const InputError& err) {
+    // Name the [base] key the message is about, if it is one of them.
+    const std::string message = err.what();
+    for (std::size_t i = 0; i < spec.base.size(); ++i) {
+      const auto& [key, value] = spec.base[i];
+      if (message.rfind("invalid " + key + " = ", 0) == 0) {
+        error.rethrow_at(base_where[i], key, value, err);
+      }
+    }
+    error.fail("[base]", message);
+  }
+  // 2. Every case value and every grid value on its own over [base].
+  auto check_one = [&](const std::string& where, const std::string& key, const std::string& value) {
+    fem::ImpactConfig config = base_config;
+    try {
+      fem::apply_setting(config, key, value);
+      fem::validate(config);
+    } catch (const InputError& err) {
+      error.rethrow_at(where, key, value, err);
+    }
+  };
+  for (std::size_t c = 0; c < spec.cases.size(); ++c) {
+    for (std::size_t i = 0; i < spec.cases[c].size(); ++i) {
+      check_one(case_where[c][i], spec.cases[c][i].first, spec.cases[c][i].second);
+    }
+  }
+  for (const auto& [key, values] : spec.grid) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      check_one(fmt::format("grid.{}[{}]", quoted_key(key), i), key, values[i]);
+    }
+  }
+  // 3. Every run (combinations), and no two identical runs.
+  std::map<std::string, std::size_t> seen;
+  const auto points = grid_points(spec);
+  const std::vector<Settings> cases =
+      spec.cases.empty() ? std::vector<Settings>{Settings{}} : spec.cases;
+  std::size_t index = 0;
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    for (const auto& point : points) {
+      const Settings settings = merged(spec, cases[c], point);
+      const std::string id = case_id(settings);
+      fem::ImpactConfig config;
+      try {
+        apply_settings(config, settings);
+        fem::validate(config);
+      } catch (const InputError& err) {
+        error.fail(fmt::format("run {} ({})", index, settings_summary(settings)), err.what());
+      }
+      if (const auto [it, inserted] = seen.emplace(id, index); !inserted) {
+        error.fail("", fmt::format("runs {} and {} have identical settings ({})", it->second, index,
+                                   settings_summary(settings)));
+      }
+      ++index;
+    }
+  }
+}
+
+}  // namespace
+
+void apply_settings(fem::ImpactConfig& config, const Settings& settings) {
+  for (const auto& [key, value] : application_order(settings)) {
+    fem::apply_setting(config, key, value);
+  }
+}
+
+std::string case_id(const Settings& settings) {
+  Settings sorted = settings;
+  std::sort(sorted.begin(), sorted.end());
+  // FNV-1a, 64 bit: stable across platforms and runs (std::hash is not).
+  std::uint64_t hash = 14695981039346656037ULL;
+  auto feed = [&hash](std::string_view text) {
+    for (const char c : text) {
+      hash ^= static_cast<unsigned char>(c);
+      hash *= 1099511628211ULL;
+    }
+  };
+  for (const auto& [k, v] : sorted) {
+    feed(k);
+    feed("=");
+    feed(v);
+    feed("\n");
+  }
+  return fmt::format("c{:010x}", hash >> 24);
+}
+
+std::vector<SweepCase> SweepSpec::expand() const {
+  std::vector<SweepCase> runs;
+  runs.reserve(run_count());
+  const auto points = grid_points(*this);
+  const std::vector<Settings> all_cases = cases.empty() ? std::vector<Settings>{Settings{}} : cases;
+  std::set<std::string> ids;
+  for (const auto& case_settings : all_cases) {
+    for (const auto& point : points) {
+      SweepCase run;
+      run.settings = merged(*this, case_settings, point);
+      run.id = case_id(run.settings);
+      if (!ids.insert(run.id).second) {
+        throw InputError(fmt::format("invalid spec {}: two runs have identical settings ({})",
+                                     origin, settings_summary(run.settings)));
+      }
+      apply_settings(run.config, run.settings);
+      fem::validate(run.config);
+      runs.push_back(std::move(run));
+    }
+  }
+  return runs;
+}
+
+std::size_t SweepSpec::run_count() const {
+  std::size_t count = cases.empty() ? 1 : cases.size();
+  for (const auto& [key, values] : grid) count *= values.size();
+  return count;
+}
+
+std::vector<std::string> SweepSpec::swept_keys() const {
+  std::vector<std::string> keys;
+  auto add = [&keys](const std::string& key) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  };
+  for (const auto& case_settings : cases) {
+    for (const auto& [key, value] : case_settings) add(key);
+  }
+  for (const auto& [key, values] : grid) add(key);
+  return keys;
+}
+
+std::string SweepSpec::to_toml() const {
+  if (!toml_text.empty()) return toml_text;
+  auto value = [](const std::string& v) {
+    if (parses_as_number(v)) return v;
+    std::ostringstream quoted;
+    quoted << toml::value<std::string>(v);
+    return quoted.str();
+  };
+  std::ostringstream out;
+  out << "[study]\nname = " << toml::value<std::string>(name) << "\n";
+  if (!description.empty())
+    out << "description = " << toml::value<std::string>(description) << "\n";
+  out << "\n[base]\n";
+  for (const auto& [k, v] : base) out << quoted_key(k) << " = " << value(v) << "\n";
+  if (!grid.empty()) {
+    out << "\n[grid]\n";
+    for (const auto& [k, values] : grid) {
+      out << quoted_key(k) << " = [";
+      for (std::size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << value(values[i]);
+      out << "]\n";
+    }
+  }
+  for (const auto& case_settings : cases) {
+    out << "\n[[cases]]\n";
+    for (const auto& [k, v] : case_settings) out << quoted_key(k) << " = " << value(v) << "\n";
+  }
+  return out.str();
+}
+
+SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) {
+  const SpecError error{std::string(origin)};
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, origin);
+  } catch (const toml::parse_error& err) {
+    error.fail(fmt::format("line {} column {}", err.source().begin.line, err.source().begin.column),
+               fmt::format("not valid TOML: {}", err.description()));
+  }
+  SweepSpec spec;
+  spec.origin = std::string(origin);
+  spec.toml_text = std::string(toml_text);
+
+  for (const auto& [key, node] : root) {
+    const std::string_view k = key.str();
+    if (k != "study" && k != "base" && k != "grid" && k != "cases") {
+      error.fail("", fmt::format("unknown table or key '{}' (expected {})", k, kTopLevel));
+    }
+    if (k == "cases" ? !node.is_array_of_tables() : !node.is_table()) {
+      error.fail("", fmt::format("'{}' must be a {}", k,
+                                 k == "cases" ? "[[cases]] array of tables"
+                                              : "[" + std::string(k) + "] table"));
+    }
+  }
+
+  // [study]
+  const toml::table* study = root["study"].as_table();
+  if (study == nullptr) error.fail("", "missing [study] table with name = \"...\"");
+  for (const auto& [key, node] : *study) {
+    const std::string_view k = key.str();
+    const std::string where = fmt::format("study.{}", k);
+    if (k != "name" && k != "description") {
+      error.fail(where, "unknown key (expected name, description)");
+    }
+    if (!node.is_string()) error.fail(where, "must be a string");
+  }
+  spec.name = (*study)["name"].value_or(std::string());
+  spec.description = (*study)["description"].value_or(std::string());
+  if (!study->contains("name")) error.fail("study.name", "missing (required, [A-Za-z0-9_-]+)");
+  if (!valid_name(spec.name))
+    error.fail_value("study.name", spec.name, "must match [A-Za-z0-9_-]+");
+
+  // [base]
+  std::vector<std::string> base_where;
+  if (const toml::table* base = root["base"].as_table()) {
+    for (const Leaf& leaf : leaves_in_order(*base)) {
+      const std::string where = "base." + quoted_key(leaf.key);
+      spec.base.emplace_back(leaf.key, value_text(*leaf.node, error, where));
+      base_where.push_back(where);
+    }
+  }
+
+  // [[cases]]
+  std::vector<std::vector<std::string>> case_where;
+  if (const toml::array* cases = root["cases"].as_array()) {
+    for (std::size_t c = 0; c < cases->size(); ++c) {
+      Settings settings;
+      std::vector<std::string> wheres;
+      for (const Leaf& leaf : leaves_in_order(*cases->get(c)->as_table())) {
+        const std::string where = fmt::format("cases[{}].{}", c, quoted_key(leaf.key));
+        settings.emplace_back(leaf.key, value_text(*leaf.node, error, where));
+        wheres.push_back(where);
+      }
+      spec.cases.push_back(std::move(settings));
+      case_where.push_back(std::move(wheres));
+    }
+  }
+
+  // [grid]
+  if (const toml::table* grid = root["grid"].as_table()) {
+    for (const Leaf& leaf : leaves_in_order(*grid)) {
+      const std::string where = "grid." + quoted_key(leaf.key);
+      const toml::array* array = leaf.node->as_array();
+      if (array == nullptr) error.fail(where, "must be a non-empty array of values");
+      if (array->empty()) error.fail(where + " = []", "must be a non-empty array of values");
+      std::vector<std::string> values;
+      for (std::size_t i = 0; i < array->size(); ++i) {
+        values.push_back(value_text(*array->get(i), error, fmt::format("{}[{}]", where, i)));
+      }
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+          if (values[i] == values[j]) {
+            error.fail_value(
+                fmt::format("{}[{}]", where, i), values[i],
+                fmt::format("must differ from {}[{}] (duplicate grid value)", where, j));
+          }
+        }
+      }
+      spec.grid.emplace_back(leaf.key, std::move(values));
+    }
+  }
+
+  validate_spec(spec, error, case_where, base_where);
+  return spec;
+}
+
+SweepSpec load_sweep_spec(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw_invalid("spec", file.string(), "a readable TOML file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_sweep_spec(text.str(), file.string());
+}
+
+}  // namespace corlab::study

@@ -1,0 +1,47 @@
+// InputError messages: one line naming field, value and constraint.
+#include "corlab/core/error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <string>
+
+namespace corlab {
+namespace {
+
+std::string message_of(void (*f)()) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no exception";
+}
+
+TEST(InputError, NamesFieldValueAndConstraint) {
+  const std::string msg = message_of([] { require_positive("sphere.E", -2e11, "[Pa]"); });
+  EXPECT_EQ(msg, "invalid sphere.E = -200000000000: must be > 0 [Pa]");
+  EXPECT_EQ(msg.find('\n'), std::string::npos);
+}
+
+TEST(InputError, RejectsNonFiniteValues) {
+  EXPECT_THROW(require_positive("v", std::numeric_limits<double>::quiet_NaN()), InputError);
+  EXPECT_THROW(require_positive("v", std::numeric_limits<double>::infinity()), InputError);
+  EXPECT_THROW(require_non_negative("h", -1e-300), InputError);
+  EXPECT_NO_THROW(require_non_negative("h", 0.0));
+}
+
+TEST(InputError, RangesAreOpenOrClosedAsNamed) {
+  EXPECT_THROW(require_open_range("nu", 0.5, -1.0, 0.5), InputError);
+  EXPECT_NO_THROW(require_closed_range("x", 0.5, -1.0, 0.5));
+  EXPECT_EQ(message_of([] { require_open_range("substrate.nu", 0.7, -1.0, 0.5); }),
+            "invalid substrate.nu = 0.7: must be in (-1, 0.5)");
+}
+
+TEST(InputError, TextValuesAreQuoted) {
+  EXPECT_EQ(message_of([] { throw_invalid("model", "foo", "one of [a, b]"); }),
+            "invalid model = 'foo': must be one of [a, b]");
+}
+
+}  // namespace
+}  // namespace corlab

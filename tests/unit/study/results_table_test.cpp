@@ -1,0 +1,191 @@
+// results.csv: CSV quoting, number round trip, appender + reader, resume preparation.
+#include "corlab/study/results_table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "corlab/core/error.hpp"
+
+namespace corlab::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("corlab_results_table_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void spit(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+}
+
+TEST(Csv, QuotesWhatNeedsQuotingAndSplitsBack) {
+  const std::vector<std::string> fields{"plain",    "a,b",          "say \"hi\"", "",
+                                        " padded ", "E=1e9,nu=0.3", "line\nbreak"};
+  const std::string line = csv_line(fields);
+  EXPECT_EQ(line.find('\n'), std::string::npos);
+  EXPECT_EQ(line, "plain,\"a,b\",\"say \"\"hi\"\"\",,\" padded \",\"E=1e9,nu=0.3\",line break");
+  auto back = split_csv_line(line);
+  ASSERT_EQ(back.size(), fields.size());
+  for (std::size_t i = 0; i + 1 < fields.size(); ++i) EXPECT_EQ(back[i], fields[i]);
+  EXPECT_EQ(back.back(), "line break");
+  EXPECT_THROW(split_csv_line("a,\"unterminated"), InputError);
+}
+
+TEST(Csv, NumbersRoundTripBitwise) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> exponent(-300.0, 300.0);
+  for (int i = 0; i < 2000; ++i) {
+    const double value = std::pow(10.0, exponent(rng)) * (i % 2 ? -1.0 : 1.0) / 3.0;
+    const std::string text = format_number(value);
+    double back = 0.0;
+    std::istringstream(text) >> back;
+    const ResultsTable table({"x"}, {{text}});
+    const double parsed = table.numbers("x")[0];
+    EXPECT_EQ(std::memcmp(&parsed, &value, sizeof value), 0) << text;
+  }
+  EXPECT_EQ(format_number(std::nan("")), "nan");
+  EXPECT_TRUE(std::isnan(ResultsTable({"x"}, {{"nan"}}).numbers("x")[0]));
+}
+
+TEST(ResultsTable, HeaderAndRowLayout) {
+  const auto header = results_header({"sphere.material", "impact.velocity"});
+  EXPECT_EQ(header.front(), "case_id");
+  EXPECT_EQ(header[1], "status");
+  EXPECT_EQ(header[2], "sphere.material");
+  EXPECT_EQ(header.back(), "error");
+  EXPECT_EQ(header.size(), 2 + 2 + result_columns().size() + 1);
+
+  fem::ImpactConfig config;
+  config.impact.velocity = 5.0;
+  fem::ImpactResult result;
+  result.e = 0.5;
+  result.separated = true;
+  result.elements = 12;
+  result.steps = 345;
+  result.wall_s = 1.25;
+  const auto row = result_row("c1", {"steel", "5"}, config, &result, "", 9.0);
+  ASSERT_EQ(row.size(), header.size());
+  const ResultsTable table(header, {row});
+  EXPECT_EQ(table.cell(0, "status"), "ok");
+  EXPECT_EQ(table.numbers("e")[0], 0.5);
+  EXPECT_EQ(table.numbers("steps")[0], 345.0);
+  EXPECT_EQ(table.numbers("wall_s")[0], 1.25);
+  // Derived groups of Ma et al. 2023: E* (eq. 3), k1 = E*/(rho v^2) (eq. 5), k2 = sy/E* (eq. 6).
+  const double e_star = 1.0 / (2.0 * (1.0 - 0.09) / 210e9);
+  EXPECT_NEAR(table.numbers("E_star")[0], e_star, 1e-6 * e_star);
+  EXPECT_NEAR(table.numbers("k1")[0], e_star / (7850.0 * 25.0), 1e-9 * e_star / 7850.0);
+  EXPECT_NEAR(table.numbers("k2")[0], 500e6 / e_star, 1e-15);
+  EXPECT_EQ(table.numbers("velocity")[0], 5.0);
+  EXPECT_EQ(table.numbers("sigma_y")[0], 500e6);
+
+  result.separated = false;
+  EXPECT_EQ(result_row("c1", {"s", "5"}, config, &result, "", 0)[1], "not_separated");
+  const auto failed = result_row("c2", {"steel", "5"}, config, nullptr, "boom, badly", 2.5);
+  ASSERT_EQ(failed.size(), header.size());
+  const ResultsTable failed_table(header, {failed});
+  EXPECT_EQ(failed_table.cell(0, "status"), "failed");
+  EXPECT_EQ(failed_table.cell(0, "error"), "boom, badly");
+  EXPECT_EQ(failed_table.cell(0, "e"), "");
+  EXPECT_EQ(failed_table.numbers("wall_s")[0], 2.5);
+  EXPECT_TRUE(std::isnan(failed_table.numbers("e")[0]));
+}
+
+TEST(ResultsTable, AppendThenReadByColumnName) {
+  const fs::path dir = fresh_dir("append");
+  const fs::path csv = dir / "results.csv";
+  const std::vector<std::string> header{"case_id", "status", "sphere.material", "e", "error"};
+  {
+    CsvAppender out(csv, header);
+    out.append({"c1", "ok", "E=1e9,nu=0.3,rho=1000", "0.5", ""});
+    out.append({"c2", "failed", "steel", "", "it broke, \"badly\""});
+  }
+  {
+    CsvAppender again(csv, header);  // reopening does not repeat the header
+    again.append({"c0", "ok", "steel", "0.25", ""});
+  }
+  const ResultsTable table = read_results(csv);
+  EXPECT_EQ(table.columns(), header);
+  ASSERT_EQ(table.size(), 3u);
+  EXPECT_TRUE(table.is_numeric("e"));
+  EXPECT_FALSE(table.is_numeric("sphere.material"));
+  EXPECT_FALSE(table.is_numeric("error"));
+  EXPECT_EQ(table.text("sphere.material")[0], "E=1e9,nu=0.3,rho=1000");
+  EXPECT_EQ(table.text("error")[1], "it broke, \"badly\"");
+  const auto e = table.numbers("e");
+  EXPECT_EQ(e[0], 0.5);
+  EXPECT_TRUE(std::isnan(e[1]));
+  EXPECT_THROW(table.numbers("sphere.material"), InputError);
+  EXPECT_THROW(table.text("nope"), InputError);
+  const auto ok = table.where("status", "ok").sorted_by("case_id");
+  ASSERT_EQ(ok.size(), 2u);
+  EXPECT_EQ(ok.text("case_id"), (std::vector<std::string>{"c0", "c1"}));
+
+  // A partial last line (killed writer) is ignored by the reader.
+  spit(csv, slurp(csv) + "c9,ok,steel,0.");
+  EXPECT_EQ(read_results(csv).size(), 3u);
+  // A malformed complete line is an error naming the line.
+  spit(csv, slurp(csv) + "\nc8,ok\n");
+  try {
+    read_results(csv);
+    FAIL() << "no error";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("line 5"), std::string::npos) << err.what();
+  }
+}
+
+TEST(ResultsTable, PrepareResumeDropsPartialLineAndUnfinishedRows) {
+  const fs::path dir = fresh_dir("resume");
+  const fs::path csv = dir / "results.csv";
+  const std::vector<std::string> header{"case_id", "status", "e", "error"};
+  const std::vector<std::string> keep{"ok", "not_separated"};
+  EXPECT_TRUE(prepare_resume(csv, header, keep).status.empty());  // no file yet
+
+  spit(csv,
+       "case_id,status,e,error\n"
+       "c1,ok,0.5,\n"
+       "c2,failed,,boom\n"
+       "c3,not_separated,0.1,\n"
+       "c4,ok,0.");
+  const ExistingResults existing = prepare_resume(csv, header, keep);
+  EXPECT_TRUE(existing.dropped_partial_line);
+  EXPECT_EQ(existing.rows, 2u);
+  EXPECT_EQ(existing.status.count("c1"), 1u);
+  EXPECT_EQ(existing.status.count("c2"), 0u);  // failed: rerun
+  EXPECT_EQ(existing.status.at("c3"), "not_separated");
+  EXPECT_EQ(existing.status.count("c4"), 0u);  // partial: rerun
+  EXPECT_EQ(slurp(csv), "case_id,status,e,error\nc1,ok,0.5,\nc3,not_separated,0.1,\n");
+  {
+    CsvAppender out(csv, header);
+    out.append({"c4", "ok", "0.75", ""});
+  }
+  EXPECT_EQ(read_results(csv).size(), 3u);
+
+  // Another spec's table is refused with one line.
+  try {
+    prepare_resume(csv, {"case_id", "status", "impact.velocity", "e", "error"}, keep);
+    FAIL() << "no error";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("columns differ"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace corlab::study

@@ -1,0 +1,331 @@
+// run_sweep machinery with injected runners (no solver): rows, resume, interruption, failures,
+// threads. The end-to-end run with the real solver is tests/regression/sweep_solver_test.cpp.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "corlab/core/error.hpp"
+#include "corlab/study/progress.hpp"
+#include "corlab/study/results_table.hpp"
+#include "corlab/study/sweep.hpp"
+
+namespace corlab::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+// 2 cases x 2 densities x 3 velocities = 12 runs.
+const std::string kSpec = R"(
+[study]
+name = "fake"
+[grid]
+"sphere.rho" = [3925.0, 7850.0]
+"impact.velocity" = [1.0, 5.0, 20.0]
+[[cases]]
+"sphere.material" = "alumina_ma2023"
+"substrate.material" = "aluminium_ma2023"
+[[cases]]
+"sphere.material" = "steel_ma2023"
+"substrate.material" = "steel_ma2023"
+)";
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("corlab_sweep_run_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// A deterministic stand-in for fem::simulate that counts its calls and the configs it saw.
+struct FakeSolver {
+  std::atomic<int> calls{0};
+  std::mutex mutex;
+  std::multiset<double> velocities;
+  double fail_at_velocity = -1.0;           ///< throw for this velocity
+  double not_separated_at_velocity = -1.0;  ///< separated = false for this velocity
+  std::chrono::milliseconds sleep{0};
+
+  CaseRunner runner() {
+    return [this](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
+      ++calls;
+      {
+        const std::lock_guard lock(mutex);
+        velocities.insert(config.impact.velocity);
+      }
+      std::this_thread::sleep_for(sleep);
+      if (control.cancel != nullptr && control.cancel->load()) {
+        throw std::runtime_error("interrupted");
+      }
+      const double v = config.impact.velocity;
+      if (v == fail_at_velocity) throw std::runtime_error("mesh inverted, element 17");
+      fem::ImpactResult r;
+      r.e = 1.0 / (1.0 + 0.01 * v * config.sphere.material.density / 1000.0);
+      r.e_energy = r.e * r.e;
+      r.force_max = v * 100.0;
+      r.separated = v != not_separated_at_velocity;
+      r.elements = 100;
+      r.steps = 1000;
+      r.wall_s = 0.001;
+      return r;
+    };
+  }
+};
+
+SweepOptions quiet(FakeSolver& solver, int jobs) {
+  SweepOptions options;
+  options.jobs = jobs;
+  options.progress = false;
+  options.runner = solver.runner();
+  return options;
+}
+
+TEST(Sweep, RunsEveryCaseAndWritesOneRowEach) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const fs::path out = fresh_dir("all");
+  FakeSolver solver;
+  const SweepSummary summary = run_sweep(spec, out, quiet(solver, 2));
+  EXPECT_EQ(summary.total, 12);
+  EXPECT_EQ(summary.ran, 12);
+  EXPECT_EQ(summary.already_done, 0);
+  EXPECT_EQ(summary.failed, 0);
+  EXPECT_FALSE(summary.interrupted);
+  EXPECT_EQ(summary.remaining(), 0);
+  EXPECT_EQ(solver.calls.load(), 12);
+
+  const ResultsTable table = read_results(out / "results.csv");
+  ASSERT_EQ(table.size(), 12u);
+  EXPECT_EQ(table.columns(), results_header(spec.swept_keys()));
+  std::set<std::string> ids(table.text("case_id").begin(), table.text("case_id").end());
+  std::set<std::string> expected;
+  for (const auto& run : spec.expand()) expected.insert(run.id);
+  EXPECT_EQ(ids, expected);
+  const auto velocity = table.numbers("velocity");
+  const auto swept_velocity = table.numbers("impact.velocity");
+  const auto force = table.numbers("F_max");
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    EXPECT_EQ(table.cell(i, "status"), "ok");
+    EXPECT_EQ(velocity[i], swept_velocity[i]);
+    EXPECT_EQ(force[i], 100.0 * velocity[i]);
+  }
+  EXPECT_EQ(table.numbers("sphere.rho"), table.numbers("sphere_rho"));
+  EXPECT_TRUE(fs::exists(out / "spec.toml"));
+  EXPECT_EQ(slurp(out / "spec.toml"), kSpec);
+}
+
+TEST(Sweep, RerunOfAFinishedSweepRunsNothing) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const fs::path out = fresh_dir("rerun");
+  FakeSolver first;
+  run_sweep(spec, out, quiet(first, 2));
+  const std::string before = slurp(out / "results.csv");
+  FakeSolver second;
+  const SweepSummary summary = run_sweep(spec, out, quiet(second, 2));
+  EXPECT_EQ(second.calls.load(), 0);
+  EXPECT_EQ(summary.already_done, 12);
+  EXPECT_EQ(summary.ran, 0);
+  EXPECT_EQ(slurp(out / "results.csv"), before);
+}
+
+TEST(Sweep, ResumesAfterAKillWithoutRerunningFinishedCases) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const fs::path out = fresh_dir("resume");
+  FakeSolver first;
+  run_sweep(spec, out, quiet(first, 1));
+  // Simulate a kill: keep the header and 8 rows, then half of the 9th row.
+  const std::string full = slurp(out / "results.csv");
+  std::vector<std::string> lines;
+  std::istringstream in(full);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 13u);
+  std::string killed;
+  for (std::size_t i = 0; i < 9; ++i) killed += lines[i] + "\n";
+  killed += lines[9].substr(0, lines[9].size() / 2);
+  {
+    std::ofstream file(out / "results.csv", std::ios::binary | std::ios::trunc);
+    file << killed;
+  }
+  FakeSolver second;
+  const SweepSummary summary = run_sweep(spec, out, quiet(second, 2));
+  EXPECT_EQ(second.calls.load(), 4) << "only the 3 missing cases and the partial one rerun";
+  EXPECT_EQ(summary.already_done, 8);
+  EXPECT_EQ(summary.ran, 4);
+  const ResultsTable table = read_results(out / "results.csv");
+  ASSERT_EQ(table.size(), 12u);
+  std::set<std::string> ids(table.text("case_id").begin(), table.text("case_id").end());
+  EXPECT_EQ(ids.size(), 12u) << "no duplicate rows";
+  // Same content as the uninterrupted run, up to row order.
+  std::vector<std::string> sorted_full(lines.begin() + 1, lines.end());
+  std::sort(sorted_full.begin(), sorted_full.end());
+  std::vector<std::string> sorted_now;
+  std::istringstream now(slurp(out / "results.csv"));
+  std::string header;
+  std::getline(now, header);
+  for (std::string line; std::getline(now, line);) sorted_now.push_back(line);
+  std::sort(sorted_now.begin(), sorted_now.end());
+  EXPECT_EQ(sorted_now, sorted_full);
+}
+
+TEST(Sweep, InterruptionKeepsFinishedRowsAndARerunCompletes) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const fs::path out = fresh_dir("cancel");
+  std::atomic<bool> cancel{false};
+  FakeSolver solver;
+  solver.sleep = std::chrono::milliseconds(5);
+  SweepOptions options = quiet(solver, 2);
+  const CaseRunner inner = options.runner;
+  std::atomic<int> finished{0};
+  options.runner = [&](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
+    auto result = inner(config, control);
+    if (++finished == 5) cancel.store(true);  // "Ctrl-C" after the 5th finished case
+    return result;
+  };
+  options.cancel = &cancel;
+  const SweepSummary summary = run_sweep(spec, out, options);
+  EXPECT_TRUE(summary.interrupted);
+  EXPECT_GE(summary.ran, 5);
+  EXPECT_LT(summary.ran, 12);
+  EXPECT_EQ(summary.remaining(), 12 - summary.ran);
+  const ResultsTable partial = read_results(out / "results.csv");
+  EXPECT_EQ(static_cast<int>(partial.size()), summary.ran) << "every finished case was written";
+
+  FakeSolver rest;
+  const SweepSummary resumed = run_sweep(spec, out, quiet(rest, 2));
+  EXPECT_EQ(rest.calls.load(), 12 - summary.ran);
+  EXPECT_EQ(resumed.already_done, summary.ran);
+  EXPECT_FALSE(resumed.interrupted);
+  EXPECT_EQ(read_results(out / "results.csv").size(), 12u);
+}
+
+TEST(Sweep, FailedCasesAreRecordedAndDoNotStopTheSweep) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const fs::path out = fresh_dir("failed");
+  FakeSolver solver;
+  solver.fail_at_velocity = 5.0;
+  solver.not_separated_at_velocity = 20.0;
+  const SweepSummary summary = run_sweep(spec, out, quiet(solver, 2));
+  EXPECT_EQ(summary.ran, 12);
+  EXPECT_EQ(summary.failed, 4);
+  EXPECT_EQ(summary.not_separated, 4);
+  const ResultsTable table = read_results(out / "results.csv");
+  ASSERT_EQ(table.size(), 12u);
+  const auto failed = table.where("status", "failed");
+  ASSERT_EQ(failed.size(), 4u);
+  for (const auto& message : failed.text("error")) EXPECT_EQ(message, "mesh inverted, element 17");
+  for (const double v : failed.numbers("velocity")) EXPECT_EQ(v, 5.0);
+  EXPECT_EQ(table.where("status", "not_separated").size(), 4u);
+  EXPECT_EQ(table.where("status", "ok").size(), 4u);
+
+  // A rerun retries only the failed cases and replaces their rows (one row per case).
+  FakeSolver fixed;
+  const SweepSummary retry = run_sweep(spec, out, quiet(fixed, 2));
+  EXPECT_EQ(fixed.calls.load(), 4);
+  EXPECT_EQ(fixed.velocities, (std::multiset<double>{5.0, 5.0, 5.0, 5.0}));
+  EXPECT_EQ(retry.already_done, 8);
+  EXPECT_EQ(retry.failed, 0);
+  const ResultsTable after = read_results(out / "results.csv");
+  EXPECT_EQ(after.size(), 12u);
+  EXPECT_EQ(after.where("status", "failed").size(), 0u);
+}
+
+TEST(Sweep, ManyThreadsNeverInterleaveRows) {
+  const std::string spec_text = R"(
+[study]
+name = "many"
+[grid]
+"impact.velocity" = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]
+"sphere.rho" = [1000, 2000, 3000, 4000, 5000]
+)";
+  const SweepSpec spec = parse_sweep_spec(spec_text, "many.toml");
+  const fs::path out = fresh_dir("threads");
+  FakeSolver solver;
+  const SweepSummary summary = run_sweep(spec, out, quiet(solver, 8));
+  EXPECT_EQ(summary.ran, 80);
+  EXPECT_EQ(summary.workers, 8);
+  const ResultsTable table = read_results(out / "results.csv");  // throws on a mangled row
+  EXPECT_EQ(table.size(), 80u);
+}
+
+TEST(Sweep, RefusesAResultsTableOfAnotherSpec) {
+  const fs::path out = fresh_dir("other");
+  FakeSolver solver;
+  run_sweep(parse_sweep_spec(kSpec, "fake.toml"), out, quiet(solver, 1));
+  const SweepSpec other =
+      parse_sweep_spec("[study]\nname = \"o\"\n[grid]\n\"mesh.h_min\" = [1e-3]\n", "other.toml");
+  EXPECT_THROW(run_sweep(other, out, quiet(solver, 1)), InputError);
+  EXPECT_THROW(run_sweep(other, "/proc/no/such/dir", quiet(solver, 1)), InputError);
+}
+
+TEST(Sweep, TwoSweepsCannotShareADirectoryAtOnce) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const fs::path out = fresh_dir("lock");
+  std::atomic<bool> release{false};
+  std::atomic<bool> started{false};
+  SweepOptions slow;
+  slow.jobs = 1;
+  slow.progress = false;
+  slow.runner = [&](const fem::ImpactConfig&, const fem::SimulationControl&) {
+    started = true;
+    while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    fem::ImpactResult r;
+    r.separated = true;
+    return r;
+  };
+  std::thread first([&] { run_sweep(spec, out, slow); });
+  while (!started) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  FakeSolver solver;
+  EXPECT_THROW(run_sweep(spec, out, quiet(solver, 1)), InputError);
+  release = true;
+  first.join();
+  EXPECT_EQ(solver.calls.load(), 0);
+}
+
+TEST(Progress, EtaAndText) {
+  EXPECT_LT(eta_seconds(-1.0, 10, 2), 0.0);
+  EXPECT_EQ(eta_seconds(3.0, 10, 2), 15.0);
+  EXPECT_EQ(eta_seconds(3.0, 3, 2), 6.0);
+  EXPECT_EQ(eta_seconds(3.0, 0, 2), 0.0);
+  EXPECT_EQ(format_duration(-1), "--");
+  EXPECT_EQ(format_duration(12.4), "12s");
+  EXPECT_EQ(format_duration(185), "3m05s");
+  EXPECT_EQ(format_duration(3720), "1h02m");
+  const std::string text = progress_text(6, 12, 185, 185, 1);
+  EXPECT_NE(text.find("6/12"), std::string::npos) << text;
+  EXPECT_NE(text.find(" 50%"), std::string::npos) << text;
+  EXPECT_NE(text.find("elapsed 3m05s"), std::string::npos) << text;
+  EXPECT_NE(text.find("ETA 3m05s"), std::string::npos) << text;
+  EXPECT_NE(text.find("(1 failed)"), std::string::npos) << text;
+}
+
+TEST(Progress, PlainLinesWhenNotATerminal) {
+  std::FILE* file = std::tmpfile();
+  ASSERT_NE(file, nullptr);
+  ProgressBar bar(file, 4, 2, /*terminal=*/0);
+  bar.update(0, 0, -1.0, true);
+  bar.update(1, 0, 1.0);  // throttled: not drawn
+  bar.update(2, 0, 1.0);  // throttled
+  bar.finish();
+  std::rewind(file);
+  std::string text;
+  for (int c; (c = std::fgetc(file)) != EOF;) text += static_cast<char>(c);
+  std::fclose(file);
+  EXPECT_EQ(text.find('\r'), std::string::npos);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2) << text;
+  EXPECT_NE(text.find("2/4"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace corlab::study
