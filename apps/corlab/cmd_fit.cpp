@@ -55,9 +55,10 @@ int fit_paper(const FitArgs& args, const study::ResultsTable& table) {
   }
   const auto samples = study::restitution_samples(table);
   const study::RestitutionLawFit law = study::fit_restitution_law(samples, options);
-  fmt::print("Ma et al. 2023 forms on {} ({} plastic points used, {} excluded: e >= 1 - {:g}, "
-             "not ok, or cases with too few points)\n",
-             args.results, law.points_used, law.points_excluded, args.plastic_tolerance);
+  fmt::print(
+      "Ma et al. 2023 forms on {} ({} plastic points used, {} excluded: e >= 1 - {:g}, "
+      "not ok, or cases with too few points)\n",
+      args.results, law.points_used, law.points_excluded, args.plastic_tolerance);
   fmt::print("{:<26} {:>12} {:>11} {:>27} {:>9}\n", "coefficient", "value", "std. err.",
              fmt::format("{:g} % confidence interval", 100 * args.confidence), "paper");
   print_coefficient(law.slope);
@@ -80,16 +81,15 @@ int fit_form(const FitArgs& args, const study::ResultsTable& table) {
   options.where = args.where;
   const auto params = study::parse_parameter_starts(args.params);
   // only the rows that finished (when the table has a status column)
-  const study::ResultsTable rows =
-      table.has_column("status") ? table.where("status", "ok") : table;
+  const study::ResultsTable rows = table.has_column("status") ? table.where("status", "ok") : table;
   const study::NonlinearFit fit =
       study::fit_expression(args.form, params, study::numeric_columns(rows), options);
   if (args.json) {
     fmt::print("{}\n", study::to_json(fit).dump(2));
     return fit.converged ? 0 : 1;
   }
-  fmt::print("{} ~ {}   ({} rows, {} iterations, {})\n", fit.response, fit.model,
-             fit.observations, fit.iterations, fit.message);
+  fmt::print("{} ~ {}   ({} rows, {} iterations, {})\n", fit.response, fit.model, fit.observations,
+             fit.iterations, fit.message);
   fmt::print("{:<26} {:>12} {:>11} {:>27}\n", "parameter", "value", "std. err.",
              fmt::format("{:g} % confidence interval", 100 * args.confidence));
   for (std::size_t j = 0; j < fit.names.size(); ++j) {
@@ -101,8 +101,7 @@ int fit_form(const FitArgs& args, const study::ResultsTable& table) {
 }
 
 const CommandRegistration kRegistration{Command{
-    "fit",
-    "Fit model forms to a results table: Ma et al. 2023 forms, or any user form (--form)",
+    "fit", "Fit model forms to a results table: Ma et al. 2023 forms, or any user form (--form)",
     [](CLI::App& sub) -> std::function<int()> {
       auto args = std::make_shared<FitArgs>();
       sub.add_option("results", args->results, "results.csv of a sweep (or any CSV with header)")

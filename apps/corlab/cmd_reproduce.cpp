@@ -40,6 +40,7 @@ struct ReproduceArgs {
   std::string out;
   int jobs = 0;
   std::vector<std::string> only;
+  std::string studies;
   bool no_report = false;
   bool quiet = false;
 };
@@ -88,8 +89,10 @@ fs::path python_package_dir() {
 int make_report(const fs::path& out_dir) {
   const fs::path pydir = python_package_dir();
   if (pydir.empty() || !fs::exists(pydir / "corlab" / "report.py")) {
-    std::fprintf(stderr, "corlab: cannot find the Python package (looked in '%s'; set "
-                 "CORLAB_PYTHONPATH): no report\n", pydir.string().c_str());
+    std::fprintf(stderr,
+                 "corlab: cannot find the Python package (looked in '%s'; set "
+                 "CORLAB_PYTHONPATH): no report\n",
+                 pydir.string().c_str());
     return 1;
   }
   std::string pythonpath = pydir.string();
@@ -117,6 +120,7 @@ int run(const ReproduceArgs& args) {
   options.out_dir = args.out;
   options.jobs = args.jobs;
   options.only = args.only;
+  options.studies_dir = args.studies;
   options.progress = !args.quiet;
   options.cancel = &g_cancel;
   options.command_line = own_command_line();
@@ -129,9 +133,10 @@ int run(const ReproduceArgs& args) {
   }
   int failed = 0;
   for (const auto& [name, s] : result["studies"].items()) failed += s.value("failed", 0);
-  std::fprintf(stderr, "corlab: studies done in %.1f s (%d runs this time, %d failed); fit.json "
-               "written\n", result.value("run_wall_s", 0.0), result.value("runs_this_invocation", 0),
-               failed);
+  std::fprintf(stderr,
+               "corlab: studies done in %.1f s (%d runs this time, %d failed); fit.json "
+               "written\n",
+               result.value("run_wall_s", 0.0), result.value("runs_this_invocation", 0), failed);
   int status = failed > 0 ? 1 : 0;
   if (!args.no_report && make_report(args.out) != 0) status = 1;
   return status;
@@ -146,7 +151,10 @@ const CommandRegistration kRegistration{Command{
           ->check(CLI::IsMember({"quick", "full"}));
       sub.add_option("--out", args->out, "output directory (resumable)")->required();
       sub.add_option("--jobs", args->jobs, "runs at the same time (0 = all cores)");
-      sub.add_option("--only", args->only, "run only these studies (names as in studies/<preset>/)");
+      sub.add_option("--only", args->only,
+                     "run only these studies (names as in studies/<preset>/)");
+      sub.add_option("--studies", args->studies,
+                     "folder holding <preset>/<study>.toml (default: the source tree's studies/)");
       sub.add_flag("--no-report", args->no_report, "skip the Python report");
       sub.add_flag("--quiet", args->quiet, "no progress on stderr");
       return [args] { return run(*args); };

@@ -79,11 +79,13 @@ int run_simulate(const SimulateOptions& opt) {
   fem::write_summary_json(result, config, out / "summary.json");
   fem::write_history_csv(result.history, out / "history.csv");
   if (!result.separated) {
-    fmt::print(stderr, "corlab simulate: warning: the sphere did not separate before t_max = {} s\n",
+    fmt::print(stderr,
+               "corlab simulate: warning: the sphere did not separate before t_max = {} s\n",
                result.end_time);
   }
   fmt::print(
-      "e = {:.4f}  e_energy = {:.4f}  F_max = {:.5g} N  delta_max = {:.5g} m  t_contact = {:.5g} s  "
+      "e = {:.4f}  e_energy = {:.4f}  F_max = {:.5g} N  delta_max = {:.5g} m  t_contact = {:.5g} s "
+      " "
       "energy_balance_error = {:.2e}  elements = {}  steps = {}  wall = {:.2f} s\n",
       result.e, result.e_energy, result.force_max, result.indentation_max, result.contact_time,
       result.energy_balance_error, result.elements, result.steps, result.wall_s);

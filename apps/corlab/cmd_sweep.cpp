@@ -11,6 +11,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -61,8 +62,18 @@ int list_cases(const study::SweepSpec& spec) {
   return 0;
 }
 
+study::SweepSpec load_spec(const std::string& file) {
+  try {
+    return study::load_sweep_spec(file);
+  } catch (const InputError&) {
+    // Under mpirun every rank finds the same problem: let rank 0 alone print it.
+    if (study::launched_world_rank() != 0) std::exit(2);
+    throw;
+  }
+}
+
 int run(const SweepArgs& args) {
-  const study::SweepSpec spec = study::load_sweep_spec(args.spec);
+  const study::SweepSpec spec = load_spec(args.spec);
   if (args.dry_run) return list_cases(spec);
   if (args.out.empty()) {
     throw_invalid("--out", args.out, "given (the directory for results.csv)");

@@ -90,18 +90,30 @@ def coefficient_table(fits):
         rows.append(coef_row("s (slope of ln k1)", law.get("slope"), "(i) Table 2, eq. 9"))
         rows.append(coef_row("alpha", law.get("alpha"), "(ii) eq. 11"))
         rows.append(coef_row("beta", law.get("beta"), "(ii) eq. 11"))
-    for key, label in (("yield_velocity_fe", "v_y from FE crossings"),
-                       ("yield_velocity_eq12", "v_y from our eq. 12")):
-        y = fits.get(key, {})
-        if not y or "error" in y:
-            continue
+    y = yv if yv and "error" not in yv else None
+    if y:
+        label = "v_y from FE crossings"
         rows.append(coef_row(f"n [{label}]", y.get("n"), "(iii) eq. 15"))
         rows.append(coef_row(f"m [{label}]", y.get("m"), "(iv) eq. 17"))
         rows.append(coef_row(f"c [Pa] [{label}]", y.get("c"), "(iv) eq. 17"))
         rows.append(coef_row(f"K [{label}] one step", y.get("K"), "eq. 18 constant"))
+        rows.append(coef_row(f"K [{label}] with n = 4.5, m = -3.5 fixed",
+                             y.get("K_fixed_exponents"), "eq. 18 constant"))
         rows.append([esc(f"K [{label}] two step c sigma0^-n E0^-m"), fmt(y.get("K_two_step"), 5),
                      "-", "-", "15.81", "-", "eq. 18 constant"])
-    del yv, eq12
+    for key, label in (("yield_velocity_eq12", "our eq. 12"),
+                       ("yield_velocity_paper_eq12", "paper's eq. 12")):
+        y = fits.get(key, {})
+        if not y or "error" in y:
+            continue
+        note = "derived exactly from alpha, beta, s (n = beta/s, m = 1 - beta/s): no interval"
+        for name, c in (("n", y.get("n")), ("m", y.get("m")), ("c [Pa]", y.get("c")),
+                        ("K one step", y.get("K")),
+                        ("K with n = 4.5, m = -3.5 fixed", y.get("K_fixed_exponents"))):
+            if c:
+                rows.append([esc(f"{name} [v_y back-calculated from {label}]"),
+                             fmt(c.get("value"), 5), "-", "-", fmt(c.get("paper"), 5), "-",
+                             esc(note)])
     return table(["coefficient", "ours", "std. error", "95 % CI", "paper", "paper in CI?", "form"],
                  rows)
 
@@ -116,7 +128,7 @@ def goodness_rows(fits):
         if g:
             rows.append([esc(label), fmt(g["r_squared"], 5), pct(g["max_relative_error"]),
                          pct(g["rms_relative_error"])])
-    for fk, name in (("yield_velocity_fe", "FE crossings"), ("yield_velocity_eq12", "our eq. 12")):
+    for fk, name in (("yield_velocity_fe", "FE crossings"),):
         y = fits.get(fk, {})
         for key, label in (("goodness_form_iii", f"(iii) rho v_y^2 = b sigma_bar^n ({name})"),
                            ("goodness_form_iv", f"(iv) b = c E_bar^m ({name})"),
@@ -276,13 +288,21 @@ def discussion(fit):
             "far outside the data).")
     pe = fits.get("yield_velocity_paper_eq12", {})
     if pe and "error" not in pe:
+        kf = pe.get("K_fixed_exponents", {}).get("value")
         items.append(
             "Self-check of the procedure: back-calculating v_y from the paper's own eq. 12 over "
-            f"the same (rho, E*, sigma_y) grid and fitting (iii)-(iv) gives n = "
-            f"{fmt(pe['n']['value'], 4)}, m = {fmt(pe['m']['value'], 4)}, K = "
-            f"{fmt(pe['K']['value'], 4)}: the published 4.5, -3.5 and 15.81 are this crossing "
-            "rounded (exact exponents 0.253/0.056 = 4.52 and -3.52), so eq. 18 is a fit of a "
-            "fit, not an independent measurement.")
+            f"the same (rho, E*, sigma_y) grid and fitting (iii)-(iv) gives exactly n = "
+            f"{fmt(pe['n']['value'], 4)} (= 0.253/0.056), m = {fmt(pe['m']['value'], 4)}, K = "
+            f"{fmt(pe['K']['value'], 4)}; with the exponents rounded to 4.5 and -3.5 the constant "
+            f"becomes {fmt(kf, 4)} against the published 15.81. Eq. 18 is thus a re-expression of "
+            "the eq. 12 crossing (a fit of a fit), not an independent measurement of yield.")
+    ye = fits.get("yield_velocity_eq12", {})
+    if ye and "error" not in ye:
+        items.append(
+            f"The same back-calculation from our refitted eq. 12 gives n = {fmt(ye['n']['value'], 4)},"
+            f" m = {fmt(ye['m']['value'], 4)}, K = {fmt(ye['K']['value'], 4)} (K with fixed "
+            f"exponents {fmt(ye.get('K_fixed_exponents', {}).get('value'), 4)}); n = beta/s is "
+            "sensitive to small changes of beta and s.")
     onset = [o for o in fits.get("yield_onset", []) if o.get("v_onset")]
     for o in onset:
         if o["v_onset"] and not math.isnan(figures.num(o["v_onset"])):

@@ -1,6 +1,82 @@
-// Bindings for the fit area (filled in by the module's owner).
+// Bindings for the fit area: corlab.fit_linear, corlab.fit_expression, corlab.fit_paper.
+// Results are plain dicts (the JSON forms of fit_io.hpp, the same as `corlab fit --json`).
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
 #include "bindings.hpp"
+#include "corlab/study/fit_expression.hpp"
+#include "corlab/study/fit_io.hpp"
+#include "corlab/study/linear_regression.hpp"
+#include "corlab/study/results_table.hpp"
 
 namespace corlab::python {
-void bind_fit(pybind11::module_& /*m*/) {}
+namespace {
+
+namespace py = pybind11;
+
+py::object to_python(const nlohmann::json& j) {
+  return py::module_::import("json").attr("loads")(j.dump());
+}
+
+}  // namespace
+
+void bind_fit(py::module_& m) {
+  m.def(
+      "fit_linear",
+      [](const Eigen::MatrixXd& X, const Eigen::VectorXd& y, std::vector<std::string> names,
+         double confidence) {
+        study::LinearFitOptions options;
+        options.names = std::move(names);
+        options.confidence = confidence;
+        return to_python(study::to_json(study::fit_linear(X, y, options)));
+      },
+      py::arg("X"), py::arg("y"), py::arg("names") = std::vector<std::string>{},
+      py::arg("confidence") = 0.95,
+      R"doc(Linear least squares y = X b by SVD (never the normal equations).
+
+Returns a dict: coefficients (name, value, standard_error, ci_lower, ci_upper), covariance,
+goodness (residual_sum_squares, residual_std_error, r_squared, max/rms_relative_error),
+observations, parameters, dof, confidence, t_quantile (Student t), condition_number, fitted,
+residuals. Raises ValueError for rank-deficient X, n <= p or non-finite input.)doc");
+
+  m.def(
+      "fit_expression",
+      [](const std::string& expr, const std::map<std::string, double>& params,
+         const std::map<std::string, std::vector<double>>& data, const std::string& where,
+         double confidence, int max_iterations) {
+        std::vector<study::ParameterStart> starts;
+        for (const auto& [name, start] : params) starts.push_back({name, start});
+        study::NonlinearFitOptions options;
+        options.where = where;
+        options.confidence = confidence;
+        options.max_iterations = max_iterations;
+        return to_python(study::to_json(study::fit_expression(expr, starts, data, options)));
+      },
+      py::arg("expr"), py::arg("params"), py::arg("data"), py::arg("where") = "",
+      py::arg("confidence") = 0.95, py::arg("max_iterations") = 500,
+      R"doc(Nonlinear least squares (GSL Levenberg-Marquardt) of a user form.
+
+expr: "response ~ model" over the columns of `data`, e.g. "e ~ a + s*ln(k1) + b*ln(k2)"
+(muParser syntax: ln, log (= ln), log10, exp, sqrt, ^). params: {name: start value}.
+data: {column: sequence of float}, all of equal length. where: optional row filter,
+e.g. "e < 0.999". Returns a dict with coefficients (value, standard_error, ci_lower,
+ci_upper, start), covariance, goodness, iterations, converged, message.)doc");
+
+  m.def(
+      "fit_paper",
+      [](const std::string& results_csv, double confidence, double plastic_tolerance) {
+        study::PaperFitOptions options;
+        options.confidence = confidence;
+        options.plastic_tolerance = plastic_tolerance;
+        return to_python(study::fit_paper_forms(study::read_results(results_csv), options));
+      },
+      py::arg("results_csv"), py::arg("confidence") = 0.95, py::arg("plastic_tolerance") = 1e-3,
+      R"doc(The model forms of Ma et al. (2023) fitted to a sweep's results.csv.
+
+Returns {"restitution_law": forms (i) e = a_i + s ln k1 and (ii) a = alpha + beta ln k2,
+ "yield_velocity": forms (iii) rho v_y^2 = b sigma_bar^n and (iv) b = c E_bar^m on the
+ per-case e = 1 crossings, or None when the table has < 3 E* values or < 2 yield stresses}.
+Each coefficient has value, standard_error, ci_lower, ci_upper and the paper's value.)doc");
+}
+
 }  // namespace corlab::python

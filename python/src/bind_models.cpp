@@ -22,6 +22,14 @@ Material to_material(const MaterialArg& arg, const char* field) {
   return std::get<Material>(arg);
 }
 
+// Issues a UserWarning for an unverified model so that no Python output silently contains one.
+void warn_if_unverified(const restitution::Model& bound) {
+  const auto& info = bound.info();
+  if (info.status != restitution::Status::kUnverified) return;
+  const std::string message = "corlab model '" + info.name + "' is UNVERIFIED: " + info.status_note;
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 restitution::Model bind_model(const std::string& model,
                               const MaterialArg& sphere,
                               const MaterialArg& substrate,
@@ -30,8 +38,10 @@ restitution::Model bind_model(const std::string& model,
   restitution::ModelOptions options;
   options.clamp = clamp;
   options.radius = radius;
-  return restitution::make_model(model, to_material(sphere, "sphere"),
-                                 to_material(substrate, "substrate"), options);
+  auto bound = restitution::make_model(model, to_material(sphere, "sphere"),
+                                       to_material(substrate, "substrate"), options);
+  warn_if_unverified(bound);
+  return bound;
 }
 
 py::dict info_dict(const restitution::ModelInfo& info) {
@@ -71,7 +81,8 @@ void bind_models(py::module_& m) {
       "CoR e [-] of `model` for a sphere hitting a substrate at speed v [m/s]. sphere and "
       "substrate are Material objects or specs ('alumina_ma2023', 'E=..,nu=..,rho=..,sy=..'). "
       "v may be a float (returns a float) or a numpy array (returns an array of the same "
-      "shape). clamp: None = model default. Raises ValueError on bad input.");
+      "shape). clamp: None = model default. Raises ValueError on bad input; warns "
+      "(UserWarning) when the model is unverified.");
   m.def(
       "predict",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
@@ -95,7 +106,7 @@ void bind_models(py::module_& m) {
         return bind_model(model, sphere, substrate, std::nullopt, 1.0).yield_velocity();
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"),
-      "The model's yield velocity [m/s] (e = 1 below it).");
+      "The model's yield velocity [m/s] (e = 1 below it); warns for an unverified model.");
 }
 
 }  // namespace corlab::python

@@ -1,6 +1,104 @@
-// Bindings for the simulate area (filled in by the module's owner).
+// Bindings for the explicit impact solver: corlab.simulate(settings, config_file) -> dict.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <variant>
+
 #include "bindings.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/fem/impact_config.hpp"
+#include "corlab/fem/impact_output.hpp"
+#include "corlab/fem/simulate.hpp"
+
+namespace py = pybind11;
 
 namespace corlab::python {
-void bind_simulate(pybind11::module_& /*m*/) {}
+
+namespace {
+
+py::array_t<double> to_numpy(const std::vector<double>& v) {
+  py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+  std::copy(v.begin(), v.end(), a.mutable_data());
+  return a;
+}
+
+// A setting value: text, or a number (formatted with full precision).
+std::string setting_text(const py::handle& value) {
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "1" : "0";
+  if (py::isinstance<py::int_>(value)) return std::to_string(value.cast<long long>());
+  if (py::isinstance<py::float_>(value)) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", value.cast<double>());
+    return buf;
+  }
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    std::string out;
+    for (const auto& item : value) {
+      if (!out.empty()) out += ",";
+      out += setting_text(item);
+    }
+    return out;
+  }
+  return py::str(value).cast<std::string>();
+}
+
+}  // namespace
+
+void bind_simulate(py::module_& m) {
+  m.def(
+      "simulate",
+      [](const py::dict& settings, std::optional<std::string> config_file) {
+        fem::ImpactConfig config;
+        if (config_file) config = fem::load_impact_config(*config_file);
+        for (const auto& [key, value] : settings) {
+          fem::apply_setting(config, py::str(key).cast<std::string>(), setting_text(value));
+        }
+        fem::validate(config);
+        fem::ImpactResult result;
+        {
+          py::gil_scoped_release release;
+          result = fem::simulate(config);
+        }
+        const nlohmann::json summary = fem::summary_to_json(result, config);
+        py::dict out;
+        for (const auto& [key, value] : summary.items()) {
+          if (value.is_number_float()) {
+            out[py::str(key)] = value.get<double>();
+          } else if (value.is_number_integer()) {
+            out[py::str(key)] = value.get<long long>();
+          } else if (value.is_boolean()) {
+            out[py::str(key)] = value.get<bool>();
+          }
+        }
+        out["config"] = py::module_::import("json").attr("loads")(summary["config"].dump());
+        const fem::ImpactHistory& h = result.history;
+        py::dict hist;
+        hist["time"] = to_numpy(h.time);
+        hist["contact_force"] = to_numpy(h.contact_force);
+        hist["indentation"] = to_numpy(h.indentation);
+        hist["sphere_velocity"] = to_numpy(h.sphere_velocity);
+        hist["kinetic_energy"] = to_numpy(h.kinetic_energy);
+        hist["strain_energy"] = to_numpy(h.strain_energy);
+        hist["plastic_dissipation"] = to_numpy(h.plastic_dissipation);
+        hist["hourglass_energy"] = to_numpy(h.hourglass_energy);
+        hist["viscous_dissipation"] = to_numpy(h.viscous_dissipation);
+        hist["contact_energy"] = to_numpy(h.contact_energy);
+        hist["energy_balance_error"] = to_numpy(h.energy_balance_error);
+        out["history"] = hist;
+        return out;
+      },
+      py::arg("settings") = py::dict(), py::arg("config_file") = py::none(),
+      R"(Runs one explicit FE impact (elastic sphere on an elastic-plastic substrate).
+
+settings: {key: value} with the keys of `corlab simulate --set` (SI units), e.g.
+  {"impact.velocity": 2.0, "substrate.material": "steel_ma2023,sy=700e6"}.
+config_file: optional TOML case file applied before `settings`.
+Returns a dict: e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], ...,
+"config" (the case), "history" (numpy arrays: time [s], contact_force [N], indentation [m], ...).
+The GIL is released during the run. Bad input raises ValueError.)");
+}
+
 }  // namespace corlab::python

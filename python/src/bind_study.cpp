@@ -82,6 +82,15 @@ void bind_study(py::module_& m) {
         options.cancel = &cancel;
         // Run without the GIL in a thread; this thread checks for Ctrl-C now and then, so a
         // KeyboardInterrupt cancels the sweep (finished rows are kept) instead of being ignored.
+        if (study::launched_world_size() > 1) {
+          // Under mpirun every MPI call must come from this thread (MPI_THREAD_FUNNELED).
+          study::SweepSummary summary;
+          {
+            py::gil_scoped_release release;
+            summary = study::run_sweep(spec, out_dir, options);
+          }
+          return summary_dict(summary);
+        }
         std::future<study::SweepSummary> done;
         {
           py::gil_scoped_release release;

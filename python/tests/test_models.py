@@ -1,5 +1,6 @@
 """Tests of the analytic CoR model bindings (corlab.models, corlab.predict, corlab.yield_velocity)."""
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -52,22 +53,37 @@ def test_predict_numpy_in_numpy_out_same_shape():
 def test_predict_accepts_lists_and_material_objects():
     sphere = corlab.material(SPHERE)
     substrate = corlab.Material(E=68e9, nu=0.33, rho=2700.0, sigma_y=380e6)
-    e = corlab.predict("jg2010-fit", sphere, substrate, [0.1, 1.0, 6.0])
+    with pytest.warns(UserWarning):
+        e = corlab.predict("jg2010-fit", sphere, substrate, [0.1, 1.0, 6.0])
     np.testing.assert_allclose(e, [0.968, 0.787, 0.614], atol=6e-4)
 
 
 def test_all_clamped_models_in_unit_interval():
     v = np.logspace(-3, 3, 200)
     for name in corlab.model_names():
-        e = corlab.predict(name, SPHERE, STEEL, v)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            e = corlab.predict(name, SPHERE, STEEL, v)
         assert np.all(np.isfinite(e)), name
         if name != "wu2003":
             assert np.all((e >= 0.0) & (e <= 1.0)), name
 
 
 def test_wu_unclamped_by_default_and_clamp_option():
-    assert corlab.predict("wu2003", SPHERE, AL, 0.2) == pytest.approx(1.441, abs=6e-4)
-    assert corlab.predict("wu2003", SPHERE, AL, 0.2, clamp=True) == 1.0
+    with pytest.warns(UserWarning, match="'wu2003' is UNVERIFIED"):
+        assert corlab.predict("wu2003", SPHERE, AL, 0.2) == pytest.approx(1.441, abs=6e-4)
+    with pytest.warns(UserWarning, match="UNVERIFIED"):
+        assert corlab.predict("wu2003", SPHERE, AL, 0.2, clamp=True) == 1.0
+
+
+def test_unverified_models_warn_and_verified_do_not():
+    import warnings
+    for info in corlab.models():
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            corlab.predict(info["name"], SPHERE, AL, np.array([1.0]))
+        unverified = [w for w in caught if "UNVERIFIED" in str(w.message)]
+        assert bool(unverified) == (info["status"] == "unverified"), info["name"]
     assert corlab.predict("johnson1985", SPHERE, AL, 0.5, clamp=False) == pytest.approx(
         1.314, abs=6e-4)
 
@@ -78,7 +94,8 @@ def test_yield_velocity():
     assert corlab.yield_velocity("thornton1997", SPHERE, STEEL) == pytest.approx(0.1399, abs=5e-5)
     assert corlab.yield_velocity("jg2", SPHERE, AL) == pytest.approx(0.0601, abs=5e-5)
     assert corlab.yield_velocity("johnson1985", SPHERE, STEEL) == pytest.approx(0.1411, abs=5e-5)
-    assert math.isfinite(corlab.yield_velocity("jg1", SPHERE, STEEL))
+    with pytest.warns(UserWarning, match="'jg1' is UNVERIFIED"):
+        assert math.isfinite(corlab.yield_velocity("jg1", SPHERE, STEEL))
 
 
 @pytest.mark.parametrize("v", [0.0, -1.0, float("nan"), float("inf")])

@@ -103,7 +103,7 @@ constexpr int kBlock = 16;
 #pragma GCC ivdep
   for (int l = 0; l < nb; ++l) {
     double r[4], z[4], vr[4], vz[4], mr[4], mz[4];
-    #pragma GCC unroll 4
+#pragma GCC unroll 4
     for (int i = 0; i < 4; ++i) {
       r[i] = xr[i * kBlock + l];
       z[i] = xz[i * kBlock + l];
@@ -126,8 +126,8 @@ constexpr int kBlock = 16;
     w_p[l] = vol_mid * inc.plastic_work;
     eps_lane[l] = state.eps_p;
     w_int[l] = 0.5 * vol_mid *
-             ((s_old.rr + s.rr) * de.rr + (s_old.zz + s.zz) * de.zz + (s_old.tt + s.tt) * de.tt +
-              2.0 * (s_old.rz + s.rz) * de.rz);
+               ((s_old.rr + s.rr) * de.rr + (s_old.zz + s.zz) * de.zz + (s_old.tt + s.tt) * de.tt +
+                2.0 * (s_old.rz + s.rz) * de.rz);
     srr[l] = s.rr;
     szz[l] = s.zz;
     stt[l] = s.tt;
@@ -153,7 +153,7 @@ constexpr int kBlock = 16;
     w_hg[l] = hourglass_update(gamma, vr, vz, k_hg, dt, q_r, q_z, fr, fz);
     qr[l] = q_r;
     qz[l] = q_z;
-    #pragma GCC unroll 4
+#pragma GCC unroll 4
     for (int i = 0; i < 4; ++i) {
       f_r[i * kBlock + l] = fr[i];
       f_z[i * kBlock + l] = fz[i];
@@ -191,7 +191,7 @@ void element_loop(const BodyParams& p,
     const int nb = std::min(kBlock, end - e0);
     const std::array<int, 4>* nd = es.nodes.data() + e0;
     for (int l = 0; l < nb; ++l) {
-      #pragma GCC unroll 4
+#pragma GCC unroll 4
       for (int i = 0; i < 4; ++i) {
         const int n = nd[l][i];
         xr[i][l] = r[n];
@@ -201,12 +201,12 @@ void element_loop(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    element_block(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0, es.szz.data() + e0,
-                  es.stt.data() + e0, es.srz.data() + e0, es.eps_p.data() + e0,
+    element_block(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
+                  es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0, es.eps_p.data() + e0,
                   es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0], &f_z[0][0], dt, sums);
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
-      #pragma GCC unroll 4
+#pragma GCC unroll 4
       for (int i = 0; i < 4; ++i) {
         const int n = nd[l][i];
         fr_out[n] -= f_r[i][l];
@@ -316,22 +316,21 @@ ImpactResult run_impact(const ImpactConfig& config,
   for (int e = 0; e < ne; ++e) {
     const auto& nd = es.nodes[e];
     double xr[4], xz[4];
-    #pragma GCC unroll 4
+#pragma GCC unroll 4
     for (int i = 0; i < 4; ++i) {
       xr[i] = r[nd[i]];
       xz[i] = z[nd[i]];
     }
     const Quad4Geometry g = quad4_geometry(xr, xz);
     if (!(g.area > 0.0 && g.omega > 0.0)) {
-      throw_invalid("mesh element", original[e],
-                    "counter-clockwise with positive area and volume");
+      throw_invalid("mesh element", original[e], "counter-clockwise with positive area and volume");
     }
     const BodyParams& p = e < n_sphere ? sphere_p : substrate_p;
     const double m = p.density * kTwoPi * g.omega / 4.0;
-    #pragma GCC unroll 4
+#pragma GCC unroll 4
     for (int i = 0; i < 4; ++i) mass[nd[i]] += m;
-    dt_crit = std::min(dt_crit,
-                       element_stable_time_step(characteristic_length(g), p.wave_speed, p.b1));
+    dt_crit =
+        std::min(dt_crit, element_stable_time_step(characteristic_length(g), p.wave_speed, p.b1));
   }
   double sphere_mass = 0.0;
   for (int i = 0; i < nn; ++i) {
@@ -481,8 +480,8 @@ ImpactResult run_impact(const ImpactConfig& config,
     ElementSums sums;
     element_loop(sphere_p, es, 0, n_sphere, r.data(), z.data(), vr.data(), vz.data(), fr.data(),
                  fz.data(), dt, sums);
-    element_loop(substrate_p, es, n_sphere, ne, r.data(), z.data(), vr.data(), vz.data(),
-                 fr.data(), fz.data(), dt, sums);
+    element_loop(substrate_p, es, n_sphere, ne, r.data(), z.data(), vr.data(), vz.data(), fr.data(),
+                 fz.data(), dt, sums);
     if (sums.bad_element >= 0) {
       throw std::runtime_error(fmt::format("element {} inverted at t = {:.6g} s (step {})",
                                            original[sums.bad_element], t + dt, step));
@@ -590,7 +589,8 @@ ImpactResult run_impact(const ImpactConfig& config,
   if (!separated) {
     // No separation before t_max: report the current state.
     double ke_s = 0.0;
-    for (int i = 0; i < nn; ++i) ke_s += 0.5 * mass[i] * (vr[i] * vr[i] + vz[i] * vz[i]) * is_sphere[i];
+    for (int i = 0; i < nn; ++i)
+      ke_s += 0.5 * mass[i] * (vr[i] * vr[i] + vz[i] * vz[i]) * is_sphere[i];
     final_ke_avg = ke_s;
   }
   res.e = v_com / v0;

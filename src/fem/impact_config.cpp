@@ -3,13 +3,13 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <toml++/toml.h>
 
 #include <charconv>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <string>
-#include <toml++/toml.h>
 
 #include "corlab/core/error.hpp"
 #include "corlab/materials/material_database.hpp"
@@ -127,10 +127,10 @@ const std::map<std::string, Setter, std::less<>>& setters() {
         number_setter([](ImpactConfig& c) -> double& { return c.solver.safety_factor; });
     m["solver.hourglass"] =
         number_setter([](ImpactConfig& c) -> double& { return c.solver.hourglass; });
-    m["solver.bulk_viscosity_linear"] = number_setter(
-        [](ImpactConfig& c) -> double& { return c.solver.bulk_viscosity_linear; });
-    m["solver.bulk_viscosity_quadratic"] = number_setter(
-        [](ImpactConfig& c) -> double& { return c.solver.bulk_viscosity_quadratic; });
+    m["solver.bulk_viscosity_linear"] =
+        number_setter([](ImpactConfig& c) -> double& { return c.solver.bulk_viscosity_linear; });
+    m["solver.bulk_viscosity_quadratic"] =
+        number_setter([](ImpactConfig& c) -> double& { return c.solver.bulk_viscosity_quadratic; });
     m["solver.penalty_scale"] =
         number_setter([](ImpactConfig& c) -> double& { return c.solver.penalty_scale; });
     m["solver.t_max"] = number_setter([](ImpactConfig& c) -> double& { return c.solver.t_max; });
@@ -211,7 +211,8 @@ ImpactConfig load_impact_config(const std::filesystem::path& file) {
     const std::string group_name(group_key.str());
     const auto* table = group.as_table();
     if (table == nullptr) {
-      throw_invalid("config key", group_name, "a [table] (sphere, substrate, impact, mesh, solver, output)");
+      throw_invalid("config key", group_name,
+                    "a [table] (sphere, substrate, impact, mesh, solver, output)");
     }
     for (const auto& [key, node] : *table) {
       const std::string full = group_name + "." + std::string(key.str());

@@ -78,10 +78,17 @@ nlohmann::json summary_to_json(const ImpactResult& r, const ImpactConfig& config
   j["end_time"] = r.end_time;
   j["wall_s"] = r.wall_s;
   j["element_steps_per_s"] = r.element_steps_per_s;
-  j["units"] = {{"F_max", "N"},          {"delta_max", "m"},     {"t_contact", "s"},
-                {"crater_depth", "m"},   {"energy_*", "J"},      {"h_contact", "m"},
-                {"time_step", "s"},      {"end_time", "s"},      {"wall_s", "s"},
-                {"hysteresis_area", "J"}, {"element_steps_per_s", "1/s"}};
+  j["units"] = {{"F_max", "N"},
+                {"delta_max", "m"},
+                {"t_contact", "s"},
+                {"crater_depth", "m"},
+                {"energy_*", "J"},
+                {"h_contact", "m"},
+                {"time_step", "s"},
+                {"end_time", "s"},
+                {"wall_s", "s"},
+                {"hysteresis_area", "J"},
+                {"element_steps_per_s", "1/s"}};
   j["config"] = config_to_json(config);
   return j;
 }
@@ -100,11 +107,11 @@ void write_history_csv(const ImpactHistory& h, const std::filesystem::path& file
          "strain_energy_J,plastic_dissipation_J,hourglass_energy_J,viscous_dissipation_J,"
          "contact_energy_J,energy_balance_error\n";
   for (std::size_t i = 0; i < h.time.size(); ++i) {
-    out << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g}\n",
-                       h.time[i], h.contact_force[i], h.indentation[i], h.sphere_velocity[i],
-                       h.kinetic_energy[i], h.strain_energy[i], h.plastic_dissipation[i],
-                       h.hourglass_energy[i], h.viscous_dissipation[i], h.contact_energy[i],
-                       h.energy_balance_error[i]);
+    out << fmt::format(
+        "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g}\n", h.time[i],
+        h.contact_force[i], h.indentation[i], h.sphere_velocity[i], h.kinetic_energy[i],
+        h.strain_energy[i], h.plastic_dissipation[i], h.hourglass_energy[i],
+        h.viscous_dissipation[i], h.contact_energy[i], h.energy_balance_error[i]);
   }
   if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", file.string()));
 }

@@ -433,16 +433,12 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const double rho_top_min =
       std::min(1.0 - kMinRingFraction, 1.2 * static_cast<double>(ns) * h / (gamma * radius)) *
       radius;
-  const double d_top = std::max(d_ring, std::min(d_top0, radius - rho_top_min));
-
   const Point pnt_p = polar(zc, radius, 0.0);
   const Point pnt_q = polar(zc, radius, alpha);
   const Point pnt_q2 = polar(zc, radius, beta);
   const Point pnt_t = polar(zc, radius, kPi);
   const Point pnt_a = polar(zc, radius - d_ring, 0.0);
   const Point pnt_k = polar(zc, radius - d_ring, alpha);
-  const Point pnt_k2 = polar(zc, radius - d_top, beta);
-  const Point pnt_a2 = polar(zc, radius - d_top, kPi);
 
   // core boundary curves with corner angles set at K and K': K -> A leaves K at the ring corner
   // angle from the outward radial towards smaller phi, K -> K' towards larger phi
@@ -450,7 +446,54 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const Point k2_to_k = ca * e_out(beta) - sa * e_tan(beta);
   const Point k2_to_a2 = ca * e_out(beta) + sa * e_tan(beta);
   const Curve gamma_bottom = bottom_curve(d_ring);
-  const Curve gamma_right = hermite(pnt_k, k_to_k2, pnt_k2, -1.0 * k2_to_k);
+
+  // right block: arc Q -> Q' (i), radial (j): Q->K to Q'->K'
+  const auto arc_b_sizes = spacings(arc_b);
+  const double s_q = arc_b_sizes.back();
+  const double s_top = radius * gamma / static_cast<double>(ns);
+  const double right_uniform = std::max(0.0, o.zone_radius - radius * alpha);
+  const auto depth_sizes = spacings(depth_b);
+
+  // The top ring thickness d_top sets K' and A'. Thinner when the core's right edge K -> K' is
+  // too short for its n_r intervals of >= min_size.
+  struct CoreRight {
+    Point k2;
+    Point a2;
+    Curve right;
+    std::vector<double> arc_r;   // right block arc positions
+    std::vector<double> axis_x;  // core axis positions
+    std::size_t nr;
+  };
+  auto core_right = [&](double d_top) {
+    const Point k2 = polar(zc, radius - d_top, beta);
+    const Point a2 = polar(zc, radius - d_top, kPi);
+    auto arc = positions_from_sizes(
+        two_sided_sizes(radius * (beta - alpha), s_q, right_uniform, s_top, g, o.h_max));
+    // core axis A -> A': continues the depth refinement below the ring, then grows
+    const double s_top_radial = depth_sizes.back() * d_top / d_ring;
+    auto axis = positions_from_sizes(two_sided_sizes(norm(a2 - pnt_a), depth_sizes.back(),
+                                                     std::max(0.0, uniform_depth - d_ring),
+                                                     s_top_radial, g, o.h_max));
+    const std::size_t n = std::max(arc.size(), axis.size()) - 1;
+    return CoreRight{k2,
+                     a2,
+                     hermite(pnt_k, k_to_k2, k2, -1.0 * k2_to_k),
+                     split_to_count(arc, n),
+                     split_to_count(axis, n),
+                     n};
+  };
+  double d_top = std::max(d_ring, std::min(d_top0, radius - rho_top_min));
+  CoreRight core = core_right(d_top);
+  while (d_top > d_ring && core.right.length() < 1.05 * min_size * static_cast<double>(core.nr)) {
+    d_top = std::max(d_ring, 0.9 * d_top);
+    core = core_right(d_top);
+  }
+  const Point pnt_k2 = core.k2;
+  const Point pnt_a2 = core.a2;
+  const Curve& gamma_right = core.right;
+  const auto& arc_r = core.arc_r;
+  const auto& axis_x = core.axis_x;
+  const std::size_t nr = core.nr;
   const Curve gamma_top = hermite(pnt_a2, {1.0, 0.0}, pnt_k2, -1.0 * k2_to_a2);
 
   // bottom block edges
@@ -460,23 +503,6 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto b_west = line_points(pnt_p, pnt_a, depth_f);             // P -> A
   const auto b_east = line_points(pnt_q, pnt_k, depth_f);             // Q -> K
 
-  // right block: arc Q -> Q' (i), radial (j): Q->K to Q'->K'
-  const auto arc_b_sizes = spacings(arc_b);
-  const double s_q = arc_b_sizes.back();
-  const double s_top = radius * gamma / static_cast<double>(ns);
-  const double right_uniform = std::max(0.0, o.zone_radius - radius * alpha);
-  auto arc_r = positions_from_sizes(
-      two_sided_sizes(radius * (beta - alpha), s_q, right_uniform, s_top, g, o.h_max));
-  // core axis A -> A': continues the depth refinement below the ring, then grows
-  const auto depth_sizes = spacings(depth_b);
-  const double s_top_radial =
-      (d_top - d_ring) >= 0.0 ? depth_sizes.back() * d_top / d_ring : depth_sizes.back();
-  auto axis_x = positions_from_sizes(two_sided_sizes(norm(pnt_a2 - pnt_a), depth_sizes.back(),
-                                                     std::max(0.0, uniform_depth - d_ring),
-                                                     s_top_radial, g, o.h_max));
-  const std::size_t nr = std::max(arc_r.size(), axis_x.size()) - 1;
-  arc_r = split_to_count(arc_r, nr);
-  axis_x = split_to_count(axis_x, nr);
   const auto r_south = arc_points(zc, radius, alpha, beta, arc_r);  // Q -> Q'
   const auto r_north = gamma_right.sample(
       fit_fractions(fractions(arc_r), gamma_right.length(), min_size));  // K -> K'

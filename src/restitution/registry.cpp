@@ -43,7 +43,8 @@ std::vector<ModelInfo> build_catalog() {
       .status = Status::kVerifiedPaper,
       .status_note = "confirmed (one source + derivation): the paper text; the derivation "
                      "reproduces 15.81 and the e = 1 crossing. Eq. 18's v_y differs from the exact "
-                     "crossing (log branch 1.0003-1.0005 at v_y; removed by the clamp)",
+                     "crossing (log branch 1.0003-1.0005 at v_y on the seed pairs, removed by the "
+                     "clamp; for sigma_y/E* < ~0.0047 a downward step < ~1e-3 at v_y)",
       .clamped_by_default = true});
   c.push_back(ModelInfo{
       .name = "ma2023-exact",

@@ -69,8 +69,8 @@ class BoundExpression {
         }
       }
     } catch (const mu::Parser::exception_type& err) {
-      throw_invalid(field, expression, "a valid form over the columns and parameters (" +
-                                           err.GetMsg() + ")");
+      throw_invalid(field, expression,
+                    "a valid form over the columns and parameters (" + err.GetMsg() + ")");
     }
   }
 
@@ -292,9 +292,9 @@ NonlinearFit fit_expression(const std::string& formula,
   for (std::size_t j = 0; j < prob.p; ++j) gsl_vector_set(x0.get(), j, start[j]);
   gsl_multifit_nlinear_init(x0.get(), &fdf, work.get());
   int info = 0;
-  const int status = gsl_multifit_nlinear_driver(
-      static_cast<std::size_t>(options.max_iterations), options.xtol, options.gtol, options.ftol,
-      nullptr, nullptr, &info, work.get());
+  const int status =
+      gsl_multifit_nlinear_driver(static_cast<std::size_t>(options.max_iterations), options.xtol,
+                                  options.gtol, options.ftol, nullptr, nullptr, &info, work.get());
 
   NonlinearFit fit;
   fit.response = response;

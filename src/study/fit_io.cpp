@@ -49,12 +49,8 @@ nlohmann::json to_json(const GoodnessOfFit& g) {
 }
 
 nlohmann::json to_json(const Coefficient& c) {
-  return {{"name", c.name},
-          {"value", c.value},
-          {"standard_error", c.standard_error},
-          {"ci_lower", c.ci_lower},
-          {"ci_upper", c.ci_upper},
-          {"paper", c.paper},
+  return {{"name", c.name},         {"value", c.value},       {"standard_error", c.standard_error},
+          {"ci_lower", c.ci_lower}, {"ci_upper", c.ci_upper}, {"paper", c.paper},
           {"unit", c.unit}};
 }
 
@@ -84,8 +80,8 @@ nlohmann::json to_json(const LinearFit& fit) {
           {"t_quantile", fit.t_quantile},
           {"condition_number", fit.condition_number},
           {"fitted", std::vector<double>(fit.fitted.data(), fit.fitted.data() + fit.fitted.size())},
-          {"residuals", std::vector<double>(fit.residuals.data(),
-                                            fit.residuals.data() + fit.residuals.size())}};
+          {"residuals",
+           std::vector<double>(fit.residuals.data(), fit.residuals.data() + fit.residuals.size())}};
 }
 
 nlohmann::json to_json(const NonlinearFit& fit) {
@@ -98,14 +94,19 @@ nlohmann::json to_json(const NonlinearFit& fit) {
                      {"ci_lower", fit.ci_lower[j]},
                      {"ci_upper", fit.ci_upper[j]}});
   }
-  return {{"response", fit.response},   {"model", fit.model},
-          {"coefficients", coefs},      {"covariance", fit.covariance},
+  return {{"response", fit.response},
+          {"model", fit.model},
+          {"coefficients", coefs},
+          {"covariance", fit.covariance},
           {"goodness", to_json(fit.goodness)},
           {"observations", fit.observations},
           {"parameters", fit.parameters},
-          {"dof", fit.dof},             {"iterations", fit.iterations},
-          {"converged", fit.converged}, {"message", fit.message},
-          {"confidence", fit.confidence}, {"t_quantile", fit.t_quantile}};
+          {"dof", fit.dof},
+          {"iterations", fit.iterations},
+          {"converged", fit.converged},
+          {"message", fit.message},
+          {"confidence", fit.confidence},
+          {"t_quantile", fit.t_quantile}};
 }
 
 nlohmann::json to_json(const RestitutionLawFit& fit) {
@@ -142,6 +143,7 @@ nlohmann::json to_json(const YieldVelocityFit& fit) {
           {"c", to_json(fit.c)},
           {"m", to_json(fit.m)},
           {"K", to_json(fit.combined)},
+          {"K_fixed_exponents", to_json(fit.combined_fixed)},
           {"n_one_step", to_json(fit.n_joint)},
           {"m_one_step", to_json(fit.m_joint)},
           {"K_two_step", fit.combined_two_step},
@@ -167,8 +169,11 @@ nlohmann::json fit_paper_forms(const ResultsTable& table, const PaperFitOptions&
     out["yield_velocity"] = to_json(fit_yield_velocity(yv, options));
     nlohmann::json pts = nlohmann::json::array();
     for (const auto& s : yv) {
-      pts.push_back({{"case", s.case_id}, {"sphere_rho", s.sphere_rho}, {"E_star", s.E_star},
-                     {"sigma_y", s.sigma_y}, {"v_y", s.v_y}});
+      pts.push_back({{"case", s.case_id},
+                     {"sphere_rho", s.sphere_rho},
+                     {"E_star", s.E_star},
+                     {"sigma_y", s.sigma_y},
+                     {"v_y", s.v_y}});
     }
     out["yield_velocity"]["samples"] = pts;
   }

@@ -14,8 +14,8 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-Coefficient coefficient(const LinearFit& fit, Eigen::Index j, std::string name, double paper,
-                        std::string unit) {
+Coefficient coefficient(
+    const LinearFit& fit, Eigen::Index j, std::string name, double paper, std::string unit) {
   Coefficient c;
   c.name = std::move(name);
   c.value = fit.coefficients[j];
@@ -28,8 +28,8 @@ Coefficient coefficient(const LinearFit& fit, Eigen::Index j, std::string name, 
 }
 
 /// exp of a log-space coefficient: value exp(x), interval exp(x -+ t se), se by the delta method.
-Coefficient exp_coefficient(const LinearFit& fit, Eigen::Index j, std::string name, double paper,
-                            std::string unit) {
+Coefficient exp_coefficient(
+    const LinearFit& fit, Eigen::Index j, std::string name, double paper, std::string unit) {
   Coefficient c = coefficient(fit, j, std::move(name), paper, std::move(unit));
   c.value = std::exp(fit.coefficients[j]);
   c.standard_error = c.value * fit.standard_errors[j];
@@ -48,14 +48,19 @@ Eigen::VectorXd to_vector(const std::vector<double>& v) {
 
 }  // namespace
 
-double crossing_yield_velocity(double alpha, double beta, double slope, double sphere_rho,
-                               double E_star, double sigma_y) {
+double crossing_yield_velocity(
+    double alpha, double beta, double slope, double sphere_rho, double E_star, double sigma_y) {
   const double ln_k1 = (1.0 - alpha - beta * std::log(sigma_y / E_star)) / slope;
   return std::sqrt(E_star / (sphere_rho * std::exp(ln_k1)));
 }
 
-double log_law_restitution(double alpha, double beta, double slope, double sphere_rho,
-                           double E_star, double sigma_y, double velocity) {
+double log_law_restitution(double alpha,
+                           double beta,
+                           double slope,
+                           double sphere_rho,
+                           double E_star,
+                           double sigma_y,
+                           double velocity) {
   const double v_y = crossing_yield_velocity(alpha, beta, slope, sphere_rho, E_star, sigma_y);
   if (velocity < v_y) return 1.0;
   const double e = alpha + beta * std::log(sigma_y / E_star) +
@@ -63,8 +68,8 @@ double log_law_restitution(double alpha, double beta, double slope, double spher
   return std::clamp(e, 0.0, 1.0);
 }
 
-double power_law_yield_velocity(double K, double n, double m, double sphere_rho, double E_star,
-                                double sigma_y) {
+double power_law_yield_velocity(
+    double K, double n, double m, double sphere_rho, double E_star, double sigma_y) {
   return std::sqrt(K * std::pow(sigma_y, n) * std::pow(E_star, m) / sphere_rho);
 }
 
@@ -76,8 +81,8 @@ RestitutionLawFit fit_restitution_law(const std::vector<RestitutionSample>& samp
   // plastic, finite points grouped by case
   std::map<std::string, std::vector<const RestitutionSample*>> by_case;
   for (const auto& s : samples) {
-    const bool finite = std::isfinite(s.e) && s.velocity > 0 && s.sphere_rho > 0 &&
-                        s.E_star > 0 && s.sigma_y > 0;
+    const bool finite =
+        std::isfinite(s.e) && s.velocity > 0 && s.sphere_rho > 0 && s.E_star > 0 && s.sigma_y > 0;
     if (!finite || s.e >= 1.0 - options.plastic_tolerance || s.e <= 0.0) {
       ++out.points_excluded;
       continue;
@@ -133,8 +138,8 @@ RestitutionLawFit fit_restitution_law(const std::vector<RestitutionSample>& samp
     ci.k2 = pts.front()->k2();
     ci.a = coefficient(fit_i, c, "a[" + id + "]", kNaN, "-");
     ci.points = static_cast<int>(pts.size());
-    ci.v_cross = std::sqrt(ci.E_star /
-                           (ci.sphere_rho * std::exp((1.0 - ci.a.value) / out.slope.value)));
+    ci.v_cross =
+        std::sqrt(ci.E_star / (ci.sphere_rho * std::exp((1.0 - ci.a.value) / out.slope.value)));
     out.cases.push_back(ci);
     ++c;
   }
@@ -191,9 +196,8 @@ YieldVelocityFit fit_yield_velocity(const std::vector<YieldVelocitySample>& samp
   // E* groups (relative tolerance 1e-9)
   std::vector<double> groups;
   for (const auto& s : samples) {
-    const bool known = std::any_of(groups.begin(), groups.end(), [&](double g) {
-      return std::abs(g - s.E_star) <= 1e-9 * g;
-    });
+    const bool known = std::any_of(groups.begin(), groups.end(),
+                                   [&](double g) { return std::abs(g - s.E_star) <= 1e-9 * g; });
     if (!known) groups.push_back(s.E_star);
   }
   std::sort(groups.begin(), groups.end());
@@ -254,14 +258,31 @@ YieldVelocityFit fit_yield_velocity(const std::vector<YieldVelocitySample>& samp
     const LinearFit fit_iv = fit_linear(X4, y4, lin4);
     out.c = exp_coefficient(fit_iv, 0, "c", PaperConstants::kC, "Pa");
     out.m = coefficient(fit_iv, 1, "m", PaperConstants::kExponentM, "-");
-    out.form_iv = goodness_of_fit(y4.array().exp().matrix(), fit_iv.fitted.array().exp().matrix(),
-                                  2);
-    out.combined_two_step = out.c.value * std::pow(options.sigma0, -out.n.value) *
-                            std::pow(options.E0, -out.m.value);
+    out.form_iv =
+        goodness_of_fit(y4.array().exp().matrix(), fit_iv.fitted.array().exp().matrix(), 2);
+    out.combined_two_step =
+        out.c.value * std::pow(options.sigma0, -out.n.value) * std::pow(options.E0, -out.m.value);
   } else {
     out.c = nan_coefficient("c", PaperConstants::kC, "Pa");
     out.m = nan_coefficient("m", PaperConstants::kExponentM, "-");
     out.combined_two_step = kNaN;
+  }
+
+  // K with the paper's exponents: ln(rho v_y^2) - 4.5 ln sigma_y + 3.5 ln E* = ln K
+  {
+    const Eigen::MatrixXd ones = Eigen::MatrixXd::Ones(n, 1);
+    Eigen::VectorXd y6(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const auto& s = samples[static_cast<std::size_t>(i)];
+      y6[i] = y[i] - PaperConstants::kExponentN * std::log(s.sigma_y) -
+              PaperConstants::kExponentM * std::log(s.E_star);
+    }
+    LinearFitOptions lin6;
+    lin6.confidence = options.confidence;
+    lin6.names = {"ln K"};
+    out.combined_fixed =
+        exp_coefficient(fit_linear(ones, y6, lin6), 0, "K (n = 4.5, m = -3.5 fixed)",
+                        PaperConstants::kCombined, "-");
   }
 
   // one-step: ln(rho v_y^2) = ln K + n ln sigma_y + m ln E*, needs >= 2 distinct E*

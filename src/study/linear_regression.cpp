@@ -104,7 +104,8 @@ LinearFit fit_linear(const Eigen::MatrixXd& design,
 
   // (X^T X)^-1 = D V S^-2 V^T D
   const Eigen::MatrixXd vs = svd.matrixV() * sv.cwiseInverse().asDiagonal();
-  const Eigen::MatrixXd unscaled_cov = scale.asDiagonal() * (vs * vs.transpose()) * scale.asDiagonal();
+  const Eigen::MatrixXd unscaled_cov =
+      scale.asDiagonal() * (vs * vs.transpose()) * scale.asDiagonal();
   const double s2 = fit.goodness.residual_sum_squares / static_cast<double>(fit.dof);
   fit.covariance = s2 * unscaled_cov;
   fit.standard_errors = fit.covariance.diagonal().cwiseSqrt();

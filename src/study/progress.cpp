@@ -53,6 +53,13 @@ void ProgressBar::update(int done, int failed, double mean_case_wall_s, bool for
   if (force || !drawn_ || since >= (terminal_ ? 0.2 : 5.0)) draw();
 }
 
+void ProgressBar::tick() {
+  if (!terminal_) return;
+  const double since =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_draw_).count();
+  if (since >= 1.0) draw();
+}
+
 void ProgressBar::finish() {
   if (out_ == nullptr) return;
   draw();

@@ -41,15 +41,15 @@ const std::string kOnsetStudy = "yield_onset";
 const std::vector<std::string> kCurveModels = {"ma2023", "thornton1997", "wu2003", "jg1", "jg2"};
 
 double now_s() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 fs::path studies_root(const fs::path& dir) {
   return dir.empty() ? fs::path(CORLAB_STUDIES_DIR) : dir;
 }
 
-fs::path spec_file(const fs::path& studies_dir, const std::string& preset,
+fs::path spec_file(const fs::path& studies_dir,
+                   const std::string& preset,
                    const std::string& study) {
   return studies_root(studies_dir) / preset / (study + ".toml");
 }
@@ -155,8 +155,8 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
       ++ran;
       if (opt.progress) {
         std::lock_guard lock(log);
-        std::fprintf(stderr, "corlab: %s %s: e = %.4f (%.1f s)\n", spec.name.c_str(),
-                     c.id.c_str(), r.e, r.wall_s);
+        std::fprintf(stderr, "corlab: %s %s: e = %.4f (%.1f s)\n", spec.name.c_str(), c.id.c_str(),
+                     r.e, r.wall_s);
       }
     } catch (const std::exception& err) {
       ++failed;
@@ -165,12 +165,9 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
                    err.what());
     }
   });
-  return {{"kind", "history"},
-          {"total", cases.size()},
-          {"already_done", cases.size() - todo.size()},
-          {"ran", ran.load()},
-          {"failed", failed.load()},
-          {"wall_s", now_s() - t0}};
+  return {
+      {"kind", "history"}, {"total", cases.size()},   {"already_done", cases.size() - todo.size()},
+      {"ran", ran.load()}, {"failed", failed.load()}, {"wall_s", now_s() - t0}};
 }
 
 json run_sweep_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
@@ -179,10 +176,9 @@ json run_sweep_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
   so.progress = opt.progress;
   so.cancel = opt.cancel;
   const SweepSummary s = run_sweep(spec, dir, so);
-  return {{"kind", "sweep"},          {"total", s.total},   {"already_done", s.already_done},
-          {"ran", s.ran},             {"failed", s.failed}, {"not_separated", s.not_separated},
-          {"wall_s", s.wall_s},       {"workers", s.workers},
-          {"interrupted", s.interrupted}};
+  return {{"kind", "sweep"},    {"total", s.total},     {"already_done", s.already_done},
+          {"ran", s.ran},       {"failed", s.failed},   {"not_separated", s.not_separated},
+          {"wall_s", s.wall_s}, {"workers", s.workers}, {"interrupted", s.interrupted}};
 }
 
 /// Bisection on the yield-onset velocity per case; every probe goes to probes.csv (resume).
@@ -193,8 +189,7 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
   const auto cases = spec.expand();
   const OnsetOptions options = onset_options(opt.preset);
   const fs::path probes_file = dir / "probes.csv";
-  const std::vector<std::string> header{"case_id", "velocity", "plastic_strain_max", "e",
-                                        "wall_s"};
+  const std::vector<std::string> header{"case_id", "velocity", "plastic_strain_max", "e", "wall_s"};
   std::map<std::pair<std::string, std::string>, OnsetProbe> cache;
   if (fs::exists(probes_file)) {
     const ResultsTable t = read_results(probes_file);
@@ -244,9 +239,9 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
       std::fprintf(stderr, "corlab: yield_onset %s failed: %s\n", c.id.c_str(), err.what());
     }
   });
-  return {{"kind", "onset"},       {"total", cases.size()}, {"ran", ran.load()},
-          {"failed", failed.load()}, {"wall_s", now_s() - t0},
-          {"options", onset_options_json(options)}};
+  return {{"kind", "onset"},        {"total", cases.size()},
+          {"ran", ran.load()},      {"failed", failed.load()},
+          {"wall_s", now_s() - t0}, {"options", onset_options_json(options)}};
 }
 
 /// Case id -> config of a spec.
@@ -272,8 +267,11 @@ json yield_fit_or_error(const std::vector<YieldVelocitySample>& samples, YieldVe
     json j = to_json(*fit);
     json pts = json::array();
     for (const auto& s : samples) {
-      pts.push_back({{"case", s.case_id}, {"sphere_rho", s.sphere_rho}, {"E_star", s.E_star},
-                     {"sigma_y", s.sigma_y}, {"v_y", s.v_y}});
+      pts.push_back({{"case", s.case_id},
+                     {"sphere_rho", s.sphere_rho},
+                     {"E_star", s.E_star},
+                     {"sigma_y", s.sigma_y},
+                     {"v_y", s.v_y}});
     }
     j["samples"] = pts;
     return j;
@@ -283,8 +281,12 @@ json yield_fit_or_error(const std::vector<YieldVelocitySample>& samples, YieldVe
 }
 
 /// Our eq. 19: the fitted log law above our fitted power-law v_y, 1 below; clamped to [0, 1].
-double our_model(const RestitutionLawFit& law, const YieldVelocityFit* yv, double rho,
-                 double E_star, double sigma_y, double v) {
+double our_model(const RestitutionLawFit& law,
+                 const YieldVelocityFit* yv,
+                 double rho,
+                 double E_star,
+                 double sigma_y,
+                 double v) {
   const double e = law.alpha.value + law.beta.value * std::log(sigma_y / E_star) +
                    law.slope.value * std::log(E_star / (rho * v * v));
   double v_y = crossing_yield_velocity(law.alpha.value, law.beta.value, law.slope.value, rho,
@@ -299,10 +301,9 @@ double our_model(const RestitutionLawFit& law, const YieldVelocityFit* yv, doubl
 }  // namespace
 
 const std::vector<std::string>& reproduce_study_names() {
-  static const std::vector<std::string> names = {"verification_mesh", "verification_hertz",
-                                                 "table2",           "yield_velocity",
-                                                 "alumina",          "table4",
-                                                 "yield_onset"};
+  static const std::vector<std::string> names = {
+      "verification_mesh", "verification_hertz", "table2", "yield_velocity", "alumina", "table4",
+      "yield_onset"};
   return names;
 }
 
@@ -400,8 +401,8 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
       groups[group] = &c;
       double e_paper = kNaN;
       try {
-        e_paper = restitution::make_model("ma2023", c.sphere.material, c.substrate.material)
-                      .cor(v[i]);
+        e_paper =
+            restitution::make_model("ma2023", c.sphere.material, c.substrate.material).cor(v[i]);
       } catch (const std::exception&) {
       }
       const double e_ours =
@@ -438,8 +439,8 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
           const double es = effective_modulus(c->sphere.material, c->substrate.material);
           const double sy = *c->substrate.material.yield_stress;
           std::vector<double> ours;
-          for (double x : vel) ours.push_back(our_model(law, have_yv_fe ? &yv_fe : nullptr, rho,
-                                                        es, sy, x));
+          for (double x : vel)
+            ours.push_back(our_model(law, have_yv_fe ? &yv_fe : nullptr, rho, es, sy, x));
           models["ours"] = ours;
         }
         by_group[group] = {{"sphere", c->sphere.material.name},
@@ -488,8 +489,10 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
         double v_el = 0.0;
         double v_pl = std::numeric_limits<double>::infinity();
         for (const auto& p : probes) {
-          if (p.plastic) v_pl = std::min(v_pl, p.velocity);
-          else v_el = std::max(v_el, p.velocity);
+          if (p.plastic)
+            v_pl = std::min(v_pl, p.velocity);
+          else
+            v_el = std::max(v_el, p.velocity);
         }
         const bool bracketed = v_el > 0 && std::isfinite(v_pl) && v_el < v_pl;
         const double rho = c.config.sphere.material.density;
@@ -497,9 +500,8 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
         const double sy = c.config.substrate.material.yield_stress.value_or(kNaN);
         json probes_json = json::array();
         for (const auto& p : probes) {
-          probes_json.push_back({{"velocity", p.velocity},
-                                 {"plastic_strain_max", p.plastic_strain_max},
-                                 {"e", p.e}});
+          probes_json.push_back(
+              {{"velocity", p.velocity}, {"plastic_strain_max", p.plastic_strain_max}, {"e", p.e}});
         }
         onset.push_back(
             {{"case_id", c.id},
@@ -512,12 +514,11 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
              {"v_onset", bracketed ? std::sqrt(v_el * v_pl) : kNaN},
              {"bracketed", bracketed},
              {"v_hertz_onset", hertz_yield_onset_velocity(rho, es, sy)},
-             {"v_y_paper_eq18", power_law_yield_velocity(PaperConstants::kCombined, 4.5, -3.5, rho,
-                                                         es, sy)},
+             {"v_y_paper_eq18",
+              power_law_yield_velocity(PaperConstants::kCombined, 4.5, -3.5, rho, es, sy)},
              {"v_y_ours", have_yv_fe && std::isfinite(yv_fe.combined.value)
-                              ? power_law_yield_velocity(yv_fe.combined.value,
-                                                         yv_fe.n_joint.value, yv_fe.m_joint.value,
-                                                         rho, es, sy)
+                              ? power_law_yield_velocity(yv_fe.combined.value, yv_fe.n_joint.value,
+                                                         yv_fe.m_joint.value, rho, es, sy)
                               : kNaN},
              {"probes", probes_json}});
       }
@@ -536,7 +537,8 @@ json reproduce(const ReproduceOptions& opt) {
   const auto& names = reproduce_study_names();
   for (const auto& name : opt.only) {
     if (std::find(names.begin(), names.end(), name) == names.end()) {
-      throw_invalid("--only", name, "one of the study names (" + fmt::format("{}", fmt::join(names, ", ")) + ")");
+      throw_invalid("--only", name,
+                    "one of the study names (" + fmt::format("{}", fmt::join(names, ", ")) + ")");
     }
   }
   auto selected = [&](const std::string& name) {
@@ -603,13 +605,12 @@ json reproduce(const ReproduceOptions& opt) {
   const double tf = now_s();
   out["fits"] = fit_outputs(opt.out_dir, opt.studies_dir, opt.preset);
   out["fit_wall_s"] = now_s() - tf;
-  out["paper"] = {{"slope", PaperConstants::kSlope},     {"alpha", PaperConstants::kAlpha},
-                  {"beta", PaperConstants::kBeta},       {"n", PaperConstants::kExponentN},
-                  {"m", PaperConstants::kExponentM},     {"c", PaperConstants::kC},
-                  {"K", PaperConstants::kCombined},      {"sigma0", PaperConstants::kSigma0},
-                  {"E0", PaperConstants::kE0},
-                  {"energy_loss_5ms_J", 12.61},          {"hysteresis_area_5ms_J", 12.63},
-                  {"hourglass_fraction", 0.000693}};
+  out["paper"] = {{"slope", PaperConstants::kSlope}, {"alpha", PaperConstants::kAlpha},
+                  {"beta", PaperConstants::kBeta},   {"n", PaperConstants::kExponentN},
+                  {"m", PaperConstants::kExponentM}, {"c", PaperConstants::kC},
+                  {"K", PaperConstants::kCombined},  {"sigma0", PaperConstants::kSigma0},
+                  {"E0", PaperConstants::kE0},       {"energy_loss_5ms_J", 12.61},
+                  {"hysteresis_area_5ms_J", 12.63},  {"hourglass_fraction", 0.000693}};
   write_text_atomic(opt.out_dir / "fit.json", out.dump(1));
   return out;
 }

@@ -250,6 +250,10 @@ void Recorder::record(const Outcome& outcome) {
   if (progress_) progress_->update(already_done_ + ran_, failed_, wall_sum_ / ran_);
 }
 
+void Recorder::tick() {
+  if (progress_) progress_->tick();
+}
+
 void Recorder::finish() {
   if (progress_) progress_->finish();
 }
@@ -313,6 +317,7 @@ SweepSummary run_sweep(const SweepSpec& spec,
       for (const auto& outcome : pool.take(std::chrono::milliseconds(200))) {
         recorder.record(outcome);
       }
+      recorder.tick();
       if (stopped) break;
     }
     pool.join();

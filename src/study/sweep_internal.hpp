@@ -111,6 +111,8 @@ class Recorder {
  public:
   Recorder(const std::filesystem::path& csv, const Plan& plan, int workers, bool progress);
   void record(const Outcome& outcome);
+  /// Lets a terminal progress bar advance its clock between finished cases.
+  void tick();
   void finish();
   SweepSummary summary(double wall_s, bool cancelled) const;
 

@@ -148,6 +148,7 @@ SweepSummary coordinate(const Plan& plan,
       const bool stopped = pool.stopped();  // before take(): no local outcome is missed
       const auto outcomes = pool.take(message ? std::chrono::milliseconds(0) : kPoll);
       for (const auto& outcome : outcomes) recorder.record(outcome);
+      recorder.tick();
       if (stopped && workers_done == size - 1 && outstanding == 0) break;
       if (stopped && !message && outcomes.empty()) std::this_thread::sleep_for(kPoll);
     }

@@ -3,6 +3,7 @@
 // the solver is deterministic across thread counts, and a cancelled sweep resumes to the same
 // table.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <filesystem>
@@ -18,7 +19,8 @@ namespace fs = std::filesystem;
 const fs::path kSpec = CORLAB_SOURCE_DIR "/tests/data/sweeps/tiny.toml";
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("corlab_sweep_solver_" + name);
+  const fs::path dir = fs::temp_directory_path() /
+                       ("corlab_sweep_solver_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(dir);
   return dir;
 }

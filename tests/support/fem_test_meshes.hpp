@@ -9,8 +9,8 @@ namespace corlab::fem::testing {
 
 /// Structured nr x nz block of quads on [r0, r0 + w] x [z0, z0 + h], counter-clockwise, appended
 /// to `mesh` as `body`. Returns the index of its first node; node (i, j) is first + j (nr+1) + i.
-inline int add_block(Mesh& mesh, Body body, double r0, double z0, double w, double h, int nr,
-                     int nz) {
+inline int add_block(
+    Mesh& mesh, Body body, double r0, double z0, double w, double h, int nr, int nz) {
   const int first = mesh.num_nodes();
   for (int j = 0; j <= nz; ++j) {
     for (int i = 0; i <= nr; ++i) {

@@ -2,7 +2,7 @@
 /// @file error.hpp
 /// Errors for bad user input. Every invalid value is reported on one line that names the field,
 /// the value and the violated constraint, e.g.
-///   invalid sphere.E = -2e+11: must be > 0 [Pa]
+///   invalid sphere.E = -200000000000: must be > 0 [Pa]
 /// The CLI turns an InputError into that line on stderr and exit code 2; Python sees ValueError.
 
 #include <stdexcept>

@@ -10,8 +10,9 @@
 ///   Br_I = int r dN_I/dr dA,  Bz_I = int r dN_I/dz dA,  H_I = int N_I dA,
 /// all exact for a straight-edged bilinear quad (edge integrals, see docs/theory/solver.md), so
 ///   d_rr = sum Br_I v_rI / Omega,  d_zz = sum Bz_I v_zI / Omega,  d_tt = sum H_I v_rI / Omega,
-///   d_rz = 1/2 sum (Bz_I v_rI + Br_I v_zI) / Omega,  spin w = 1/2 sum (Bz_I v_rI - Br_I v_zI)/Omega,
-///   f_rI = 2 pi (Br_I s_rr + Bz_I s_rz + H_I s_tt),  f_zI = 2 pi (Bz_I s_zz + Br_I s_rz).
+///   d_rz = 1/2 sum (Bz_I v_rI + Br_I v_zI) / Omega,  spin w = 1/2 sum (Bz_I v_rI - Br_I
+///   v_zI)/Omega, f_rI = 2 pi (Br_I s_rr + Bz_I s_rz + H_I s_tt),  f_zI = 2 pi (Bz_I s_zz + Br_I
+///   s_rz).
 /// These reproduce every linear velocity field exactly (hoop included) and keep a uniform
 /// hydrostatic stress in equilibrium on distorted meshes; the centroid formulas (rbar, b at the
 /// centroid) do not (measured: docs/theory/solver.md). The planar centroid gradients b_r, b_z
@@ -30,13 +31,13 @@ namespace corlab::fem {
 /// purpose (quad4_geometry sets every entry): zero-filling them would block the vectorisation of
 /// the element loop across elements.
 struct Quad4Geometry {
-  double area = 0.0;    ///< A, area in the r-z plane [m^2]
-  double omega = 0.0;   ///< Omega = int r dA, volume per radian [m^3]; volume V = 2 pi Omega
-  double br[4];    ///< Br_I = int r dN_I/dr dA [m^2]
-  double bz[4];    ///< Bz_I = int r dN_I/dz dA [m^2]
-  double hoop[4];  ///< H_I = int N_I dA [m^2]
-  double pr[4];    ///< planar centroid gradient dN_I/dr [1/m]
-  double pz[4];    ///< planar centroid gradient dN_I/dz [1/m]
+  double area = 0.0;   ///< A, area in the r-z plane [m^2]
+  double omega = 0.0;  ///< Omega = int r dA, volume per radian [m^3]; volume V = 2 pi Omega
+  double br[4];        ///< Br_I = int r dN_I/dr dA [m^2]
+  double bz[4];        ///< Bz_I = int r dN_I/dz dA [m^2]
+  double hoop[4];      ///< H_I = int N_I dA [m^2]
+  double pr[4];        ///< planar centroid gradient dN_I/dr [1/m]
+  double pz[4];        ///< planar centroid gradient dN_I/dz [1/m]
 };
 
 /// Rate of deformation d [1/s] and in-plane spin w = W_rz = 1/2 (dv_r/dz - dv_z/dr) [1/s].
@@ -75,9 +76,9 @@ inline Quad4Geometry quad4_geometry(const double* r, const double* z) {
   g.hoop[2] = j0 + j1 + j2;
   g.hoop[3] = j0 - j1 + j2;
   g.omega = g.hoop[0] * r[0] + g.hoop[1] * r[1] + g.hoop[2] * r[2] + g.hoop[3] * r[3];
-  // Edge integrals int N_I r n ds over the two edges at node I, edge (a, b): n ds = (dz, -dr),
-  // int_edge N_a r ds = L (2 r_a + r_b) / 6. Then Br_I = int d(N_I r)/dr dA - H_I, Bz_I.
-  #pragma GCC unroll 4
+// Edge integrals int N_I r n ds over the two edges at node I, edge (a, b): n ds = (dz, -dr),
+// int_edge N_a r ds = L (2 r_a + r_b) / 6. Then Br_I = int d(N_I r)/dr dA - H_I, Bz_I.
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) {
     const int n = (i + 1) & 3;
     const int p = (i + 3) & 3;
@@ -92,7 +93,7 @@ inline Quad4Geometry quad4_geometry(const double* r, const double* z) {
 /// Rate of deformation and spin from nodal velocities vr[4], vz[4] [m/s].
 inline StrainRate quad4_strain_rate(const Quad4Geometry& g, const double* vr, const double* vz) {
   double srr = 0.0, szz = 0.0, stt = 0.0, sa = 0.0, sb = 0.0;
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) {
     srr += g.br[i] * vr[i];
     szz += g.bz[i] * vz[i];
@@ -118,7 +119,7 @@ inline void quad4_internal_forces(const Quad4Geometry& g,
                                   double* fr,
                                   double* fz) {
   constexpr double kTwoPi = 2.0 * units::kPi;
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) {
     fr[i] = kTwoPi * (g.br[i] * s.rr + g.bz[i] * s.rz + g.hoop[i] * s.tt);
     fz[i] = kTwoPi * (g.bz[i] * s.zz + g.br[i] * s.rz);
@@ -128,7 +129,7 @@ inline void quad4_internal_forces(const Quad4Geometry& g,
 /// Sum over the nodes of b_r^2 + b_z^2 of the planar centroid gradients [1/m^2].
 inline double quad4_gradient_norm2(const Quad4Geometry& g) {
   double s = 0.0;
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) s += g.pr[i] * g.pr[i] + g.pz[i] * g.pz[i];
   return s;
 }

@@ -16,22 +16,15 @@ namespace corlab::fem {
 
 /// Viscous mean stress s_bv [Pa] (negative in compression) for the volumetric strain rate
 /// eps_vol_rate [1/s], density rho [kg/m^3], wave speed c_d [m/s], length L_e [m].
-inline double bulk_viscous_stress(double eps_vol_rate,
-                                  double rho,
-                                  double wave_speed,
-                                  double length,
-                                  double b1,
-                                  double b2) {
+inline double bulk_viscous_stress(
+    double eps_vol_rate, double rho, double wave_speed, double length, double b1, double b2) {
   const double compression = std::max(-eps_vol_rate, 0.0);
   return rho * length * eps_vol_rate * (b1 * wave_speed + b2 * b2 * length * compression);
 }
 
 /// Fraction of critical damping of the highest mode, xi [-].
-inline double bulk_viscous_damping_ratio(double eps_vol_rate,
-                                         double wave_speed,
-                                         double length,
-                                         double b1,
-                                         double b2) {
+inline double bulk_viscous_damping_ratio(
+    double eps_vol_rate, double wave_speed, double length, double b1, double b2) {
   const double compression = std::max(-eps_vol_rate, 0.0);
   return b1 + b2 * b2 * length * compression / wave_speed;
 }

@@ -15,11 +15,14 @@
 namespace corlab::fem {
 
 /// Hourglass shape vector gamma_I [-] of the element (planar gradients in g, coordinates r, z).
-inline void hourglass_shape(const Quad4Geometry& g, const double* r, const double* z, double* gamma) {
+inline void hourglass_shape(const Quad4Geometry& g,
+                            const double* r,
+                            const double* z,
+                            double* gamma) {
   const double hr = r[0] - r[1] + r[2] - r[3];
   const double hz = z[0] - z[1] + z[2] - z[3];
   constexpr double h[4] = {1.0, -1.0, 1.0, -1.0};
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) gamma[i] = 0.25 * (h[i] - hr * g.pr[i] - hz * g.pz[i]);
 }
 
@@ -43,7 +46,7 @@ inline double hourglass_update(const double* gamma,
                                double* fz) {
   double rate_r = 0.0;
   double rate_z = 0.0;
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) {
     rate_r += gamma[i] * vr[i];
     rate_z += gamma[i] * vz[i];
@@ -53,7 +56,7 @@ inline double hourglass_update(const double* gamma,
   const double work = 0.5 * dt * ((q_r + new_r) * rate_r + (q_z + new_z) * rate_z);
   q_r = new_r;
   q_z = new_z;
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) {
     fr[i] += q_r * gamma[i];
     fz[i] += q_z * gamma[i];

@@ -35,8 +35,9 @@ struct J2Plasticity {
 
   /// What one update did.
   struct Increment {
-    double d_eps_p = 0.0;       ///< equivalent plastic strain increment [-]
-    double plastic_work = 0.0;  ///< plastic dissipation per unit volume, trapezoid in sigma_y [J/m^3]
+    double d_eps_p = 0.0;  ///< equivalent plastic strain increment [-]
+    double plastic_work =
+        0.0;  ///< plastic dissipation per unit volume, trapezoid in sigma_y [J/m^3]
   };
 
   /// From a material description (elastic when it has no yield stress).
@@ -68,7 +69,8 @@ struct J2Plasticity {
     const double srr = stress.rr - p;
     const double szz = stress.zz - p;
     const double stt = stress.tt - p;
-    const double q = std::sqrt(1.5 * (srr * srr + szz * szz + stt * stt) + 3.0 * stress.rz * stress.rz);
+    const double q =
+        std::sqrt(1.5 * (srr * srr + szz * szz + stt * stt) + 3.0 * stress.rz * stress.rz);
     const double sy = flow_stress(state);
     // Branch-free (vectorisable) radial return: d_eps_p = <q - sigma_y>_+ / (3G + H), deviator
     // scaled by 1 - 3G d_eps_p / q (= 1 when elastic).

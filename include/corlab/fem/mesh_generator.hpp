@@ -40,7 +40,8 @@ MeshOptions mesh_options_for(const ImpactConfig& config);
 /// Generates both bodies (sphere elements first, then substrate elements).
 Mesh generate_impact_mesh(const MeshOptions& options);
 
-/// The mesh of a configuration: read_gmsh(config.mesh.file) when a file is given, else
+/// The mesh of a configuration: read_gmsh(config.mesh.file) when a file is given (the geometry
+/// is then the file's: sphere.radius, substrate.radius/depth and impact.gap are not applied), else
 /// generate_impact_mesh(mesh_options_for(config)).
 Mesh build_impact_mesh(const ImpactConfig& config);
 

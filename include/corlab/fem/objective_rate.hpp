@@ -1,8 +1,8 @@
 #pragma once
 /// @file objective_rate.hpp
 /// Incremental rotation of the stress for the Jaumann rate with the Hughes & Winget (1980,
-/// Int. J. Numer. Meth. Eng. 15:1862) algorithm: Q = (I - dW/2)^-1 (I + dW/2), sigma <- Q sigma Q^T.
-/// In axisymmetry the spin acts only in the r-z plane; the hoop component is untouched.
+/// Int. J. Numer. Meth. Eng. 15:1862) algorithm: Q = (I - dW/2)^-1 (I + dW/2), sigma <- Q sigma
+/// Q^T. In axisymmetry the spin acts only in the r-z plane; the hoop component is untouched.
 
 #include "corlab/fem/axisym_tensor.hpp"
 

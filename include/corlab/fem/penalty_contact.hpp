@@ -21,12 +21,8 @@ struct SegmentProjection {
 };
 
 /// Projects the slave (rs, zs) on the segment (ra, za) -> (rb, zb) [m].
-inline SegmentProjection project_on_segment(double rs,
-                                            double zs,
-                                            double ra,
-                                            double za,
-                                            double rb,
-                                            double zb) {
+inline SegmentProjection project_on_segment(
+    double rs, double zs, double ra, double za, double rb, double zb) {
   const double tr = rb - ra;
   const double tz = zb - za;
   const double len2 = tr * tr + tz * tz;

@@ -17,15 +17,14 @@ namespace corlab::fem {
 inline double characteristic_length(const Quad4Geometry& g) {
   double s = quad4_gradient_norm2(g);
   const double inv = 1.0 / g.omega;
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) s += g.hoop[i] * g.hoop[i] * inv * inv;
   return 1.0 / std::sqrt(s);
 }
 
 /// Critical step [s] of an element of length L_e [m], wave speed c_d [m/s], damping ratio xi [-].
 inline double element_stable_time_step(double length, double wave_speed, double damping_ratio) {
-  return length / wave_speed *
-         (std::sqrt(1.0 + damping_ratio * damping_ratio) - damping_ratio);
+  return length / wave_speed * (std::sqrt(1.0 + damping_ratio * damping_ratio) - damping_ratio);
 }
 
 }  // namespace corlab::fem

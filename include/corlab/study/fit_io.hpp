@@ -4,10 +4,9 @@
 /// the fit results (used by fit.json, `corlab fit` and the Python bindings).
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "corlab/study/fit_expression.hpp"
 #include "corlab/study/fit_paper.hpp"

@@ -20,15 +20,15 @@ namespace corlab::study {
 
 /// The paper's published values (Ma et al. 2023, eqs. 9, 11, 15, 17, 18).
 struct PaperConstants {
-  static constexpr double kSlope = 0.056;        ///< s, eq. 9 [-]
-  static constexpr double kAlpha = 1.16;         ///< alpha, eq. 11 [-]
-  static constexpr double kBeta = 0.253;         ///< beta, eq. 11 [-]
-  static constexpr double kExponentN = 4.5;      ///< n, eq. 15 [-]
-  static constexpr double kExponentM = -3.5;     ///< m, eq. 17 [-]
-  static constexpr double kC = 0.05;             ///< c, eq. 17 [Pa]
-  static constexpr double kCombined = 15.81;     ///< K, eq. 18 [Pa^(1-n-m)]
-  static constexpr double kSigma0 = 100e6;       ///< sigma0, eq. 14 [Pa]
-  static constexpr double kE0 = 100e9;           ///< E0*, eq. 16 [Pa]
+  static constexpr double kSlope = 0.056;     ///< s, eq. 9 [-]
+  static constexpr double kAlpha = 1.16;      ///< alpha, eq. 11 [-]
+  static constexpr double kBeta = 0.253;      ///< beta, eq. 11 [-]
+  static constexpr double kExponentN = 4.5;   ///< n, eq. 15 [-]
+  static constexpr double kExponentM = -3.5;  ///< m, eq. 17 [-]
+  static constexpr double kC = 0.05;          ///< c, eq. 17 [Pa]
+  static constexpr double kCombined = 15.81;  ///< K, eq. 18 [Pa^(1-n-m)]
+  static constexpr double kSigma0 = 100e6;    ///< sigma0, eq. 14 [Pa]
+  static constexpr double kE0 = 100e9;        ///< E0*, eq. 16 [Pa]
 };
 
 /// One simulated impact (a row of results.csv).
@@ -40,7 +40,7 @@ struct RestitutionSample {
   double E_star = 0.0;      ///< effective modulus E* [Pa]
   double sigma_y = 0.0;     ///< substrate yield stress [Pa]
   double k1() const { return E_star / (sphere_rho * velocity * velocity); }  ///< [-]
-  double k2() const { return sigma_y / E_star; }                            ///< [-]
+  double k2() const { return sigma_y / E_star; }                             ///< [-]
 };
 
 /// A fitted coefficient with its inference, next to the paper's value.
@@ -50,15 +50,15 @@ struct Coefficient {
   double standard_error = 0.0;
   double ci_lower = 0.0;
   double ci_upper = 0.0;
-  double paper = 0.0;    ///< published value (NaN if the paper gives none)
-  std::string unit;      ///< "-" or e.g. "Pa"
+  double paper = 0.0;  ///< published value (NaN if the paper gives none)
+  std::string unit;    ///< "-" or e.g. "Pa"
 };
 
 /// Options of the paper fits.
 struct PaperFitOptions {
-  double confidence = 0.95;         ///< level of the confidence intervals [-]
-  double plastic_tolerance = 1e-3;  ///< form (i) uses points with e < 1 - plastic_tolerance
-  int min_points_per_case = 2;      ///< a case with fewer plastic points is left out of (i)
+  double confidence = 0.95;                 ///< level of the confidence intervals [-]
+  double plastic_tolerance = 1e-3;          ///< form (i) uses points with e < 1 - plastic_tolerance
+  int min_points_per_case = 2;              ///< a case with fewer plastic points is left out of (i)
   double sigma0 = PaperConstants::kSigma0;  ///< [Pa]
   double E0 = PaperConstants::kE0;          ///< [Pa]
 };
@@ -72,7 +72,7 @@ struct CaseIntercept {
   double k2 = 0.0;          ///< [-]
   Coefficient a;            ///< intercept a_i [-]
   int points = 0;           ///< plastic points of the case
-  double v_cross = 0.0;     ///< e = 1 crossing of a_i + s ln k1: sqrt(E*/(rho exp((1-a_i)/s))) [m/s]
+  double v_cross = 0.0;  ///< e = 1 crossing of a_i + s ln k1: sqrt(E*/(rho exp((1-a_i)/s))) [m/s]
 };
 
 /// Forms (i) and (ii).
@@ -112,20 +112,23 @@ struct YieldGroup {
 
 /// Forms (iii) and (iv), and the combined constant of Ma eq. 18.
 struct YieldVelocityFit {
-  Coefficient n;                  ///< exponent of sigma_bar
-  std::vector<YieldGroup> groups; ///< b per E* (ascending E*)
-  Coefficient c;                  ///< [Pa]
-  Coefficient m;                  ///< exponent of E_bar
+  Coefficient n;                   ///< exponent of sigma_bar
+  std::vector<YieldGroup> groups;  ///< b per E* (ascending E*)
+  Coefficient c;                   ///< [Pa]
+  Coefficient m;                   ///< exponent of E_bar
   /// K of v_y^2 = K sigma_y^n E*^m / rho from the one-step regression
   /// ln(rho v_y^2) = ln K + n ln sigma_y + m ln E* (interval: exp of the ln K interval; K is far
   /// outside the data, at sigma_y = E* = 1 Pa, so its interval is wide). [Pa^(1-n-m)]
   Coefficient combined;
-  Coefficient n_joint;            ///< n of the one-step regression
-  Coefficient m_joint;            ///< m of the one-step regression
-  double combined_two_step = 0.0; ///< c sigma0^-n E0^-m from forms (iii) and (iv)
-  GoodnessOfFit form_iii;         ///< rho v_y^2 against b_g sigma_bar^n (original space)
-  GoodnessOfFit form_iv;          ///< b_g against c E_bar^m (original space)
-  GoodnessOfFit combined_v;       ///< v_y against sqrt(K sigma^n E*^m / rho)
+  /// K with the exponents fixed at the paper's n = 4.5, m = -3.5 (geometric mean of
+  /// rho v_y^2 sigma_y^-4.5 E*^3.5; directly comparable with the published 15.81) [-]
+  Coefficient combined_fixed;
+  Coefficient n_joint;             ///< n of the one-step regression
+  Coefficient m_joint;             ///< m of the one-step regression
+  double combined_two_step = 0.0;  ///< c sigma0^-n E0^-m from forms (iii) and (iv)
+  GoodnessOfFit form_iii;          ///< rho v_y^2 against b_g sigma_bar^n (original space)
+  GoodnessOfFit form_iv;           ///< b_g against c E_bar^m (original space)
+  GoodnessOfFit combined_v;        ///< v_y against sqrt(K sigma^n E*^m / rho)
   int points = 0;
 };
 
@@ -136,12 +139,8 @@ YieldVelocityFit fit_yield_velocity(const std::vector<YieldVelocitySample>& samp
 
 /// v_y where alpha + beta ln k2 + s ln k1 = 1 (the paper's back-calculation from Ma eq. 12):
 /// k1_y = exp((1 - alpha - beta ln k2)/s), v_y = sqrt(E*/(rho k1_y)) [m/s].
-double crossing_yield_velocity(double alpha,
-                               double beta,
-                               double slope,
-                               double sphere_rho,
-                               double E_star,
-                               double sigma_y);
+double crossing_yield_velocity(
+    double alpha, double beta, double slope, double sphere_rho, double E_star, double sigma_y);
 
 /// Ma eq. 12/19 with general constants: 1 below the crossing, the log law above, clamped to
 /// [0, 1].
@@ -154,7 +153,7 @@ double log_law_restitution(double alpha,
                            double velocity);
 
 /// Ma eq. 18 with general constants: sqrt(K sigma_y^n E*^m / rho) [m/s].
-double power_law_yield_velocity(double K, double n, double m, double sphere_rho, double E_star,
-                                double sigma_y);
+double power_law_yield_velocity(
+    double K, double n, double m, double sphere_rho, double E_star, double sigma_y);
 
 }  // namespace corlab::study

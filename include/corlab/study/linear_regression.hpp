@@ -7,7 +7,6 @@
 /// NIST StRD linear problem Norris).
 
 #include <Eigen/Dense>
-
 #include <string>
 #include <vector>
 
@@ -42,12 +41,12 @@ struct LinearFit {
   Eigen::VectorXd fitted;           ///< X b
   Eigen::VectorXd residuals;        ///< y - X b
   GoodnessOfFit goodness;
-  int observations = 0;  ///< n
-  int parameters = 0;    ///< p
-  int dof = 0;           ///< n - p
-  double confidence = 0.95;          ///< level of the intervals [-]
-  double t_quantile = 0.0;           ///< Student t quantile t_{(1+confidence)/2, dof}
-  double condition_number = 0.0;     ///< of the column-equilibrated design matrix [-]
+  int observations = 0;           ///< n
+  int parameters = 0;             ///< p
+  int dof = 0;                    ///< n - p
+  double confidence = 0.95;       ///< level of the intervals [-]
+  double t_quantile = 0.0;        ///< Student t quantile t_{(1+confidence)/2, dof}
+  double condition_number = 0.0;  ///< of the column-equilibrated design matrix [-]
 };
 
 /// Fits y = X b. Requires n > p, finite inputs and full column rank; throws InputError otherwise.

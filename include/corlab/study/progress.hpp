@@ -30,6 +30,8 @@ class ProgressBar {
   /// Records `done` finished cases (already-finished ones included), `failed` of them failed,
   /// the mean wall time [s] of the cases run here; redraws if due (or if `force`).
   void update(int done, int failed, double mean_case_wall_s, bool force = false);
+  /// Redraws a terminal line once a second so that the elapsed time moves between cases.
+  void tick();
   /// Final redraw and a line break on a terminal.
   void finish();
 

@@ -15,22 +15,21 @@
 
 #include <atomic>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace corlab::study {
 
 /// Options of reproduce().
 struct ReproduceOptions {
-  std::string preset = "quick";           ///< "quick" or "full" (subfolder of studies_dir)
-  std::filesystem::path out_dir;          ///< output directory (created)
-  std::filesystem::path studies_dir;      ///< empty = CORLAB_STUDIES_DIR (the source tree)
-  int jobs = 0;                           ///< runs at the same time; 0 = all cores
-  bool progress = true;                   ///< progress on stderr
-  std::string command_line;               ///< echoed into fit.json (the report shows it)
-  std::vector<std::string> only;          ///< run only these studies (empty = all)
+  std::string preset = "quick";               ///< "quick" or "full" (subfolder of studies_dir)
+  std::filesystem::path out_dir;              ///< output directory (created)
+  std::filesystem::path studies_dir;          ///< empty = CORLAB_STUDIES_DIR (the source tree)
+  int jobs = 0;                               ///< runs at the same time; 0 = all cores
+  bool progress = true;                       ///< progress on stderr
+  std::string command_line;                   ///< echoed into fit.json (the report shows it)
+  std::vector<std::string> only;              ///< run only these studies (empty = all)
   const std::atomic<bool>* cancel = nullptr;  ///< stop early (finished runs are kept)
 };
 

@@ -18,10 +18,10 @@ namespace corlab::study {
 
 /// Options of find_yield_onset().
 struct OnsetOptions {
-  double v_low = 0.01;       ///< lower end of the initial bracket [m/s] (expected elastic)
-  double v_high = 3.0;       ///< upper end of the initial bracket [m/s] (expected plastic)
-  int iterations = 7;        ///< bisection steps on ln v (bracket ratio shrinks as 2^-k in ln)
-  double threshold = 1e-6;   ///< plastic_strain_max above this counts as plastic [-]
+  double v_low = 0.01;      ///< lower end of the initial bracket [m/s] (expected elastic)
+  double v_high = 3.0;      ///< upper end of the initial bracket [m/s] (expected plastic)
+  int iterations = 7;       ///< bisection steps on ln v (bracket ratio shrinks as 2^-k in ln)
+  double threshold = 1e-6;  ///< plastic_strain_max above this counts as plastic [-]
 };
 
 /// One solver run of the bisection.
@@ -34,10 +34,10 @@ struct OnsetProbe {
 
 /// Result of find_yield_onset().
 struct OnsetResult {
-  double v_elastic = 0.0;  ///< highest velocity seen elastic [m/s]
-  double v_plastic = 0.0;  ///< lowest velocity seen plastic [m/s]
-  double v_onset = 0.0;    ///< geometric mean of the two [m/s]; NaN if not bracketed
-  bool bracketed = false;  ///< v_low elastic and v_high plastic
+  double v_elastic = 0.0;          ///< highest velocity seen elastic [m/s]
+  double v_plastic = 0.0;          ///< lowest velocity seen plastic [m/s]
+  double v_onset = 0.0;            ///< geometric mean of the two [m/s]; NaN if not bracketed
+  bool bracketed = false;          ///< v_low elastic and v_high plastic
   std::vector<OnsetProbe> probes;  ///< every run, in order
 };
 

@@ -35,8 +35,7 @@ TEST_P(Quad4Patch, GeometryIsExact) {
                            0.25 * (1 + xi) * (1 + eta), 0.25 * (1 - xi) * (1 + eta)};
       const double dxi[4] = {-0.25 * (1 - eta), 0.25 * (1 - eta), 0.25 * (1 + eta),
                              -0.25 * (1 + eta)};
-      const double deta[4] = {-0.25 * (1 - xi), -0.25 * (1 + xi), 0.25 * (1 + xi),
-                              0.25 * (1 - xi)};
+      const double deta[4] = {-0.25 * (1 - xi), -0.25 * (1 + xi), 0.25 * (1 + xi), 0.25 * (1 - xi)};
       double r = 0, rx = 0, re = 0, zx = 0, ze = 0;
       for (int i = 0; i < 4; ++i) {
         r += n[i] * el.r[i];

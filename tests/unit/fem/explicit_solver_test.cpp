@@ -46,8 +46,7 @@ TEST(ExplicitSolver, ElasticPunchIsStableAndConservesEnergy) {
   EXPECT_LE(r.e, 1.0 + 1e-6);
   EXPECT_EQ(r.energy_dissipated_plastic, 0.0);
   // Contact force integral = change of the punch momentum (F is the force on the sphere).
-  EXPECT_NEAR(r.hysteresis_area, r.energy_initial * (1.0 - r.e * r.e),
-              0.02 * r.energy_initial);
+  EXPECT_NEAR(r.hysteresis_area, r.energy_initial * (1.0 - r.e * r.e), 0.02 * r.energy_initial);
 }
 
 TEST(ExplicitSolver, PlasticPunchDissipates) {

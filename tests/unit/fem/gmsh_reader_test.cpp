@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -47,7 +48,7 @@ void check_example(const Mesh& m) {
   EXPECT_GT(s.min_jacobian, 0.0);  // counter-clockwise after reading
   EXPECT_GT(w.min_jacobian, 0.0);
   EXPECT_NEAR(w.area, 0.02 * 0.02, 1e-15);
-  EXPECT_NEAR(s.area, 0.5 * M_PI * 1e-4, 0.01 * 0.5 * M_PI * 1e-4);
+  EXPECT_NEAR(s.area, 0.5 * std::numbers::pi * 1e-4, 0.01 * 0.5 * std::numbers::pi * 1e-4);
   for (std::size_t e = 0; e < m.quads.size(); ++e)
     for (const int n : m.quads[e])
       EXPECT_EQ(m.node_body[static_cast<std::size_t>(n)], m.element_body[e]);

@@ -13,8 +13,13 @@ constexpr double kNu = 0.3;
 constexpr double kSy = 500e6;
 
 J2Plasticity steel(double hardening) {
-  Material m{.name = "t", .youngs_modulus = kE, .poisson_ratio = kNu, .density = 7850.0,
-             .yield_stress = kSy, .hardening_modulus = hardening, .source = ""};
+  Material m{.name = "t",
+             .youngs_modulus = kE,
+             .poisson_ratio = kNu,
+             .density = 7850.0,
+             .yield_stress = kSy,
+             .hardening_modulus = hardening,
+             .source = ""};
   return J2Plasticity::from(m);
 }
 
@@ -112,8 +117,13 @@ TEST(J2Plasticity, PurePressureNeverYields) {
 }
 
 TEST(J2Plasticity, ElasticMaterialNeverYields) {
-  Material m{.name = "e", .youngs_modulus = kE, .poisson_ratio = kNu, .density = 7850.0,
-             .yield_stress = std::nullopt, .hardening_modulus = 0.0, .source = ""};
+  Material m{.name = "e",
+             .youngs_modulus = kE,
+             .poisson_ratio = kNu,
+             .density = 7850.0,
+             .yield_stress = std::nullopt,
+             .hardening_modulus = 0.0,
+             .source = ""};
   const J2Plasticity mat = J2Plasticity::from(m);
   AxisymTensor s;
   J2Plasticity::State st;

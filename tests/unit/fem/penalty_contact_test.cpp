@@ -41,7 +41,8 @@ TEST(PenaltyContact, ForcesBalanceAndAreTheEnergyGradient) {
     xp[i] += hh;
     xm[i] -= hh;
     const double grad = (energy(xp[0], xp[1], xp[2], xp[3], xp[4], xp[5]) -
-                         energy(xm[0], xm[1], xm[2], xm[3], xm[4], xm[5])) / (2 * hh);
+                         energy(xm[0], xm[1], xm[2], xm[3], xm[4], xm[5])) /
+                        (2 * hh);
     EXPECT_NEAR(f[i], -grad, 1e-5 * std::abs(k * p.gap)) << "coordinate " << i;
   }
 }

@@ -22,18 +22,16 @@ TEST(FitExpression, NistMisra1aFromBothStartsMatchesCertifiedValues) {
         fit_expression("y ~ b1*(1-exp(-b2*x))", {{"b1", s[0]}, {"b2", s[1]}}, data);
     ASSERT_TRUE(fit.converged) << start << ": " << fit.message;
     // the task bar is >= 4 significant digits (Ceres' NIST criterion)
-    EXPECT_GE(test::significant_digits(fit.coefficients[0], nist.certified.at("b1")), 6.0)
-        << start;
-    EXPECT_GE(test::significant_digits(fit.coefficients[1], nist.certified.at("b2")), 6.0)
-        << start;
+    EXPECT_GE(test::significant_digits(fit.coefficients[0], nist.certified.at("b1")), 6.0) << start;
+    EXPECT_GE(test::significant_digits(fit.coefficients[1], nist.certified.at("b2")), 6.0) << start;
     EXPECT_GE(test::significant_digits(fit.standard_errors[0], nist.certified_sd.at("b1")), 4.0);
     EXPECT_GE(test::significant_digits(fit.standard_errors[1], nist.certified_sd.at("b2")), 4.0);
     EXPECT_GE(test::significant_digits(fit.goodness.residual_sum_squares,
                                        nist.certified.at("residual_sum_sq")),
               6.0);
-    EXPECT_GE(test::significant_digits(fit.goodness.residual_std_error,
-                                       nist.certified.at("residual_sd")),
-              6.0);
+    EXPECT_GE(
+        test::significant_digits(fit.goodness.residual_std_error, nist.certified.at("residual_sd")),
+        6.0);
     EXPECT_EQ(fit.dof, static_cast<int>(nist.certified.at("dof")));
   }
 }
@@ -52,9 +50,9 @@ TEST(FitExpression, RecoversTheRestitutionLawFromNoisySyntheticData) {
   }
   NonlinearFitOptions options;
   options.where = "e < 0.999";
-  const NonlinearFit fit =
-      fit_expression("e ~ alpha + beta*ln(k2) + s*ln(k1)", {{"alpha", 1}, {"beta", 0.1}, {"s", 0.1}},
-                     {{"e", e}, {"k1", k1}, {"k2", k2}}, options);
+  const NonlinearFit fit = fit_expression("e ~ alpha + beta*ln(k2) + s*ln(k1)",
+                                          {{"alpha", 1}, {"beta", 0.1}, {"s", 0.1}},
+                                          {{"e", e}, {"k1", k1}, {"k2", k2}}, options);
   ASSERT_TRUE(fit.converged) << fit.message;
   EXPECT_LT(fit.observations, static_cast<int>(e.size()));  // some points are elastic
   const double truth[] = {1.16, 0.253, 0.056};
@@ -71,8 +69,8 @@ TEST(FitExpression, PowerLawInOriginalSpace) {
     sigma.push_back(s);
     rv2.push_back(0.7 * std::pow(s, 4.5));
   }
-  const NonlinearFit fit =
-      fit_expression("rv2 = b * sigma^n", {{"b", 1.0}, {"n", 3.0}}, {{"rv2", rv2}, {"sigma", sigma}});
+  const NonlinearFit fit = fit_expression("rv2 = b * sigma^n", {{"b", 1.0}, {"n", 3.0}},
+                                          {{"rv2", rv2}, {"sigma", sigma}});
   ASSERT_TRUE(fit.converged) << fit.message;
   EXPECT_NEAR(fit.coefficients[0], 0.7, 1e-8);
   EXPECT_NEAR(fit.coefficients[1], 4.5, 1e-8);

@@ -25,8 +25,8 @@ std::vector<RestitutionSample> table2_like(double noise_sd, unsigned seed) {
     for (double sy : {300e6, 500e6, 700e6, 1000e6, 1300e6}) {
       for (double v : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 40.0, 70.0}) {
         RestitutionSample s{fmt_id(rho, sy), v, 0.0, rho, kEStar, sy};
-        s.e = std::min(1.0, 1.16 + 0.253 * std::log(s.k2()) + 0.056 * std::log(s.k1()) +
-                                noise(rng));
+        s.e =
+            std::min(1.0, 1.16 + 0.253 * std::log(s.k2()) + 0.056 * std::log(s.k1()) + noise(rng));
         out.push_back(s);
       }
     }
@@ -70,7 +70,8 @@ TEST(FitYieldVelocity, RecoversExponentsAndCombinedConstant) {
   for (double rho : {3925.0, 7850.0}) {
     for (double es : {50e9, 60e9, 63.8e9, 70e9, 80e9}) {
       for (double sy = 100e6; sy <= 600e6 + 1; sy += 100e6) {
-        samples.push_back({"c", rho, es, sy, power_law_yield_velocity(15.81, 4.5, -3.5, rho, es, sy)});
+        samples.push_back(
+            {"c", rho, es, sy, power_law_yield_velocity(15.81, 4.5, -3.5, rho, es, sy)});
       }
     }
   }
@@ -82,7 +83,28 @@ TEST(FitYieldVelocity, RecoversExponentsAndCombinedConstant) {
   EXPECT_NEAR(fit.c.value, 15.81 / std::pow(10.0, 2.5), 1e-9);
   EXPECT_NEAR(fit.combined.value, 15.81, 1e-6);
   EXPECT_NEAR(fit.combined_two_step, 15.81, 1e-6);
+  EXPECT_NEAR(fit.combined_fixed.value, 15.81, 1e-9);
   EXPECT_NEAR(fit.combined_v.max_relative_error, 0.0, 1e-9);
+}
+
+TEST(FitYieldVelocity, PaperBackCalculationGivesExactExponentsAndAbout15point9) {
+  // v_y from the paper's eq. 12 crossing: n = beta/s, m = 1 - beta/s exactly, and with the
+  // exponents fixed at 4.5/-3.5 the constant is 17.41 (sigma/E*)^0.018 ~ 15.9 (models.md 1.3)
+  std::vector<YieldVelocitySample> samples;
+  for (double rho : {3925.0, 7850.0}) {
+    for (double es : {50e9, 60e9, 63.8e9, 70e9, 80e9}) {
+      for (double sy = 100e6; sy <= 600e6 + 1; sy += 100e6) {
+        samples.push_back(
+            {"c", rho, es, sy, crossing_yield_velocity(1.16, 0.253, 0.056, rho, es, sy)});
+      }
+    }
+  }
+  const auto fit = fit_yield_velocity(samples);
+  EXPECT_NEAR(fit.n.value, 0.253 / 0.056, 1e-9);
+  EXPECT_NEAR(fit.m.value, 1.0 - 0.253 / 0.056, 1e-9);
+  EXPECT_NEAR(fit.combined.value, std::exp(0.16 / 0.056), 1e-6);  // 17.41
+  EXPECT_GT(fit.combined_fixed.value, 15.5);
+  EXPECT_LT(fit.combined_fixed.value, 16.3);
 }
 
 TEST(FitYieldVelocity, RejectsNonPositiveVelocityAndSingleYieldStress) {

@@ -1,12 +1,11 @@
 // find_yield_onset(): bisection with a fake solver whose onset is known.
-#include "corlab/study/yield_velocity.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
 
 #include "corlab/core/error.hpp"
+#include "corlab/study/yield_velocity.hpp"
 
 namespace corlab::study {
 namespace {
@@ -24,8 +23,8 @@ TEST(YieldOnset, BracketsAKnownOnsetWithinTheBisectionResolution) {
   o.v_low = 0.01;
   o.v_high = 3.0;
   o.iterations = 8;
-  const auto res = find_yield_onset(
-      fem::ImpactConfig{}, o, [&](const fem::ImpactConfig& c) { return fake(c, onset); });
+  const auto res = find_yield_onset(fem::ImpactConfig{}, o,
+                                    [&](const fem::ImpactConfig& c) { return fake(c, onset); });
   ASSERT_TRUE(res.bracketed);
   EXPECT_LE(res.v_elastic, onset);
   EXPECT_GE(res.v_plastic, onset);

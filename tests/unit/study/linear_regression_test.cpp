@@ -54,10 +54,10 @@ TEST(FitLinear, NistNorrisCertifiedValues) {
                                      nist.certified.at("residual_sum_sq")),
             9.0);
   EXPECT_GE(test::significant_digits(fit.goodness.r_squared, nist.certified.at("r_squared")), 9.0);
-  EXPECT_GE(test::significant_digits(fit.goodness.residual_std_error *
-                                         fit.goodness.residual_std_error,
-                                     nist.certified.at("mean_square_error")),
-            9.0);
+  EXPECT_GE(
+      test::significant_digits(fit.goodness.residual_std_error * fit.goodness.residual_std_error,
+                               nist.certified.at("mean_square_error")),
+      9.0);
   EXPECT_EQ(fit.dof, 34);
   EXPECT_EQ(fit.names[1], "B1");
   // intervals are b -+ t_{0.975,34} se

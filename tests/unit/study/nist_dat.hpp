@@ -13,8 +13,8 @@ namespace corlab::test {
 struct NistProblem {
   std::vector<double> y;
   std::vector<double> x;
-  std::map<std::string, double> certified;     ///< value per name
-  std::map<std::string, double> certified_sd;  ///< standard deviation per parameter
+  std::map<std::string, double> certified;            ///< value per name
+  std::map<std::string, double> certified_sd;         ///< standard deviation per parameter
   std::map<std::string, std::vector<double>> starts;  ///< "start1" -> values
 };
 

@@ -1,6 +1,7 @@
 // run_sweep machinery with injected runners (no solver): rows, resume, interruption, failures,
 // threads. The end-to-end run with the real solver is tests/regression/sweep_solver_test.cpp.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -38,7 +39,8 @@ name = "fake"
 )";
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("corlab_sweep_run_" + name);
+  const fs::path dir =
+      fs::temp_directory_path() / ("corlab_sweep_run_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(dir);
   return dir;
 }

@@ -1,0 +1,125 @@
+"""Fitting from Python: fit_linear (NIST Norris), fit_expression (NIST Misra1a, user forms),
+fit_paper (Ma et al. 2023 forms on a synthetic results.csv)."""
+import csv
+import math
+import pathlib
+
+import numpy as np
+import pytest
+
+import corlab
+
+NIST = pathlib.Path(__file__).resolve().parents[2] / "data" / "nist"
+
+
+def read_nist(name):
+    """(y, x, certified {name: (value, sd)}, starts {start1: [..]}) of data/nist/<name>.dat."""
+    y, x, cert, starts = [], [], {}, {}
+    for line in (NIST / name).read_text().splitlines():
+        tok = line.split()
+        if not tok:
+            continue
+        if tok[0] == "#":
+            if len(tok) > 3 and tok[1] == "certified":
+                sd = float(tok[5]) if len(tok) > 5 and tok[4] == "sd" else None
+                cert[tok[2]] = (float(tok[3]), sd)
+            elif len(tok) > 2 and tok[1].startswith("start"):
+                starts[tok[1]] = [float(v) for v in tok[3::2]]
+            continue
+        y.append(float(tok[0]))
+        x.append(float(tok[1]))
+    return np.array(y), np.array(x), cert, starts
+
+
+def digits(a, b):
+    return 16.0 if a == b else -math.log10(abs(a - b) / abs(b))
+
+
+def test_fit_linear_matches_nist_norris_to_at_least_six_digits():
+    y, x, cert, _ = read_nist("Norris.dat")
+    fit = corlab.fit_linear(np.column_stack([np.ones_like(x), x]), y, names=["B0", "B1"])
+    b0, b1 = fit["coefficients"]
+    assert b0["name"] == "B0"
+    assert digits(b0["value"], cert["B0"][0]) >= 6
+    assert digits(b1["value"], cert["B1"][0]) >= 6
+    assert digits(b0["standard_error"], cert["B0"][1]) >= 6
+    assert digits(b1["standard_error"], cert["B1"][1]) >= 6
+    assert digits(fit["goodness"]["r_squared"], cert["r_squared"][0]) >= 6
+    assert fit["dof"] == 34
+    assert b1["ci_lower"] < b1["value"] < b1["ci_upper"]
+
+
+def test_fit_linear_rejects_collinear_columns():
+    X = np.column_stack([np.ones(5), 2 * np.ones(5)])
+    with pytest.raises(ValueError, match="rank deficient"):
+        corlab.fit_linear(X, np.arange(5.0))
+
+
+def test_fit_expression_matches_nist_misra1a_to_at_least_four_digits():
+    y, x, cert, starts = read_nist("Misra1a.dat")
+    for start in ("start1", "start2"):
+        b1, b2 = starts[start]
+        fit = corlab.fit_expression("y ~ b1*(1-exp(-b2*x))", {"b1": b1, "b2": b2},
+                                    {"x": x.tolist(), "y": y.tolist()})
+        assert fit["converged"], fit["message"]
+        got = {c["name"]: c for c in fit["coefficients"]}
+        for name in ("b1", "b2"):
+            assert digits(got[name]["value"], cert[name][0]) >= 4
+            assert digits(got[name]["standard_error"], cert[name][1]) >= 4
+
+
+def test_fit_expression_user_form_with_filter_covers_truth():
+    rng = np.random.default_rng(3)
+    lk1 = np.tile(np.linspace(8, 22, 10), 4)
+    lk2 = np.repeat([-6.0, -5.5, -5.0, -4.5], 10)
+    e = np.minimum(1.0, 1.16 + 0.253 * lk2 + 0.056 * lk1 + rng.normal(0, 0.005, lk1.size))
+    fit = corlab.fit_expression("e ~ alpha + beta*ln(k2) + s*ln(k1)",
+                                {"alpha": 1.0, "beta": 0.1, "s": 0.1},
+                                {"e": e.tolist(), "k1": np.exp(lk1).tolist(),
+                                 "k2": np.exp(lk2).tolist()}, where="e < 0.999")
+    assert fit["observations"] < e.size
+    truth = {"alpha": 1.16, "beta": 0.253, "s": 0.056}
+    for c in fit["coefficients"]:
+        assert c["ci_lower"] <= truth[c["name"]] <= c["ci_upper"]
+
+
+def test_fit_expression_bad_form_is_a_value_error():
+    with pytest.raises(ValueError, match="unknown name 'z'"):
+        corlab.fit_expression("y ~ a*z", {"a": 1.0}, {"x": [1.0, 2, 3], "y": [1.0, 2, 3]})
+
+
+def write_results(path, rows):
+    cols = ["case_id", "status", "e", "velocity", "sphere_rho", "E_star", "sigma_y", "k1", "k2"]
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(cols)
+        for r in rows:
+            w.writerow([r[c] for c in cols])
+
+
+def test_fit_paper_recovers_the_paper_constants_from_its_own_model(tmp_path):
+    es = 210e9 / (2 * (1 - 0.3 ** 2))
+    rows, k = [], 0
+    for rho in (3925.0, 7850.0, 15700.0):
+        for sy in (300e6, 500e6, 700e6, 1000e6, 1300e6):
+            for v in (0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0):
+                k1, k2 = es / (rho * v * v), sy / es
+                e = min(1.0, 1.16 + 0.253 * math.log(k2) + 0.056 * math.log(k1))
+                rows.append({"case_id": f"c{k}", "status": "ok", "e": e, "velocity": v,
+                             "sphere_rho": rho, "E_star": es, "sigma_y": sy, "k1": k1, "k2": k2})
+                k += 1
+    rows.append(dict(rows[0], case_id="bad", status="failed", e="nan"))
+    write_results(tmp_path / "results.csv", rows)
+    fit = corlab.fit_paper(str(tmp_path / "results.csv"))
+    law = fit["restitution_law"]
+    assert law["slope"]["value"] == pytest.approx(0.056, abs=1e-10)
+    assert law["alpha"]["value"] == pytest.approx(1.16, abs=1e-9)
+    assert law["beta"]["value"] == pytest.approx(0.253, abs=1e-10)
+    assert law["slope"]["paper"] == 0.056
+    assert len(law["cases"]) == 15
+    assert fit["yield_velocity"] is None  # one E* only
+
+
+def test_fit_paper_missing_file_is_a_value_error(tmp_path):
+    with pytest.raises(ValueError):
+        corlab.fit_paper(str(tmp_path / "nope.csv"))

@@ -1,0 +1,51 @@
+"""corlab.simulate: the explicit FE impact from Python."""
+import numpy as np
+import pytest
+
+import corlab
+
+# A small, fast case (about 1000 elements): R = 2.5 mm sphere, 0.05 mm at the contact.
+SMALL = {
+    "sphere.radius": 2.5e-3,
+    "substrate.radius": 5e-3,
+    "substrate.depth": 5e-3,
+    "impact.gap": 1e-5,
+    "mesh.h_min": 0.05e-3,
+    "mesh.h_max": 0.5e-3,
+    "mesh.contact_elements": 0,
+    "output.history_every": 5,
+}
+
+
+def test_elastic_small_case_rebounds():
+    r = corlab.simulate({**SMALL, "impact.velocity": 5.0, "substrate.sigma_y": "none"})
+    assert r["e"] > 0.97
+    assert r["energy_balance_error"] < 1e-3
+    assert r["separated"] is True
+    h = r["history"]
+    assert isinstance(h["time"], np.ndarray)
+    assert h["time"].shape == h["contact_force"].shape
+    assert h["contact_force"].max() == pytest.approx(r["F_max"], rel=0.05)
+    assert r["config"]["impact"]["velocity"] == 5.0
+
+
+def test_plastic_case_dissipates():
+    r = corlab.simulate({**SMALL, "impact.velocity": 5.0})
+    assert 0.3 < r["e"] < 0.8
+    assert r["energy_dissipated_plastic"] > 0.0
+    assert r["hysteresis_area"] == pytest.approx(r["energy_sphere_loss"], rel=0.02)
+
+
+def test_bad_settings_raise_value_error():
+    with pytest.raises(ValueError, match="impact.velocity"):
+        corlab.simulate({"impact.velocity": -1.0})
+    with pytest.raises(ValueError, match="impact.speed"):
+        corlab.simulate({"impact.speed": 1.0})
+
+
+def test_config_file(tmp_path):
+    f = tmp_path / "case.toml"
+    f.write_text("[impact]\nvelocity = 4.5\n[substrate]\nsigma_y = \"none\"\n")
+    r = corlab.simulate(SMALL, config_file=str(f))
+    assert r["config"]["impact"]["velocity"] == 4.5
+    assert r["e"] > 0.97
