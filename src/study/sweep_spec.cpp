@@ -18,37 +18,6 @@ namespace {
 
 constexpr std::string_view kTopLevel = "[study], [base], [grid], [[cases]]";
 
-/// A leaf of a TOML table with its dotted key and where it was written.
-struct Leaf {
-  std::string key;
-  const toml::node* node = nullptr;
-  std::uint32_t line = 0;
-  std::uint32_t column = 0;
-};
-
-/// Flattens nested tables ([base.mesh] h_min = .., or mesh.h_min = ..) into dotted keys, in the
-/// order they appear in the document (toml++ tables are sorted by key).
-void collect_leaves(const toml::table& table, const std::string& prefix, std::vector<Leaf>& out) {
-  for (const auto& [key, node] : table) {
-    std::string full =
-        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
-    if (const auto* sub = node.as_table()) {
-      collect_leaves(*sub, full, out);
-    } else {
-      out.push_back({std::move(full), &node, node.source().begin.line, node.source().begin.column});
-    }
-  }
-}
-
-std::vector<Leaf> leaves_in_order(const toml::table& table) {
-  std::vector<Leaf> leaves;
-  collect_leaves(table, "", leaves);
-  std::stable_sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) {
-    return a.line != b.line ? a.line < b.line : a.column < b.column;
-  });
-  return leaves;
-}
-
 /// Removes line breaks so that every message stays on one line.
 std::string one_line(std::string text) {
   std::replace(text.begin(), text.end(), '\n', ' ');
@@ -112,6 +81,46 @@ class SpecError {
  private:
   std::string origin_;
 };
+
+/// A leaf of a TOML table with its dotted key and where it was written.
+struct Leaf {
+  std::string key;
+  const toml::node* node = nullptr;
+  std::uint32_t line = 0;
+  std::uint32_t column = 0;
+};
+
+/// Flattens nested tables ([base.mesh] h_min = .., or mesh.h_min = ..) into dotted keys, in the
+/// order they appear in the document (toml++ tables are sorted by key).
+void collect_leaves(const toml::table& table, const std::string& prefix, std::vector<Leaf>& out) {
+  for (const auto& [key, node] : table) {
+    std::string full =
+        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    if (const auto* sub = node.as_table()) {
+      collect_leaves(*sub, full, out);
+    } else {
+      out.push_back({std::move(full), &node, node.source().begin.line, node.source().begin.column});
+    }
+  }
+}
+
+std::vector<Leaf> leaves_in_order(const toml::table& table,
+                                  const SpecError& error,
+                                  std::string_view section) {
+  std::vector<Leaf> leaves;
+  collect_leaves(table, "", leaves);
+  std::set<std::string> keys;
+  for (const Leaf& leaf : leaves) {
+    if (!keys.insert(leaf.key).second) {
+      error.fail(fmt::format("{}.\"{}\"", section, leaf.key),
+                 "is set twice (as a quoted and as a dotted key)");
+    }
+  }
+  std::stable_sort(leaves.begin(), leaves.end(), [](const Leaf& a, const Leaf& b) {
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  return leaves;
+}
 
 std::string value_text(const toml::node& node, const SpecError& error, const std::string& where) {
   if (const auto* s = node.as_string()) return s->get();
@@ -405,7 +414,7 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
   // [base]
   std::vector<std::string> base_where;
   if (const toml::table* base = root["base"].as_table()) {
-    for (const Leaf& leaf : leaves_in_order(*base)) {
+    for (const Leaf& leaf : leaves_in_order(*base, error, "base")) {
       const std::string where = "base." + quoted_key(leaf.key);
       spec.base.emplace_back(leaf.key, value_text(*leaf.node, error, where));
       base_where.push_back(where);
@@ -418,7 +427,8 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
     for (std::size_t c = 0; c < cases->size(); ++c) {
       Settings settings;
       std::vector<std::string> wheres;
-      for (const Leaf& leaf : leaves_in_order(*cases->get(c)->as_table())) {
+      for (const Leaf& leaf :
+           leaves_in_order(*cases->get(c)->as_table(), error, fmt::format("cases[{}]", c))) {
         const std::string where = fmt::format("cases[{}].{}", c, quoted_key(leaf.key));
         settings.emplace_back(leaf.key, value_text(*leaf.node, error, where));
         wheres.push_back(where);
@@ -430,7 +440,7 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
 
   // [grid]
   if (const toml::table* grid = root["grid"].as_table()) {
-    for (const Leaf& leaf : leaves_in_order(*grid)) {
+    for (const Leaf& leaf : leaves_in_order(*grid, error, "grid")) {
       const std::string where = "grid." + quoted_key(leaf.key);
       const toml::array* array = leaf.node->as_array();
       if (array == nullptr) error.fail(where, "must be a non-empty array of values");

@@ -82,8 +82,8 @@ TEST(SweepSpec, IdsAreStableAcrossParsesAndKeyOrder) {
   const auto b = parse_sweep_spec(kExample, "b.toml").expand();
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].id, b[i].id);
-  // Same settings written differently (dotted keys, other order, integer vs float text of the
-  // same number is NOT the same text, so keep the numbers as they were) -> same ids.
+  // Same settings written differently (dotted keys, sub-tables, other order, 5e-4 for 0.5e-3)
+  // -> same ids: numbers are canonicalised to their shortest text before hashing.
   const std::string reordered = R"(
 [study]
 name = "table2"
@@ -91,7 +91,7 @@ name = "table2"
 sphere.rho = [3925.0, 7850.0]
 impact.velocity = [1.0, 5.0, 20.0]
 [base.mesh]
-h_min = 0.5e-3
+h_min = 5e-4
 [[cases]]
 substrate.material = "aluminium_ma2023"
 sphere.material = "alumina_ma2023"
@@ -202,6 +202,8 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
       {"identical runs",
        head + "[[cases]]\n\"impact.velocity\" = 2\n[[cases]]\n\"impact.velocity\" = 2\n",
        "invalid spec t.toml: runs 0 and 1 have identical settings (impact.velocity=2)"},
+      {"quoted and dotted key", head + "[base]\n\"mesh.h_min\" = 1e-3\nmesh.h_min = 2e-3\n",
+       "invalid spec t.toml base.\"mesh.h_min\": is set twice (as a quoted and as a dotted key)"},
       {"not TOML", head + "[grid\n", ""},
   };
   for (const auto& bad : cases) {
