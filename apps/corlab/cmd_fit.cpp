@@ -36,7 +36,7 @@ struct FitArgs {
 std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "-"; }
 
 void print_coefficient(const study::Coefficient& c) {
-  fmt::print("{:<26} {:>12} {:>11} [{:>11}, {:>11}] {:>9}  {}\n", c.name, num(c.value),
+  fmt::print("{:<34} {:>12} {:>11} [{:>11}, {:>11}] {:>9}  {}\n", c.name, num(c.value),
              num(c.standard_error), num(c.ci_lower), num(c.ci_upper), num(c.paper), c.unit);
 }
 
@@ -59,7 +59,7 @@ int fit_paper(const FitArgs& args, const study::ResultsTable& table) {
       "Ma et al. 2023 forms on {} ({} plastic points used, {} excluded: e >= 1 - {:g}, "
       "not ok, or cases with too few points)\n",
       args.results, law.points_used, law.points_excluded, args.plastic_tolerance);
-  fmt::print("{:<26} {:>12} {:>11} {:>27} {:>9}\n", "coefficient", "value", "std. err.",
+  fmt::print("{:<34} {:>12} {:>11} {:>27} {:>9}\n", "coefficient", "value", "std. err.",
              fmt::format("{:g} % confidence interval", 100 * args.confidence), "paper");
   print_coefficient(law.slope);
   print_coefficient(law.alpha);

@@ -31,6 +31,14 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * units::kPi;
 
+// Hot loops are compiled for AVX-512 (x86-64-v4), AVX2 (v3) and the baseline; the dynamic loader
+// picks the best the CPU has (GCC function multiversioning). Elsewhere: the baseline only.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && __GNUC__ >= 12
+#define CORLAB_SIMD_CLONES [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]]
+#else
+#define CORLAB_SIMD_CLONES
+#endif
+
 // Constant per-body parameters of the element loop.
 struct BodyParams {
   J2Plasticity material;
@@ -67,28 +75,27 @@ struct ElementSums {
 
 // Elements per block of the element loop: gathered into lane arrays, computed lane-parallel
 // (the pure kernels, inlined, vectorised across elements), then scattered.
-constexpr int kBlock = 64;
+constexpr int kBlock = 16;
 
 // The lane-parallel part of one block of nb <= kBlock elements: stress update at the mid-step
 // geometry x^{n+1/2}, internal + hourglass forces at x^{n+1}, stable step. f_r/f_z receive f_int.
-[[gnu::always_inline]] inline void element_block(
-    const BodyParams& p,
-    int nb,
-    const double* __restrict xr,
-    const double* __restrict xz,
-    const double* __restrict ur,
-    const double* __restrict uz,
-    double* __restrict srr,
-    double* __restrict szz,
-    double* __restrict stt,
-    double* __restrict srz,
-    double* __restrict eps_p,
-    double* __restrict qr,
-    double* __restrict qz,
-    double* __restrict f_r,
-    double* __restrict f_z,
-    double dt,
-    ElementSums& sums) {
+[[gnu::always_inline]] inline void element_block(const BodyParams& p,
+                                                 int nb,
+                                                 const double* __restrict xr,
+                                                 const double* __restrict xz,
+                                                 const double* __restrict ur,
+                                                 const double* __restrict uz,
+                                                 double* __restrict srr,
+                                                 double* __restrict szz,
+                                                 double* __restrict stt,
+                                                 double* __restrict srz,
+                                                 double* __restrict eps_p,
+                                                 double* __restrict qr,
+                                                 double* __restrict qz,
+                                                 double* __restrict f_r,
+                                                 double* __restrict f_z,
+                                                 double dt,
+                                                 ElementSums& sums) {
   const J2Plasticity mat = p.material;
   const double shear = mat.shear_modulus;
   const double rho = p.density;
@@ -174,18 +181,18 @@ constexpr int kBlock = 64;
 // One pass over the elements [begin, end) of one body; fr/fz (nodal) receive -f_int. Compiled
 // for AVX-512, AVX2 and the baseline (the block kernel is inlined into each); the loader picks
 // the best the CPU has.
-[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void element_loop(const BodyParams& p,
-                  ElementState& es,
-                  int begin,
-                  int end,
-                  const double* __restrict r,
-                  const double* __restrict z,
-                  const double* __restrict vr,
-                  const double* __restrict vz,
-                  double* __restrict fr_out,
-                  double* __restrict fz_out,
-                  double dt,
-                  ElementSums& sums) {
+CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
+                                     ElementState& es,
+                                     int begin,
+                                     int end,
+                                     const double* __restrict r,
+                                     const double* __restrict z,
+                                     const double* __restrict vr,
+                                     const double* __restrict vz,
+                                     double* __restrict fr_out,
+                                     double* __restrict fz_out,
+                                     double dt,
+                                     ElementSums& sums) {
   alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
   alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
   for (int e0 = begin; e0 < end; e0 += kBlock) {
@@ -227,21 +234,20 @@ struct NodeSums {
 
 // Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
 // dt v^{n+1/2}, forces zeroed for the next assembly. Vectorised (simd reductions), cloned.
-[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] NodeSums node_update(
-    int nn,
-    double dt,
-    double dt_avg,
-    double* __restrict pr,
-    double* __restrict pz,
-    double* __restrict pvr,
-    double* __restrict pvz,
-    double* __restrict pfr,
-    double* __restrict pfz,
-    const double* __restrict pm,
-    const double* __restrict pim,
-    const double* __restrict pfree_r,
-    const double* __restrict pfree_z,
-    const double* __restrict psph) {
+CORLAB_SIMD_CLONES NodeSums node_update(int nn,
+                                        double dt,
+                                        double dt_avg,
+                                        double* __restrict pr,
+                                        double* __restrict pz,
+                                        double* __restrict pvr,
+                                        double* __restrict pvz,
+                                        double* __restrict pfr,
+                                        double* __restrict pfz,
+                                        const double* __restrict pm,
+                                        const double* __restrict pim,
+                                        const double* __restrict pfree_r,
+                                        const double* __restrict pfree_z,
+                                        const double* __restrict psph) {
   double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
 #pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
   for (int i = 0; i < nn; ++i) {
@@ -473,9 +479,8 @@ ImpactResult run_impact(const ImpactConfig& config,
     // 1. Nodes: v^{n+1/2}, x^{n+1}; kinetic energy at t^n (product form, exact for the scheme).
     const double dt_avg = 0.5 * (dt_prev + dt);
     const NodeSums ns =
-        node_update(nn, dt, dt_avg, r.data(), z.data(), vr.data(), vz.data(), fr.data(),
-                    fz.data(), mass.data(), inv_mass.data(), free_r.data(), free_z.data(),
-                    is_sphere.data());
+        node_update(nn, dt, dt_avg, r.data(), z.data(), vr.data(), vz.data(), fr.data(), fz.data(),
+                    mass.data(), inv_mass.data(), free_r.data(), free_z.data(), is_sphere.data());
     const double ke = ns.ke;
     const double ke_sphere = ns.ke_sphere;
     const double p_sphere = ns.p_sphere;
@@ -554,6 +559,7 @@ ImpactResult run_impact(const ImpactConfig& config,
       const int b = masters[seg + 1];
       e_contact += penalty_force(p, k_pen[s], fr[i], fz[i], fr[a], fz[a], fr[b], fz[b]);
       f_new += -k_pen[s] * p.gap * p.nz;
+      res.penetration_max = std::max(res.penetration_max, -p.gap);
       penetrating = true;
     }
     const double delta_new = z_com_start - mz_sphere / sphere_mass;

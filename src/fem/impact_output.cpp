@@ -69,6 +69,7 @@ nlohmann::json summary_to_json(const ImpactResult& r, const ImpactConfig& config
   j["energy_viscous"] = r.energy_viscous;
   j["energy_balance_error"] = r.energy_balance_error;
   j["hysteresis_area"] = r.hysteresis_area;
+  j["penetration_max"] = r.penetration_max;
   j["separated"] = r.separated;
   j["elements"] = r.elements;
   j["nodes"] = r.nodes;
@@ -78,17 +79,10 @@ nlohmann::json summary_to_json(const ImpactResult& r, const ImpactConfig& config
   j["end_time"] = r.end_time;
   j["wall_s"] = r.wall_s;
   j["element_steps_per_s"] = r.element_steps_per_s;
-  j["units"] = {{"F_max", "N"},
-                {"delta_max", "m"},
-                {"t_contact", "s"},
-                {"crater_depth", "m"},
-                {"energy_*", "J"},
-                {"h_contact", "m"},
-                {"time_step", "s"},
-                {"end_time", "s"},
-                {"wall_s", "s"},
-                {"hysteresis_area", "J"},
-                {"element_steps_per_s", "1/s"}};
+  j["units"] = {{"F_max", "N"},           {"delta_max", "m"},       {"t_contact", "s"},
+                {"crater_depth", "m"},    {"energy_*", "J"},        {"h_contact", "m"},
+                {"time_step", "s"},       {"end_time", "s"},        {"wall_s", "s"},
+                {"hysteresis_area", "J"}, {"penetration_max", "m"}, {"element_steps_per_s", "1/s"}};
   j["config"] = config_to_json(config);
   return j;
 }

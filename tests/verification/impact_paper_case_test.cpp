@@ -49,6 +49,14 @@ TEST_F(PaperCase, EnergyLossMatchesHysteresisArea) {
   EXPECT_NEAR(r.hysteresis_area, kPaperLoss, 0.05 * kPaperLoss);
 }
 
+TEST_F(PaperCase, PenaltyPenetrationIsSmall) {
+  // The penalty at 0.1 of its stability limit: penetration about 1 % of the indentation or less.
+  std::printf("penetration_max = %.3g m = %.3g %% of delta_max\n", result().penetration_max,
+              100.0 * result().penetration_max / result().indentation_max);
+  EXPECT_GT(result().penetration_max, 0.0);
+  EXPECT_LT(result().penetration_max, 0.02 * result().indentation_max);
+}
+
 TEST_F(PaperCase, HourglassEnergyIsSmall) {
   EXPECT_LT(result().energy_hourglass, 0.001 * result().energy_initial);
 }

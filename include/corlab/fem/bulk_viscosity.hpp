@@ -26,7 +26,8 @@ inline double bulk_viscous_stress(
 inline double bulk_viscous_damping_ratio(
     double eps_vol_rate, double wave_speed, double length, double b1, double b2) {
   const double compression = std::max(-eps_vol_rate, 0.0);
-  return b1 + b2 * b2 * length * compression / wave_speed;
+  const double inv_c = 1.0 / wave_speed;  // loop-invariant in the solver: hoisted
+  return b1 + b2 * b2 * length * compression * inv_c;
 }
 
 }  // namespace corlab::fem

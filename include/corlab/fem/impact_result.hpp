@@ -37,6 +37,7 @@ struct ImpactResult {
   double energy_viscous = 0.0;              ///< [J]
   double energy_balance_error = 0.0;        ///< max over the run of |balance| / initial [-]
   double hysteresis_area = 0.0;             ///< closed integral of F d(delta) [J]
+  double penetration_max = 0.0;             ///< largest penalty penetration of a slave [m]
   bool separated = false;  ///< false if t_max was reached before the sphere left
   int elements = 0;
   int nodes = 0;

@@ -74,7 +74,8 @@ struct J2Plasticity {
     const double sy = flow_stress(state);
     // Branch-free (vectorisable) radial return: d_eps_p = <q - sigma_y>_+ / (3G + H), deviator
     // scaled by 1 - 3G d_eps_p / q (= 1 when elastic).
-    const double dep = std::max(q - sy, 0.0) / (3.0 * shear_modulus + hardening_modulus);
+    const double inv_stiffness = 1.0 / (3.0 * shear_modulus + hardening_modulus);  // hoisted
+    const double dep = std::max(q - sy, 0.0) * inv_stiffness;
     const double scale = 1.0 - 3.0 * shear_modulus * dep / std::max(q, kTiny);
     stress.rr = p + scale * srr;
     stress.zz = p + scale * szz;
