@@ -41,11 +41,13 @@ residuals. Raises ValueError for rank-deficient X, n <= p or non-finite input.)d
 
   m.def(
       "fit_expression",
-      [](const std::string& expr, const std::map<std::string, double>& params,
+      [](const std::string& expr, const py::dict& params,
          const std::map<std::string, std::vector<double>>& data, const std::string& where,
          double confidence, int max_iterations) {
-        std::vector<study::ParameterStart> starts;
-        for (const auto& [name, start] : params) starts.push_back({name, start});
+        std::vector<study::ParameterStart> starts;  // in the dict's order
+        for (const auto& item : params) {
+          starts.push_back({py::cast<std::string>(item.first), py::cast<double>(item.second)});
+        }
         study::NonlinearFitOptions options;
         options.where = where;
         options.confidence = confidence;

@@ -74,10 +74,11 @@ def test_fit_expression_user_form_with_filter_covers_truth():
     lk2 = np.repeat([-6.0, -5.5, -5.0, -4.5], 10)
     e = np.minimum(1.0, 1.16 + 0.253 * lk2 + 0.056 * lk1 + rng.normal(0, 0.005, lk1.size))
     fit = corlab.fit_expression("e ~ alpha + beta*ln(k2) + s*ln(k1)",
-                                {"alpha": 1.0, "beta": 0.1, "s": 0.1},
+                                {"alpha": 1.0, "s": 0.1, "beta": 0.1},
                                 {"e": e.tolist(), "k1": np.exp(lk1).tolist(),
                                  "k2": np.exp(lk2).tolist()}, where="e < 0.999")
     assert fit["observations"] < e.size
+    assert [c["name"] for c in fit["coefficients"]] == ["alpha", "s", "beta"]  # dict order
     truth = {"alpha": 1.16, "beta": 0.253, "s": 0.056}
     for c in fit["coefficients"]:
         assert c["ci_lower"] <= truth[c["name"]] <= c["ci_upper"]
