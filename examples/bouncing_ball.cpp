@@ -29,14 +29,13 @@ int main(int argc, char** argv) {
                                                        db.get("aluminium_ma2023"));
     double v = std::sqrt(2.0 * kGravity * drop_height);  // impact speed [m/s]
     double t = std::sqrt(2.0 * drop_height / kGravity);  // time of first impact [s]
-    fmt::print("model {} ({}), drop height {} m\n", model_name, model.info().citation,
-               drop_height);
+    fmt::print("model {} ({}), drop height {} m\n", model_name, model.info().citation, drop_height);
     fmt::print("{:>6} {:>12} {:>14} {:>10}\n", "bounce", "t [s]", "v_impact [m/s]", "e [-]");
     for (int bounce = 1; bounce <= 30 && v > kRestSpeed; ++bounce) {
       const double e = model.cor(v);
       fmt::print("{:>6} {:>12.5f} {:>14.5f} {:>10.4f}\n", bounce, t, v, e);
-      v *= e;                        // rebound speed
-      t += 2.0 * v / kGravity;       // flight time to the next impact
+      v *= e;                   // rebound speed
+      t += 2.0 * v / kGravity;  // flight time to the next impact
     }
   } catch (const corlab::InputError& err) {
     fmt::print(stderr, "error: {}\n", err.what());

@@ -12,8 +12,8 @@ const CommandRegistration kRegistration{Command{
     [](CLI::App& /*sub*/) -> std::function<int()> {
       return [] {
         const auto& db = MaterialDatabase::builtin();
-        fmt::print("{:<24} {:>10} {:>6} {:>10} {:>10}  source\n", "name", "E [Pa]", "nu",
-                   "rho", "sigma_y");
+        fmt::print("{:<24} {:>10} {:>6} {:>10} {:>10}  source\n", "name", "E [Pa]", "nu", "rho",
+                   "sigma_y");
         for (const auto& name : db.names()) {
           const Material& m = db.get(name);
           fmt::print("{:<24} {:>10.4g} {:>6.3g} {:>10.6g} {:>10}  {}\n", name, m.youngs_modulus,

@@ -4,7 +4,6 @@
 /// registers itself with a static CommandRegistration; main.cpp knows none of them by name.
 
 #include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string>
 #include <vector>

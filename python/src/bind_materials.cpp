@@ -13,8 +13,12 @@ void bind_materials(py::module_& m) {
   py::class_<Material>(m, "Material", "Isotropic material, SI units")
       .def(py::init([](double E, double nu, double rho, std::optional<double> sigma_y, double H,
                        std::string name) {
-             Material mat{.name = std::move(name), .youngs_modulus = E, .poisson_ratio = nu,
-                          .density = rho, .yield_stress = sigma_y, .hardening_modulus = H,
+             Material mat{.name = std::move(name),
+                          .youngs_modulus = E,
+                          .poisson_ratio = nu,
+                          .density = rho,
+                          .yield_stress = sigma_y,
+                          .hardening_modulus = H,
                           .source = ""};
              validate(mat, "material");
              return mat;
@@ -31,13 +35,14 @@ void bind_materials(py::module_& m) {
       .def("__repr__", [](const Material& mat) {
         return "Material(" + mat.name + ", E=" + std::to_string(mat.youngs_modulus) + ")";
       });
-  m.def("material", [](const std::string& spec) { return parse_material_spec(spec, "material"); },
-        py::arg("spec"),
-        "Material from a database name, 'E=..,nu=..,rho=..[,sy=..]', or 'name,key=value'.");
+  m.def(
+      "material", [](const std::string& spec) { return parse_material_spec(spec, "material"); },
+      py::arg("spec"),
+      "Material from a database name, 'E=..,nu=..,rho=..[,sy=..]', or 'name,key=value'.");
   m.def("material_names", [] { return MaterialDatabase::builtin().names(); });
   m.def("effective_modulus",
-        py::overload_cast<const Material&, const Material&>(&effective_modulus),
-        py::arg("sphere"), py::arg("substrate"), "E* [Pa] (Ma et al. 2023 eq. 3)");
+        py::overload_cast<const Material&, const Material&>(&effective_modulus), py::arg("sphere"),
+        py::arg("substrate"), "E* [Pa] (Ma et al. 2023 eq. 3)");
   m.def("k1", &k1, py::arg("E_star"), py::arg("rho"), py::arg("v"),
         "k1 = E*/(rho v^2) (Ma et al. 2023 eq. 5)");
   m.def("k2", &k2, py::arg("sigma_y"), py::arg("E_star"), "k2 = sigma_y/E* (Ma eq. 6)");

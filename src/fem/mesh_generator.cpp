@@ -29,6 +29,8 @@ constexpr double kSphereUniformDepthFraction = 0.5;
 constexpr double kMinRingFraction = 0.12;
 constexpr double kMaxRingFraction = 0.2;
 constexpr double kTopRingFraction = 0.5;
+/// Laplace smoothing sweeps of the core's interior nodes.
+constexpr int kCoreSmoothingSweeps = 200;
 
 struct Point {
   double r = 0.0;
@@ -327,6 +329,20 @@ std::vector<Point> coons(const std::vector<Point>& south,
   return x;
 }
 
+/// Laplace smoothing of the interior points of a structured block (index i * (nj + 1) + j; the
+/// boundary stays fixed): Jacobi sweeps x_ij <- mean of its four neighbours.
+void smooth_block(std::vector<Point>& x, std::size_t ni, std::size_t nj, int sweeps) {
+  std::vector<Point> y = x;
+  for (int it = 0; it < sweeps; ++it) {
+    for (std::size_t i = 1; i < ni; ++i)
+      for (std::size_t j = 1; j < nj; ++j) {
+        const std::size_t k = i * (nj + 1) + j;
+        y[k] = 0.25 * (x[k - 1] + x[k + 1] + x[k - (nj + 1)] + x[k + (nj + 1)]);
+      }
+    std::swap(x, y);
+  }
+}
+
 /// Adds nodes and elements to a mesh, merging nodes at bitwise-equal coordinates within a body.
 class MeshBuilder {
  public:
@@ -528,7 +544,9 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto ids_b = builder.block(coons(b_south, b_north, b_west, b_east), ns, nt);
   const auto ids_r = builder.block(coons(r_south, r_north, r_west, r_east), nr, nt);
   const auto ids_t = builder.block(coons(t_south, t_north, t_west, t_east), ns, nt);
-  builder.block(coons(b_north, t_north, c_west, r_north), ns, nr);
+  auto core_pts = coons(b_north, t_north, c_west, r_north);
+  smooth_block(core_pts, ns, nr, kCoreSmoothingSweeps);
+  builder.block(core_pts, ns, nr);
 
   // surface nodes from the lowest point (bottom, right, then top block arcs), up to the first
   // node past the equator

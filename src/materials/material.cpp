@@ -38,6 +38,8 @@ double k1(double effective_modulus, double sphere_density, double velocity) {
   return effective_modulus / (sphere_density * velocity * velocity);
 }
 
-double k2(double yield_stress, double effective_modulus) { return yield_stress / effective_modulus; }
+double k2(double yield_stress, double effective_modulus) {
+  return yield_stress / effective_modulus;
+}
 
 }  // namespace corlab

@@ -2,11 +2,11 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <toml++/toml.h>
 
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <toml++/toml.h>
 
 #include "corlab/core/error.hpp"
 
@@ -104,8 +104,9 @@ bool MaterialDatabase::contains(std::string_view name) const {
 const Material& MaterialDatabase::get(std::string_view name, std::string_view field) const {
   const auto it = materials_.find(name);
   if (it == materials_.end()) {
-    throw_invalid(field, name, fmt::format("one of [{}] or E=..,nu=..,rho=..[,sy=..]",
-                                           fmt::join(names(), ", ")));
+    throw_invalid(
+        field, name,
+        fmt::format("one of [{}] or E=..,nu=..,rho=..[,sy=..]", fmt::join(names(), ", ")));
   }
   return it->second;
 }

@@ -9,43 +9,43 @@ namespace corlab::fem {
 
 /// Time histories, one entry per output row (structure of arrays).
 struct ImpactHistory {
-  std::vector<double> time;                 ///< t [s], 0 = release at the gap
-  std::vector<double> contact_force;        ///< F, force of the substrate on the sphere [N]
-  std::vector<double> indentation;          ///< delta = sphere c.o.m. displacement - gap [m]
-  std::vector<double> sphere_velocity;      ///< sphere c.o.m. velocity, + towards substrate [m/s]
-  std::vector<double> kinetic_energy;       ///< [J] both bodies
-  std::vector<double> strain_energy;        ///< recoverable elastic strain energy [J]
-  std::vector<double> plastic_dissipation;  ///< [J]
-  std::vector<double> hourglass_energy;     ///< [J]
-  std::vector<double> viscous_dissipation;  ///< bulk viscosity [J]
-  std::vector<double> contact_energy;       ///< penalty energy [J]
-  std::vector<double> energy_balance_error; ///< (sum of the above - initial) / initial [-]
+  std::vector<double> time;                  ///< t [s], 0 = release at the gap
+  std::vector<double> contact_force;         ///< F, force of the substrate on the sphere [N]
+  std::vector<double> indentation;           ///< delta = sphere c.o.m. displacement - gap [m]
+  std::vector<double> sphere_velocity;       ///< sphere c.o.m. velocity, + towards substrate [m/s]
+  std::vector<double> kinetic_energy;        ///< [J] both bodies
+  std::vector<double> strain_energy;         ///< recoverable elastic strain energy [J]
+  std::vector<double> plastic_dissipation;   ///< [J]
+  std::vector<double> hourglass_energy;      ///< [J]
+  std::vector<double> viscous_dissipation;   ///< bulk viscosity [J]
+  std::vector<double> contact_energy;        ///< penalty energy [J]
+  std::vector<double> energy_balance_error;  ///< (sum of the above - initial) / initial [-]
 };
 
 struct ImpactResult {
-  double e = 0.0;          ///< CoR from momentum: rebound / impact c.o.m. velocity [-]
-  double e_energy = 0.0;   ///< CoR from the sphere's rebound kinetic energy [-]
-  double force_max = 0.0;  ///< F_max [N]
-  double indentation_max = 0.0;   ///< delta_max [m]
-  double contact_time = 0.0;      ///< duration of contact [s]
-  double crater_depth = 0.0;      ///< residual depth of the substrate surface on the axis [m]
+  double e = 0.0;                   ///< CoR from momentum: rebound / impact c.o.m. velocity [-]
+  double e_energy = 0.0;            ///< CoR from the sphere's rebound kinetic energy [-]
+  double force_max = 0.0;           ///< F_max [N]
+  double indentation_max = 0.0;     ///< delta_max [m]
+  double contact_time = 0.0;        ///< duration of contact [s]
+  double crater_depth = 0.0;        ///< residual depth of the substrate surface on the axis [m]
   double plastic_strain_max = 0.0;  ///< largest equivalent plastic strain left [-]
-  double energy_initial = 0.0;              ///< sphere kinetic energy at impact [J]
-  double energy_sphere_loss = 0.0;          ///< initial - sphere kinetic energy after rebound [J]
-  double energy_dissipated_plastic = 0.0;   ///< [J]
-  double energy_hourglass = 0.0;            ///< at the end [J]
-  double energy_viscous = 0.0;              ///< [J]
-  double energy_balance_error = 0.0;        ///< max over the run of |balance| / initial [-]
-  double hysteresis_area = 0.0;             ///< closed integral of F d(delta) [J]
-  double penetration_max = 0.0;             ///< largest penalty penetration of a slave [m]
-  bool separated = false;  ///< false if t_max was reached before the sphere left
+  double energy_initial = 0.0;      ///< sphere kinetic energy at impact [J]
+  double energy_sphere_loss = 0.0;  ///< initial - sphere kinetic energy after rebound [J]
+  double energy_dissipated_plastic = 0.0;  ///< [J]
+  double energy_hourglass = 0.0;           ///< at the end [J]
+  double energy_viscous = 0.0;             ///< [J]
+  double energy_balance_error = 0.0;       ///< max over the run of |balance| / initial [-]
+  double hysteresis_area = 0.0;            ///< closed integral of F d(delta) [J]
+  double penetration_max = 0.0;            ///< largest penalty penetration of a slave [m]
+  bool separated = false;                  ///< false if t_max was reached before the sphere left
   int elements = 0;
   int nodes = 0;
   long long steps = 0;
-  double h_contact = 0.0;  ///< element size used at the contact [m]
-  double time_step = 0.0;  ///< initial stable time step [s]
-  double end_time = 0.0;   ///< [s]
-  double wall_s = 0.0;     ///< wall-clock time of the run [s]
+  double h_contact = 0.0;            ///< element size used at the contact [m]
+  double time_step = 0.0;            ///< initial stable time step [s]
+  double end_time = 0.0;             ///< [s]
+  double wall_s = 0.0;               ///< wall-clock time of the run [s]
   double element_steps_per_s = 0.0;  ///< throughput [1/s]
   ImpactHistory history;
 };

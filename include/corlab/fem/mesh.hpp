@@ -15,15 +15,15 @@ namespace corlab::fem {
 enum class Body : std::uint8_t { kSphere = 0, kSubstrate = 1 };
 
 struct Mesh {
-  std::vector<double> r;                ///< node radial coordinate [m] (nnode)
-  std::vector<double> z;                ///< node axial coordinate [m] (nnode)
+  std::vector<double> r;                  ///< node radial coordinate [m] (nnode)
+  std::vector<double> z;                  ///< node axial coordinate [m] (nnode)
   std::vector<std::array<int, 4>> quads;  ///< element nodes, counter-clockwise in (r, z) (nelem)
-  std::vector<Body> element_body;       ///< body of each element (nelem)
-  std::vector<Body> node_body;          ///< body of each node (nnode); bodies share no node
+  std::vector<Body> element_body;         ///< body of each element (nelem)
+  std::vector<Body> node_body;            ///< body of each node (nnode); bodies share no node
 
   // Named node sets (node indices).
-  std::vector<int> axis_nodes;          ///< nodes on r = 0: radial velocity held at zero
-  std::vector<int> base_nodes;          ///< substrate bottom z = -depth: fully fixed
+  std::vector<int> axis_nodes;  ///< nodes on r = 0: radial velocity held at zero
+  std::vector<int> base_nodes;  ///< substrate bottom z = -depth: fully fixed
   /// Sphere surface nodes that may touch the substrate, ordered by increasing arc length from
   /// the lowest point (the contact slaves).
   std::vector<int> sphere_surface_nodes;

@@ -10,13 +10,14 @@ namespace corlab {
 
 /// Isotropic elastic or elastic-plastic (J2, linear isotropic hardening) material.
 struct Material {
-  std::string name;                   ///< database key or "inline"
-  double youngs_modulus = 0.0;        ///< E [Pa]
-  double poisson_ratio = 0.0;         ///< nu [-], in (-1, 0.5)
-  double density = 0.0;               ///< rho [kg/m^3]
-  std::optional<double> yield_stress; ///< sigma_y [Pa]; empty = purely elastic
-  double hardening_modulus = 0.0;     ///< H [Pa], plastic tangent d(sigma_y)/d(eps_p); 0 = perfectly plastic
-  std::string source;                 ///< where the values come from (citation)
+  std::string name;                    ///< database key or "inline"
+  double youngs_modulus = 0.0;         ///< E [Pa]
+  double poisson_ratio = 0.0;          ///< nu [-], in (-1, 0.5)
+  double density = 0.0;                ///< rho [kg/m^3]
+  std::optional<double> yield_stress;  ///< sigma_y [Pa]; empty = purely elastic
+  double hardening_modulus =
+      0.0;             ///< H [Pa], plastic tangent d(sigma_y)/d(eps_p); 0 = perfectly plastic
+  std::string source;  ///< where the values come from (citation)
 
   /// Shear modulus G = E / (2 (1 + nu)) [Pa].
   double shear_modulus() const { return youngs_modulus / (2.0 * (1.0 + poisson_ratio)); }
