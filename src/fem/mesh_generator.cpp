@@ -16,8 +16,17 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 /// Smallest spacing allowed on edges whose distribution is derived from another edge, as a
-/// fraction of h (the smallest element sets the explicit time step).
-constexpr double kMinSpacingFraction = 0.9;
+/// fraction of h (the smallest element sets the explicit time step; 0.95 keeps the ring
+/// elements next to the axis, where the radial lines converge, at ~h wide).
+constexpr double kMinSpacingFraction = 0.95;
+/// The core's first spacing along the axis (A -> A') as a multiple of the ring's last radial
+/// spacing, and the smallest spacing on the core's right edge (K -> K') as a multiple of the
+/// minimum spacing. The core's columns lean by up to ~35 deg near its bottom edge (they fan out
+/// from A -> K to the longer top edge A' -> K'); slightly taller rows there keep these sheared
+/// elements' characteristic length (the stable step) at ~0.97 of the contact squares' instead
+/// of 0.9 (measured: docs/theory/mesh.md).
+constexpr double kCoreFirstSpacing = 1.25;
+constexpr double kCoreRightSpacing = 1.1;
 /// Bottom-block arc angle limits [rad] and corner angle of the ring blocks at the core corners.
 constexpr double kMinBottomAngle = 10.0 * kPi / 180.0;
 constexpr double kMaxBottomAngle = 60.0 * kPi / 180.0;
@@ -29,8 +38,6 @@ constexpr double kSphereUniformDepthFraction = 0.5;
 constexpr double kMinRingFraction = 0.12;
 constexpr double kMaxRingFraction = 0.2;
 constexpr double kTopRingFraction = 0.5;
-/// Laplace smoothing sweeps of the core's interior nodes.
-constexpr int kCoreSmoothingSweeps = 200;
 
 struct Point {
   double r = 0.0;
@@ -329,20 +336,6 @@ std::vector<Point> coons(const std::vector<Point>& south,
   return x;
 }
 
-/// Laplace smoothing of the interior points of a structured block (index i * (nj + 1) + j; the
-/// boundary stays fixed): Jacobi sweeps x_ij <- mean of its four neighbours.
-void smooth_block(std::vector<Point>& x, std::size_t ni, std::size_t nj, int sweeps) {
-  std::vector<Point> y = x;
-  for (int it = 0; it < sweeps; ++it) {
-    for (std::size_t i = 1; i < ni; ++i)
-      for (std::size_t j = 1; j < nj; ++j) {
-        const std::size_t k = i * (nj + 1) + j;
-        y[k] = 0.25 * (x[k - 1] + x[k + 1] + x[k - (nj + 1)] + x[k + (nj + 1)]);
-      }
-    std::swap(x, y);
-  }
-}
-
 /// Adds nodes and elements to a mesh, merging nodes at bitwise-equal coordinates within a body.
 class MeshBuilder {
  public:
@@ -487,9 +480,9 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
         two_sided_sizes(radius * (beta - alpha), s_q, right_uniform, s_top, g, o.h_max));
     // core axis A -> A': continues the depth refinement below the ring, then grows
     const double s_top_radial = depth_sizes.back() * d_top / d_ring;
-    auto axis = positions_from_sizes(two_sided_sizes(norm(a2 - pnt_a), depth_sizes.back(),
-                                                     std::max(0.0, uniform_depth - d_ring),
-                                                     s_top_radial, g, o.h_max));
+    auto axis = positions_from_sizes(
+        two_sided_sizes(norm(a2 - pnt_a), kCoreFirstSpacing * depth_sizes.back(),
+                        std::max(0.0, uniform_depth - d_ring), s_top_radial, g, o.h_max));
     const std::size_t n = std::max(arc.size(), axis.size()) - 1;
     return CoreRight{k2,
                      a2,
@@ -520,10 +513,10 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto b_east = line_points(pnt_q, pnt_k, depth_f);             // Q -> K
 
   const auto r_south = arc_points(zc, radius, alpha, beta, arc_r);  // Q -> Q'
-  const auto r_north = gamma_right.sample(
-      fit_fractions(fractions(arc_r), gamma_right.length(), min_size));  // K -> K'
-  const auto r_west = b_east;                                            // Q -> K
-  const auto r_east = line_points(pnt_q2, pnt_k2, depth_f);              // Q' -> K'
+  const auto r_north = gamma_right.sample(fit_fractions(fractions(arc_r), gamma_right.length(),
+                                                        kCoreRightSpacing * min_size));  // K -> K'
+  const auto r_west = b_east;                                                            // Q -> K
+  const auto r_east = line_points(pnt_q2, pnt_k2, depth_f);                              // Q' -> K'
 
   // top block: arc T -> Q' (i, from the axis), radial T -> A' and Q' -> K'
   std::vector<double> arc_t(ns + 1);
@@ -544,9 +537,7 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto ids_b = builder.block(coons(b_south, b_north, b_west, b_east), ns, nt);
   const auto ids_r = builder.block(coons(r_south, r_north, r_west, r_east), nr, nt);
   const auto ids_t = builder.block(coons(t_south, t_north, t_west, t_east), ns, nt);
-  auto core_pts = coons(b_north, t_north, c_west, r_north);
-  smooth_block(core_pts, ns, nr, kCoreSmoothingSweeps);
-  builder.block(core_pts, ns, nr);
+  builder.block(coons(b_north, t_north, c_west, r_north), ns, nr);
 
   // surface nodes from the lowest point (bottom, right, then top block arcs), up to the first
   // node past the equator
@@ -564,7 +555,8 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   }
 }
 
-void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+/// Tensor-product substrate (used when the refined zone leaves no room for the graded blocks).
+void generate_substrate_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto xr =
       graded_positions(o.substrate_radius, o.h_contact, o.zone_radius, o.growth, o.h_max);
   const auto xd = graded_positions(o.substrate_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
@@ -580,6 +572,91 @@ void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) 
     mesh.substrate_surface_nodes.push_back(ids[i * (nj + 1) + nj]);
     mesh.base_nodes.push_back(ids[i * (nj + 1)]);
   }
+}
+
+/// Number of leading intervals of size h (the uniform part of a graded distribution).
+std::size_t uniform_count(const std::vector<double>& x, double h) {
+  std::size_t n = 0;
+  while (n + 1 < x.size() && std::abs((x[n + 1] - x[n]) - h) <= 1e-9 * h) ++n;
+  return n;
+}
+
+/// Substrate: the uniform h x h zone [0, Z_r] x [-Z_d, 0] plus two graded blocks around it that
+/// meet on the diagonal from the zone's corner (Z_r, -Z_d) to the far corner (W, -D): the right
+/// block (zone's right edge -> r = W, surface on top) and the bottom block (zone's bottom edge ->
+/// base, axis on the left). Unlike a tensor grid, the zone's fine columns and rows do not run on
+/// to the base and to r = W. The graded edges (surface, axis) start at h g and are capped so that
+/// the diagonal's intervals stay <= h_max; the outer edges (r = W, z = -D) carry as many uniform
+/// intervals as the zone edge facing them.
+void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+  const double h = o.h_contact;
+  const double width = o.substrate_radius;
+  const double depth = o.substrate_depth;
+  const auto xr_all = graded_positions(width, h, o.zone_radius, o.growth, o.h_max);
+  const auto xd_all = graded_positions(depth, h, o.zone_depth, o.growth, o.h_max);
+  const std::size_t nr = uniform_count(xr_all, h);
+  const std::size_t nd = uniform_count(xd_all, h);
+  const double zr = static_cast<double>(nr) * h;
+  const double zd = static_cast<double>(nd) * h;
+  const double diag = std::hypot(width - zr, depth - zd);
+  if (nr < 4 || nd < 4 || zr >= 0.8 * width || zd >= 0.8 * depth ||
+      width / static_cast<double>(nd) > o.h_max || depth / static_cast<double>(nr) > o.h_max ||
+      width / static_cast<double>(nd) < h || depth / static_cast<double>(nr) < h) {
+    generate_substrate_tensor(o, builder, mesh);
+    return;
+  }
+  // graded distributions along the surface (from r = Z_r) and the axis (from z = -Z_d)
+  auto surf = graded_positions(width - zr, h, 0.0, o.growth,
+                               std::max(h * o.growth, o.h_max * (width - zr) / diag));
+  auto axis = graded_positions(depth - zd, h, 0.0, o.growth,
+                               std::max(h * o.growth, o.h_max * (depth - zd) / diag));
+  const std::size_t m = std::max(surf.size(), axis.size()) - 1;
+  surf = split_to_count(surf, m);
+  axis = split_to_count(axis, m);
+  const Point corner{zr, -zd};
+  const Point far{width, -depth};
+  std::vector<double> uni_r(nr + 1);
+  std::vector<double> uni_d(nd + 1);
+  for (std::size_t k = 0; k <= nr; ++k) uni_r[k] = static_cast<double>(k) / static_cast<double>(nr);
+  for (std::size_t k = 0; k <= nd; ++k) uni_d[k] = static_cast<double>(k) / static_cast<double>(nd);
+  uni_r.back() = 1.0;
+  uni_d.back() = 1.0;
+  // zone: exact multiples of h
+  std::vector<Point> zone((nr + 1) * (nd + 1));
+  for (std::size_t i = 0; i <= nr; ++i)
+    for (std::size_t j = 0; j <= nd; ++j)  // j = 0 at z = -Z_d, j = nd at the surface
+      zone[i * (nd + 1) + j] = {static_cast<double>(i) * h,
+                                j == nd ? 0.0 : -static_cast<double>(nd - j) * h};
+  std::vector<Point> zone_right(nd + 1);   // (Z_r, -Z_d) -> (Z_r, 0)
+  std::vector<Point> zone_bottom(nr + 1);  // (0, -Z_d) -> (Z_r, -Z_d)
+  for (std::size_t j = 0; j <= nd; ++j) zone_right[j] = zone[nr * (nd + 1) + j];
+  for (std::size_t i = 0; i <= nr; ++i) zone_bottom[i] = zone[i * (nd + 1)];
+  const auto diagonal = line_points(corner, far, fractions(surf));  // corner -> far
+  std::vector<Point> surface(m + 1);                                // (Z_r, 0) -> (W, 0)
+  std::vector<Point> axis_pts(m + 1);                               // (0, -Z_d) -> (0, -D)
+  for (std::size_t k = 0; k <= m; ++k) {
+    surface[k] = {k == m ? width : zr + surf[k], 0.0};
+    axis_pts[k] = {0.0, k == m ? -depth : -(zd + axis[k])};
+  }
+  // outer edges with their fixed coordinate exact (base nodes at z = -D bitwise)
+  auto outer = line_points(far, {width, 0.0}, uni_d);  // (W, -D) -> (W, 0)
+  auto base = line_points({0.0, -depth}, far, uni_r);  // (0, -D) -> (W, -D)
+  for (Point& p : outer) p.r = width;
+  for (Point& p : base) p.z = -depth;
+
+  builder.start_body(Body::kSubstrate);
+  const auto ids_zone = builder.block(zone, nr, nd);
+  // right block: i along the radial direction (zone edge -> r = W), j from the diagonal (j = 0)
+  // to the surface (j = nd): south = diagonal, north = surface, west = zone edge, east = outer
+  const auto ids_right = builder.block(coons(diagonal, surface, zone_right, outer), m, nd);
+  // bottom block: i from the axis (i = 0) to the diagonal (i = nr), j downwards (j = 0 at the
+  // zone's bottom edge): south = zone bottom, north = base, west = axis, east = diagonal
+  const auto ids_bottom = builder.block(coons(zone_bottom, base, axis_pts, diagonal), nr, m);
+  for (std::size_t i = 0; i <= nr; ++i)
+    mesh.substrate_surface_nodes.push_back(ids_zone[i * (nd + 1) + nd]);
+  for (std::size_t i = 1; i <= m; ++i)
+    mesh.substrate_surface_nodes.push_back(ids_right[i * (nd + 1) + nd]);
+  for (std::size_t i = 0; i <= nr; ++i) mesh.base_nodes.push_back(ids_bottom[i * (m + 1) + m]);
 }
 
 }  // namespace
