@@ -130,6 +130,145 @@ def fig3_hertz(out_dir, fit):
     return _save(fig, out_dir, "fig03_force_indentation.png")
 
 
+def read_vtu(path):
+    """An ASCII .vtu of corlab's writer (include/corlab/fem/vtu_writer.hpp) as a dict:
+    ``points`` (N x 3, deformed (r, z, 0) [m]), ``quads`` (M x 4 node indices), ``cells``
+    {name: (M,) or (M x k)} and ``point_data`` {name: (N,) or (N x k)}."""
+    import xml.etree.ElementTree as ET
+
+    import numpy as np
+
+    piece = ET.parse(path).getroot().find("UnstructuredGrid/Piece")
+    if piece is None:
+        raise ValueError(f"{path}: no UnstructuredGrid/Piece")
+    n_points = int(piece.get("NumberOfPoints"))
+    n_cells = int(piece.get("NumberOfCells"))
+
+    def values(array, count):
+        dtype = float if array.get("type", "").startswith("Float") else np.int64
+        data = np.array((array.text or "").split(), dtype=dtype)
+        k = int(array.get("NumberOfComponents", "1"))
+        if data.size != count * k:
+            raise ValueError(f"{path}: {array.get('Name')}: {data.size} values, "
+                             f"{count} x {k} expected")
+        return data.reshape(count, k) if k > 1 else data
+
+    points = values(piece.find("Points/DataArray"), n_points)
+    cells = {a.get("Name"): a for a in piece.findall("Cells/DataArray")}
+    offsets = values(cells["offsets"], n_cells)
+    if not np.array_equal(offsets, 4 * np.arange(1, n_cells + 1)):
+        raise ValueError(f"{path}: only quadrilateral cells are supported")
+    quads = values(cells["connectivity"], 4 * n_cells).reshape(n_cells, 4)
+    return {"points": points.reshape(n_points, 3), "quads": quads,
+            "cells": {a.get("Name"): values(a, n_cells)
+                      for a in piece.findall("CellData/DataArray")},
+            "point_data": {a.get("Name"): values(a, n_points)
+                           for a in piece.findall("PointData/DataArray")}}
+
+
+def field_snapshots(run_dir):
+    """[(t [s], path)] of the runs/<case>/fields_<t>.vtu files of one run, by time."""
+    if not os.path.isdir(run_dir):
+        return []
+    found = []
+    for name in os.listdir(run_dir):
+        if name.startswith("fields_") and name.endswith(".vtu"):
+            try:
+                t = float(name[len("fields_"):-len(".vtu")])
+            except ValueError:
+                continue
+            found.append((t, os.path.join(run_dir, name)))
+    return sorted(found)
+
+
+def _phase(t, h):
+    """Which part of the impact t [s] lies in, from the run's history (contact force > 0)."""
+    times = [x for x, f in zip(h["time_s"], h["contact_force_N"]) if f > 0]
+    if not times:
+        return "no contact"
+    t_on, t_off = times[0], times[-1]
+    t_peak = h["time_s"][max(range(len(h["time_s"])), key=lambda i: h["indentation_m"][i])]
+    if t < t_on:
+        return "before contact"
+    if t > t_off:
+        return "after separation"
+    if abs(t - t_peak) <= 0.1 * (t_off - t_on):
+        return "~max. compression"
+    return "loading" if t < t_peak else "unloading"
+
+
+def fig4_fields(out_dir, fit):
+    """Fig. 4: (a) von Mises stress of the elastic impact, (b) of the elastic-plastic impact and
+    (c) equivalent plastic strain of the elastic-plastic impact, at each field snapshot of the
+    verification_hertz runs (runs/<case>/fields_<t>.vtu), contact region, deformed mesh."""
+    import numpy as np
+    from matplotlib.collections import PolyCollection
+
+    runs = {}
+    for row, h, s in history_runs(out_dir, "verification_hertz"):
+        snaps = field_snapshots(os.path.join(out_dir, "verification_hertz", "runs", row["case_id"]))
+        if snaps and h:
+            elastic = s["config"]["substrate"]["material"]["sigma_y"] is None
+            runs.setdefault("elastic" if elastic else "plastic", (h, s, snaps))
+    rows = []
+    if "elastic" in runs:
+        rows.append(("(a) elastic substrate: von Mises stress [MPa]", runs["elastic"], "von_mises",
+                     1e-6))
+    if "plastic" in runs:
+        sy = runs["plastic"][1]["config"]["substrate"]["material"]["sigma_y"]
+        rows.append((f"(b) sigma_y = {sy / 1e6:g} MPa: von Mises stress [MPa]", runs["plastic"],
+                     "von_mises", 1e-6))
+        rows.append((f"(c) sigma_y = {sy / 1e6:g} MPa: equivalent plastic strain [-]",
+                     runs["plastic"], "plastic_strain", 1.0))
+    if not rows:
+        return None
+    ncol = max(len(r[1][2]) for r in rows)
+    fig = plt.figure(figsize=(3.0 * ncol + 1.2, 3.4 * len(rows)), layout="constrained")
+    subfigs = fig.subfigures(len(rows), 1, squeeze=False)[:, 0]
+    for sub, (label, (h, s, snaps), field, scale) in zip(subfigs, rows):
+        axes = sub.subplots(1, ncol, squeeze=False)[0]
+        # Zoom from the Hertz contact radius at the largest indentation, a = sqrt(R delta_max).
+        a_max = math.sqrt(s["config"]["sphere"]["radius"] * max(max(h["indentation_m"]), 0.0))
+        if a_max <= 0:
+            a_max = 1e-3
+        r_lim, z_lo, z_hi = 3.0 * a_max, -3.0 * a_max, 1.5 * a_max
+        data = []
+        for t, path in snaps:
+            v = read_vtu(path)
+            xy = v["points"][:, :2][v["quads"]]  # (M, 4, 2) [m]
+            c = xy.mean(axis=1)
+            keep = (c[:, 0] <= 1.3 * r_lim) & (c[:, 1] >= z_lo - 0.3 * a_max) & \
+                (c[:, 1] <= z_hi + 0.3 * a_max)
+            data.append((t, xy[keep] * 1e3, np.asarray(v["cells"][field])[keep] * scale))
+        vmax = max((float(d.max()) for _, _, d in data if d.size), default=0.0) or 1.0
+        unit = label.rsplit(" ", 1)[1]
+        for j, ax in enumerate(axes):
+            if j >= len(data):
+                ax.axis("off")
+                continue
+            t, polys, vals = data[j]
+            pc = PolyCollection(polys, array=vals, cmap="jet", edgecolors="face", linewidths=0.2)
+            pc.set_clim(0.0, vmax)
+            ax.add_collection(pc)
+            ax.set_xlim(0.0, r_lim * 1e3)
+            ax.set_ylim(z_lo * 1e3, z_hi * 1e3)
+            ax.set_aspect("equal")
+            ax.set_title(f"t = {t * 1e6:.0f} us, {_phase(t, h)}\n"
+                         f"max in view {vals.max():.3g} {unit}", fontsize=8)
+            ax.set_xlabel("r [mm]", fontsize=8)
+            if j == 0:
+                ax.set_ylabel("z [mm]", fontsize=8)
+            ax.tick_params(labelsize=7)
+        sub.colorbar(pc, ax=axes, shrink=0.9).set_label(label.split(": ")[1], fontsize=8)
+        sub.suptitle(label, fontsize=9, x=0.01, ha="left", weight="bold")
+    fig.suptitle("Fig. 4: fields at 5 m/s near the contact (deformed mesh, sphere above the "
+                 "substrate surface z = 0)", fontsize=10)
+    os.makedirs(os.path.join(out_dir, "figures"), exist_ok=True)
+    fig.savefig(os.path.join(out_dir, "figures", "fig04_fields.png"), dpi=110)
+    plt.close(fig)
+    return "fig04_fields.png"
+
+
 def fig5_energy(out_dir, fit):
     runs = [r for r in history_runs(out_dir, "verification_hertz")
             if r[2]["config"]["substrate"]["material"]["sigma_y"] is not None]

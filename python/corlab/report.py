@@ -393,7 +393,8 @@ def make_report(out_dir):
     fits = fit.get("fits", {})
     figs = {}
     for key, fn in (("fig2", figures.fig2_mesh), ("fig3", figures.fig3_hertz),
-                    ("fig5", figures.fig5_energy), ("fig6", figures.fig6_e_vs_k1),
+                    ("fig4", figures.fig4_fields), ("fig5", figures.fig5_energy),
+                    ("fig6", figures.fig6_e_vs_k1),
                     ("fig7", figures.fig7_fit_error), ("fig8", figures.fig8_a_vs_k2),
                     ("fig9", figures.fig9_rho_vy2), ("fig10", figures.fig10_b_vs_E),
                     ("fig11_12", figures.fig11_12_alumina), ("fig13", figures.fig13_table4),
@@ -443,7 +444,12 @@ solver.</p>
 <h3>Same, with our refitted constants</h3>{err_ours}
 <h2>Verification (paper section 1)</h2>
 {verification_section(out_dir, fit)}
-{img("fig2", "Fig. 2")}{img("fig3", "Fig. 3")}{img("fig5", "Fig. 5")}
+{img("fig2", "Fig. 2")}{img("fig3", "Fig. 3")}
+<p>Fig. 4: fields of the two 5 m/s runs at the <code>output.times</code> of the
+verification_hertz study (runs/&lt;case&gt;/fields_&lt;t&gt;.vtu, open them in ParaView),
+in the deformed configuration near the contact (r up to 3 a_max, a_max = (R delta_max)^1/2);
+element values, one colour scale per row.</p>
+{img("fig4", "Fig. 4")}{img("fig5", "Fig. 5")}
 <h2>Restitution law (paper section 2.1)</h2>
 {img("fig6", "Fig. 6")}{img("fig7", "Fig. 7")}{img("fig8", "Fig. 8")}
 <h2>Yield velocity (paper section 2.2)</h2>

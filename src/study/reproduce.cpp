@@ -17,6 +17,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/simulate.hpp"
+#include "corlab/fem/vtu_writer.hpp"
 #include "corlab/materials/material.hpp"
 #include "corlab/restitution/registry.hpp"
 #include "corlab/study/fit_io.hpp"
@@ -112,7 +113,8 @@ std::string setting_value(const Settings& settings, const std::string& key) {
 }
 
 /// A study whose runs keep their time histories (Figs. 2, 3, 5): runs/<case>/{history.csv,
-/// summary.json}; a run with summary.json is done.
+/// summary.json}, plus fields_<t>.vtu at each `output.times` (Fig. 4; only when it is set); a run
+/// with summary.json is done.
 json run_history_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
   const double t0 = now_s();
   fs::create_directories(dir / "runs");
@@ -146,8 +148,14 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
     try {
       fem::SimulationControl control;
       control.cancel = opt.cancel;
-      const fem::ImpactResult r = fem::simulate(c.config, control);
       fs::create_directories(run_dir);
+      if (!c.config.output.field_times.empty()) {
+        // Field snapshots (Fig. 4) next to the history: runs/<case>/fields_<t>.vtu.
+        control.on_fields = [&run_dir](double time, const fem::FieldSnapshot& snapshot) {
+          fem::write_vtu(run_dir / fmt::format("fields_{:.6e}.vtu", time), snapshot);
+        };
+      }
+      const fem::ImpactResult r = fem::simulate(c.config, control);
       fem::write_history_csv(r.history, run_dir / "history.csv");
       const fs::path tmp = run_dir / "summary.json.tmp";
       fem::write_summary_json(r, c.config, tmp);

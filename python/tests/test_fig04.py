@@ -1,0 +1,82 @@
+"""Fig. 4 of the report: field snapshots written by `corlab reproduce` (verification_hertz with
+output.times) are read back by corlab.figures.read_vtu and drawn by fig4_fields."""
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+from corlab import figures
+
+TINY_HERTZ = """[study]
+name = "verification_hertz"
+description = "tiny Figs. 3-5 for the test"
+[base]
+"impact.velocity" = 5.0
+"mesh.h_min" = 1.5e-3
+"mesh.contact_elements" = 3.0
+"output.history_every" = 5
+"output.times" = "70e-6, 110e-6, 170e-6"
+[[cases]]
+"substrate.sigma_y" = "none"
+[[cases]]
+"substrate.sigma_y" = 500.0e6
+"""
+
+
+def test_fig4_without_snapshots_is_missing(tmp_path):
+    assert figures.fig4_fields(str(tmp_path), {}) is None
+    assert figures.field_snapshots(str(tmp_path / "nothing")) == []
+
+
+@pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
+def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path):
+    studies = tmp_path / "studies" / "quick"
+    studies.mkdir(parents=True)
+    (studies / "verification_hertz.toml").write_text(TINY_HERTZ)
+    out = tmp_path / "out"
+    cmd = [os.environ["CORLAB_BIN"], "reproduce", "--preset", "quick", "--out", str(out),
+           "--studies", str(tmp_path / "studies"), "--only", "verification_hertz", "--jobs", "2",
+           "--quiet"]
+    done = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    runs = {}
+    for row, h, s in figures.history_runs(str(out), "verification_hertz"):
+        run_dir = out / "verification_hertz" / "runs" / row["case_id"]
+        snaps = figures.field_snapshots(str(run_dir))
+        assert [round(t * 1e6) for t, _ in snaps] == [70, 110, 170], os.listdir(run_dir)
+        elastic = s["config"]["substrate"]["material"]["sigma_y"] is None
+        runs["elastic" if elastic else "plastic"] = (h, s, snaps)
+    assert set(runs) == {"elastic", "plastic"}
+
+    for kind, (h, s, snaps) in runs.items():
+        for t, path in snaps:
+            v = figures.read_vtu(path)
+            assert v["quads"].shape == (s["elements"], 4)
+            assert v["points"].shape[1] == 3 and np.isfinite(v["points"]).all()
+            assert v["quads"].min() >= 0 and v["quads"].max() < len(v["points"])
+            body = v["cells"]["body"]
+            assert set(np.unique(body)) == {0.0, 1.0}
+            assert (v["cells"]["von_mises"] >= 0).all()
+            assert v["point_data"]["displacement"].shape == (len(v["points"]), 3)
+            eps = v["cells"]["plastic_strain"]
+            if kind == "elastic":
+                assert (eps == 0).all()
+            if round(t * 1e6) == 110:
+                # deformed configuration: in contact, the sphere's lowest node lies below the
+                # undeformed substrate surface z = 0, and the substrate is loaded
+                sphere_nodes = np.unique(v["quads"][body == 0])
+                assert v["points"][sphere_nodes, 1].min() < 0
+                assert v["cells"]["von_mises"][body == 1].max() > 100e6
+        last = figures.read_vtu(snaps[-1][1])
+        if kind == "plastic":
+            assert last["cells"]["plastic_strain"].max() > 0
+
+    name = figures.fig4_fields(str(out), json.loads((out / "fit.json").read_text()))
+    assert name == "fig04_fields.png"
+    png = out / "figures" / name
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    report = out / "report.html"
+    assert report.exists()
+    assert "figures/fig04_fields.png" in report.read_text()
