@@ -7,6 +7,12 @@
 
 namespace corlab {
 
+namespace {
+// Largest accepted yield strain sigma_y/E [-]: metals yield below ~1 %; 10 % leaves room for
+// polymers and soft alloys while catching unit slips (MPa typed as Pa, or Pa as GPa).
+constexpr double kMaxYieldStrain = 0.1;
+}  // namespace
+
 double Material::dilatational_wave_speed() const { return std::sqrt(p_wave_modulus() / density); }
 
 void validate(const Material& material, std::string_view field_prefix, bool require_yield) {
@@ -16,8 +22,9 @@ void validate(const Material& material, std::string_view field_prefix, bool requ
   require_positive(p + ".rho", material.density, "[kg/m^3]");
   if (material.yield_stress) {
     const double sy = *material.yield_stress;
-    if (!(std::isfinite(sy) && sy > 0.0 && sy < material.youngs_modulus)) {
-      throw_invalid(p + ".sigma_y", sy, "in (0, E) [Pa] (a yield strain above 1 is no metal)");
+    if (!(std::isfinite(sy) && sy > 0.0 && sy < kMaxYieldStrain * material.youngs_modulus)) {
+      throw_invalid(p + ".sigma_y", sy,
+                    "in (0, 0.1 E) [Pa] (a yield strain above 10 % is no metal)");
     }
   } else if (require_yield) {
     throw_invalid(p + ".sigma_y", "missing", "given for an elastic-plastic substrate [Pa]");

@@ -33,8 +33,9 @@ struct Material {
 };
 
 /// Checks every field; throws InputError naming `<field_prefix>.<field>` on the first bad value.
-/// Constraints: E > 0, nu in (-1, 0.5), rho > 0, sigma_y (if set) in (0, E) (a yield strain
-/// above 1 is no metal), H >= 0. `require_yield` demands a yield stress (substrates).
+/// Constraints: E > 0, nu in (-1, 0.5), rho > 0, sigma_y (if set) in (0, 0.1 E)
+/// (a yield strain above 10 % is no metal), H >= 0. `require_yield` demands a yield stress
+/// (substrates).
 void validate(const Material& material, std::string_view field_prefix, bool require_yield = false);
 
 /// Effective (contact) modulus of a pair: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 [Pa]

@@ -85,12 +85,14 @@ TEST(Material, ValidateMessages) {
   m = steel();
   m.yield_stress = 0.0;
   expect_input_error([&] { validate(m, "x"); },
-                     "invalid x.sigma_y = 0: must be in (0, E) [Pa] (a yield strain above 1 is "
-                     "no metal)");
+                     "invalid x.sigma_y = 0: must be in (0, 0.1 E) [Pa] (a yield strain above "
+                     "10 % is no metal)");
   m.yield_stress = 3e11;
   expect_input_error([&] { validate(m, "x"); },
-                     "invalid x.sigma_y = 300000000000: must be in (0, E) [Pa] (a yield strain "
-                     "above 1 is no metal)");
+                     "invalid x.sigma_y = 300000000000: must be in (0, 0.1 E) [Pa] (a yield strain "
+                     "above 10 % is no metal)");
+  m.yield_stress = 0.2 * m.youngs_modulus;  // a plausible unit slip: GPa-scale yield
+  EXPECT_THROW(validate(m, "x"), InputError);
   m = steel();
   m.yield_stress.reset();
   expect_input_error([&] { validate(m, "substrate", true); },
@@ -240,8 +242,8 @@ TEST(MaterialSpec, BadSpecMessages) {
   expect_input_error([] { (void)parse_material_spec("E=1e9,nu=0.7,rho=1", "sphere"); },
                      "invalid sphere.nu = 0.7: must be in (-1, 0.5)");
   expect_input_error([] { (void)parse_material_spec("steel_ma2023,sy=1e12", "substrate"); },
-                     "invalid substrate.sigma_y = 1000000000000: must be in (0, E) [Pa] (a "
-                     "yield strain above 1 is no metal)");
+                     "invalid substrate.sigma_y = 1000000000000: must be in (0, 0.1 E) [Pa] (a "
+                     "yield strain above 10 % is no metal)");
   EXPECT_THROW((void)parse_material_spec("nosuch", "sphere"), InputError);
 }
 

@@ -206,7 +206,7 @@ TEST(RegistryProperties, OneBelowAndContinuousAtYieldVelocity) {
 TEST(RegistryProperties, TendsToOneForLargeYieldStress) {
   for (const auto& name : model_names()) {
     double prev = -1.0;
-    for (double sy : {1e8, 1e9, 5e9, 2e10, 6e10}) {
+    for (double sy : {1e8, 1e9, 3e9, 6.9e9}) {  // up to the validated limit 0.1 E
       Material sub = aluminium();
       sub.youngs_modulus = 7e10;
       sub.yield_stress = sy;
