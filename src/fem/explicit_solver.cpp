@@ -392,6 +392,9 @@ ImpactResult run_impact(const ImpactConfig& config,
     sphere_mass += mass[i] * is_sphere[i];
   }
   double dt = sc.safety_factor * dt_crit;
+  // The penalty is sized from the critical step itself, not from dt: the contact stiffness (and so
+  // the penetration and e) must not change when only the safety factor does.
+  const double dt_crit_initial = dt_crit;
   const double dt_initial = dt;
 
   // Contact: slaves on master segments, per-slave cursor and penalty stiffness.
@@ -410,7 +413,7 @@ ImpactResult run_impact(const ImpactConfig& config,
     const int b = masters[seg + 1];
     const double xi = std::clamp((r[i] - r[a]) / (r[b] - r[a]), 0.0, 1.0);
     const double m_master = (1.0 - xi) * mass[a] + xi * mass[b];
-    k_pen[s] = penalty_stiffness(sc.penalty_scale, mass[i], m_master, dt_initial);
+    k_pen[s] = penalty_stiffness(sc.penalty_scale, mass[i], m_master, dt_crit_initial);
   }
 
   // Time control.
@@ -475,6 +478,10 @@ ImpactResult run_impact(const ImpactConfig& config,
     control.on_fields(time, f);
   };
 
+  // A run cancelled before it starts does no work (the loop polls only every 256 steps).
+  if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
+    throw std::runtime_error("interrupted");
+  }
   while (true) {
     // 1. Nodes: v^{n+1/2}, x^{n+1}; kinetic energy at t^n (product form, exact for the scheme).
     const double dt_avg = 0.5 * (dt_prev + dt);

@@ -63,11 +63,13 @@ struct MeshConfig {
 };
 
 struct SolverConfig {
-  double safety_factor = 0.6;  ///< dt = safety_factor x stable step estimate [-]
+  double safety_factor = 0.8;  ///< dt = safety_factor x stable step estimate [-]
   double hourglass = 0.05;     ///< stiffness hourglass coefficient (Flanagan-Belytschko) [-]
   double bulk_viscosity_linear = 0.06;    ///< b1 [-] (ABAQUS/Explicit default)
   double bulk_viscosity_quadratic = 1.2;  ///< b2 [-] (ABAQUS/Explicit default)
-  double penalty_scale = 0.1;  ///< contact penalty as a fraction of the stability limit [-]
+  /// Contact penalty k = penalty_scale x m_eff (2 / dt_crit)^2, dt_crit = the initial stable step
+  /// estimate (independent of safety_factor) [-]
+  double penalty_scale = 0.28;
   double t_max = 0.0;          ///< hard stop [s]; 0 = 20 x the Hertz contact time
 };
 

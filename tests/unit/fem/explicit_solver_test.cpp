@@ -36,7 +36,7 @@ TEST(ExplicitSolver, ElasticPunchIsStableAndConservesEnergy) {
   // A flat punch chatters at its edge; each penalty opening/closing inside a step leaves an
   // O(k g^2) energy error (measured 0.2 % here), the smooth sphere contact leaves 1e-6.
   EXPECT_LT(r.energy_balance_error, 5e-3);
-  // Bounded energies at every output step (no instability at safety factor 0.6).
+  // Bounded energies at every output step (no instability at the default safety factor).
   for (std::size_t i = 0; i < r.history.time.size(); ++i) {
     ASSERT_LT(r.history.kinetic_energy[i], 1.001 * r.energy_initial) << "row " << i;
     ASSERT_TRUE(std::isfinite(r.history.strain_energy[i]));
