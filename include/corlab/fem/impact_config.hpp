@@ -70,7 +70,7 @@ struct SolverConfig {
   /// Contact penalty k = penalty_scale x m_eff (2 / dt_crit)^2, dt_crit = the initial stable step
   /// estimate (independent of safety_factor) [-]
   double penalty_scale = 0.28;
-  double t_max = 0.0;          ///< hard stop [s]; 0 = 20 x the Hertz contact time
+  double t_max = 0.0;  ///< hard stop [s]; 0 = 20 x the Hertz contact time
 };
 
 struct OutputConfig {
