@@ -370,12 +370,9 @@ def versions():
 
     out = {"python": platform.python_version(), "numpy": numpy.__version__,
            "matplotlib": matplotlib.__version__, "platform": platform.platform()}
-    try:
-        from . import _core
+    from . import _core  # always present: corlab/__init__.py imports it
 
-        out["corlab (python module)"] = _core.__version__
-    except ImportError:
-        pass
+    out["corlab (python module)"] = _core.__version__
     return out
 
 

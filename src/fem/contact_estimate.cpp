@@ -13,6 +13,13 @@ double hertz_contact_time_factor() {
   return 0.8 * std::sqrt(std::numbers::pi) * std::tgamma(0.4) / std::tgamma(0.9);
 }
 
+namespace {
+// m = 4/3 pi R^3 rho [kg].
+double sphere_mass(double radius, double density) {
+  return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * density;
+}
+}  // namespace
+
 HertzReference hertz_reference(double sphere_radius,
                                double effective_modulus,
                                double sphere_density,
@@ -20,7 +27,7 @@ HertzReference hertz_reference(double sphere_radius,
   HertzReference ref;
   const double r = sphere_radius;
   ref.effective_modulus = effective_modulus;
-  ref.mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * sphere_density;
+  ref.mass = sphere_mass(r, sphere_density);
   ref.max_overlap = std::pow(
       15.0 * ref.mass * velocity * velocity / (16.0 * effective_modulus * std::sqrt(r)), 0.4);
   ref.max_force = 4.0 / 3.0 * effective_modulus * std::sqrt(r) * std::pow(ref.max_overlap, 1.5);
@@ -40,7 +47,7 @@ double plastic_contact_radius(double sphere_radius,
                               double velocity,
                               double yield_stress) {
   const double r = sphere_radius;
-  const double mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * sphere_density;
+  const double mass = sphere_mass(r, sphere_density);
   const double mean_pressure = kPlasticMeanPressureFactor * yield_stress;
   // m v^2 / 2 = pi p_m R delta^2  ->  delta; then a^2 = 2 R delta.
   const double delta =

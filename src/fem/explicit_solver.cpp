@@ -131,9 +131,7 @@ constexpr int kBlock = 16;
     eps_p[l] = state.eps_p;
     w_p[l] = vol_mid * inc.plastic_work;
     eps_lane[l] = state.eps_p;
-    w_int[l] = 0.5 * vol_mid *
-               ((s_old.rr + s.rr) * de.rr + (s_old.zz + s.zz) * de.zz + (s_old.tt + s.tt) * de.tt +
-                2.0 * (s_old.rz + s.rz) * de.rz);
+    w_int[l] = 0.5 * vol_mid * (contract(s_old, de) + contract(s, de));
     srr[l] = s.rr;
     szz[l] = s.zz;
     stt[l] = s.tt;
@@ -335,7 +333,6 @@ ImpactResult run_impact(const ImpactConfig& config,
       vz[i] = -v0;
     }
   }
-  const std::vector<double> r_ref(r), z_ref(z);
   for (int i : mesh.axis_nodes) free_r[i] = 0.0;
   for (int i : mesh.base_nodes) {
     free_r[i] = 0.0;
@@ -400,6 +397,7 @@ ImpactResult run_impact(const ImpactConfig& config,
   // Contact: slaves on master segments, per-slave cursor and penalty stiffness.
   const std::vector<int>& slaves = mesh.sphere_surface_nodes;
   const std::vector<int>& masters = mesh.substrate_surface_nodes;
+  const double z_axis_surface = z[masters[0]];  // substrate surface on the axis, for the crater
   const int n_seg = static_cast<int>(masters.size()) - 1;
   const int n_slave = static_cast<int>(slaves.size());
   std::vector<int> cursor(static_cast<std::size_t>(n_slave), 0);
@@ -478,6 +476,7 @@ ImpactResult run_impact(const ImpactConfig& config,
     control.on_fields(time, f);
   };
 
+  const double t_expect = t_start + 1.3 * t_hertz + t_wave;  // for the progress estimate [s]
   // A run cancelled before it starts does no work (the loop polls only every 256 steps).
   if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
     throw std::runtime_error("interrupted");
@@ -617,7 +616,6 @@ ImpactResult run_impact(const ImpactConfig& config,
         throw std::runtime_error("interrupted");
       }
       if (control.progress) {
-        const double t_expect = t_start + 1.3 * t_hertz + t_wave;
         control.progress(std::clamp((t - t_start) / (t_expect - t_start), 0.0, 0.99));
       }
     }
@@ -637,8 +635,7 @@ ImpactResult run_impact(const ImpactConfig& config,
   res.contact_time = touched ? t_last - t_first : 0.0;
   {
     // Residual depth on the axis: the substrate surface node at the smallest r.
-    const int a = masters[0];
-    res.crater_depth = -(z[a] - z_ref[a]);
+    res.crater_depth = z_axis_surface - z[masters[0]];
   }
   res.plastic_strain_max = eps_p_max;
   res.energy_sphere_loss = e0 - final_ke_avg;

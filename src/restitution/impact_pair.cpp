@@ -31,7 +31,7 @@ void require_velocities(std::span<const double> velocities) {
   for (std::size_t i = 0; i < velocities.size(); ++i) {
     const double v = velocities[i];
     if (!(std::isfinite(v) && v > 0.0)) {
-      throw_invalid(fmt::format("velocity[{}]", i), v, "> 0 [m/s]");
+      require_positive(fmt::format("velocity[{}]", i), v, "[m/s]");
     }
   }
 }

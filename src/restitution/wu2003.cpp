@@ -7,11 +7,10 @@
 
 namespace corlab::restitution {
 
-double Wu2003::limiting_pressure() const { return 1.6 * pair.yield_stress; }
+// Wu et al. take Thornton's p_y = 1.6 sigma_y and his yield velocity.
+double Wu2003::limiting_pressure() const { return Thornton1997{.pair = pair}.limiting_pressure(); }
 
-double Wu2003::yield_velocity() const {
-  return thornton_yield_velocity(limiting_pressure(), pair.effective_modulus, pair.sphere_density);
-}
+double Wu2003::yield_velocity() const { return Thornton1997{.pair = pair}.yield_velocity(); }
 
 double Wu2003::cor(double velocity) const {
   const double vy = yield_velocity();

@@ -295,15 +295,13 @@ double our_model(const RestitutionLawFit& law,
                  double E_star,
                  double sigma_y,
                  double v) {
-  const double e = law.alpha.value + law.beta.value * std::log(sigma_y / E_star) +
-                   law.slope.value * std::log(E_star / (rho * v * v));
-  double v_y = crossing_yield_velocity(law.alpha.value, law.beta.value, law.slope.value, rho,
-                                       E_star, sigma_y);
-  if (yv != nullptr && std::isfinite(yv->combined.value)) {
-    v_y = power_law_yield_velocity(yv->combined.value, yv->n_joint.value, yv->m_joint.value, rho,
-                                   E_star, sigma_y);
-  }
-  return v < v_y ? 1.0 : std::clamp(e, 0.0, 1.0);
+  // the log law, 1 below its own e = 1 crossing (for a positive slope: the clamp of the line)
+  const double e = log_law_restitution(law.alpha.value, law.beta.value, law.slope.value, rho,
+                                       E_star, sigma_y, v);
+  if (yv == nullptr || !std::isfinite(yv->combined.value)) return e;
+  const double v_y = power_law_yield_velocity(yv->combined.value, yv->n_joint.value,
+                                              yv->m_joint.value, rho, E_star, sigma_y);
+  return v < v_y ? 1.0 : e;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/simulate.hpp"
@@ -11,8 +12,7 @@ namespace corlab::study {
 
 double hertz_yield_onset_velocity(double sphere_rho, double E_star, double sigma_y) {
   // rho V^2 / Y = (4/5) pi^4 (0.8)^5 (Y/E*)^4 with p0 = 1.6 Y  (models.md section 5.1)
-  constexpr double kPi = 3.14159265358979323846;
-  const double k = 0.8 * kPi * kPi * kPi * kPi * std::pow(0.8, 5);
+  const double k = 0.8 * std::pow(std::numbers::pi, 4) * std::pow(0.8, 5);
   return std::sqrt(k * std::pow(sigma_y, 5) / (sphere_rho * std::pow(E_star, 4)));
 }
 

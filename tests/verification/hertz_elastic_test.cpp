@@ -5,9 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "corlab/core/units.hpp"
+#include "corlab/fem/contact_estimate.hpp"
 #include "corlab/fem/simulate.hpp"
-#include "corlab/materials/material.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -20,13 +19,12 @@ TEST_P(HertzElastic, MatchesHertz) {
   c.impact.velocity = v;
   c.substrate.material.yield_stress = std::nullopt;  // elastic substrate
   const ImpactResult r = simulate(c);
-  // Hertz, computed here independently of the mesh sizing code.
-  const double radius = c.sphere.radius;
-  const double mass = 4.0 / 3.0 * units::kPi * std::pow(radius, 3) * c.sphere.material.density;
-  const double e_star = effective_modulus(c.sphere.material, c.substrate.material);
-  const double delta = std::pow(15.0 * mass * v * v / (16.0 * e_star * std::sqrt(radius)), 0.4);
-  const double force = 4.0 / 3.0 * e_star * std::sqrt(radius) * std::pow(delta, 1.5);
-  const double t_c = 2.9432 * delta / v;  // 2 int_0^1 (1 - x^2.5)^-0.5 dx = 2.9432
+  // Hertz reference (itself checked against an RK4 integration of the Hertz impact in
+  // tests/unit/fem/mesh_contact_estimate_test.cpp).
+  const HertzReference hertz = hertz_reference(c);
+  const double delta = hertz.max_overlap;
+  const double force = hertz.max_force;
+  const double t_c = hertz.contact_time;
   std::printf(
       "v = %.2f m/s: F_max = %.6g N (Hertz %.6g, %+.2f %%), delta_max = %.6g m (Hertz %.6g, "
       "%+.2f %%), t_c = %.6g s (Hertz %.6g, %+.2f %%), e = %.5f, balance = %.2e, elements = "
