@@ -64,36 +64,36 @@ int run_simulate(const SimulateOptions& opt) {
     written.push_back(file.string());
   };
   const auto previous = std::signal(SIGINT, on_sigint);
-  fem::ImpactResult result;
-  try {
-    result = fem::simulate(config, control);
-  } catch (const std::runtime_error& err) {
-    std::signal(SIGINT, previous);
-    if (g_cancel.load()) {
-      fmt::print(stderr, "\ncorlab simulate: interrupted, nothing written\n");
-      return 130;
-    }
-    throw;
-  }
+  const fem::ImpactResult result = fem::simulate(config, control);
   std::signal(SIGINT, previous);
+  if (result.status == fem::RunStatus::kCancelled) {
+    fmt::print(stderr, "\ncorlab simulate: interrupted, nothing written\n");
+    return 130;
+  }
   fem::write_summary_json(result, config, out / "summary.json");
   fem::write_history_csv(result.history, out / "history.csv");
-  if (!result.separated) {
-    fmt::print(stderr,
-               "corlab simulate: warning: the sphere did not separate before t_max = {} s\n",
-               result.end_time);
+  const bool clean = result.status == fem::RunStatus::kSeparated;
+  if (clean) {
+    fmt::print(
+        "e = {:.4f}  e_energy = {:.4f}  F_max = {:.5g} N  delta_max = {:.5g} m  t_contact = {:.5g} "
+        "s  energy_balance_error = {:.2e}  elements = {}  steps = {}  wall = {:.2f} s\n",
+        result.e, result.e_energy, result.force_max, result.indentation_max, result.contact_time,
+        result.energy_balance_error, result.elements, result.steps, result.wall_s);
+  } else {
+    fmt::print(
+        "status = {}  ({})  no restitution coefficient: the run did not end in a clean "
+        "rebound\n",
+        fem::to_string(result.status), result.status_detail);
   }
-  fmt::print(
-      "e = {:.4f}  e_energy = {:.4f}  F_max = {:.5g} N  delta_max = {:.5g} m  t_contact = {:.5g} s "
-      " "
-      "energy_balance_error = {:.2e}  elements = {}  steps = {}  wall = {:.2f} s\n",
-      result.e, result.e_energy, result.force_max, result.indentation_max, result.contact_time,
-      result.energy_balance_error, result.elements, result.steps, result.wall_s);
+  if (!result.suspect.empty()) {
+    fmt::print(stderr, "corlab simulate: warning: suspect run: {}\n", result.suspect);
+  }
   if (!opt.quiet) {
     fmt::print(stderr, "corlab simulate: wrote {}/summary.json, history.csv and {} field file(s)\n",
                out.string(), written.size());
   }
-  return 0;
+  // Exit 4: the run ended without a clean rebound (status in summary.json; README "Errors").
+  return clean ? 0 : 4;
 }
 
 const CommandRegistration kRegistration{Command{

@@ -2,6 +2,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <variant>
@@ -71,6 +72,10 @@ void bind_simulate(py::module_& m) {
             out[py::str(key)] = value.get<long long>();
           } else if (value.is_boolean()) {
             out[py::str(key)] = value.get<bool>();
+          } else if (value.is_string()) {
+            out[py::str(key)] = value.get<std::string>();
+          } else if (value.is_null()) {
+            out[py::str(key)] = std::numeric_limits<double>::quiet_NaN();  // e of a failed run
           }
         }
         out["config"] = py::module_::import("json").attr("loads")(summary["config"].dump());

@@ -71,6 +71,9 @@ nlohmann::json summary_to_json(const ImpactResult& r, const ImpactConfig& config
   j["hysteresis_area"] = r.hysteresis_area;
   j["penetration_max"] = r.penetration_max;
   j["separated"] = r.separated;
+  j["status"] = std::string(to_string(r.status));
+  j["status_detail"] = r.status_detail;
+  j["suspect"] = r.suspect;
   j["elements"] = r.elements;
   j["nodes"] = r.nodes;
   j["steps"] = r.steps;

@@ -117,16 +117,22 @@ std::string format_number(double value) {
   return fmt::format("{}", value);
 }
 
+namespace {
+/// The status column: "ok" for a clean rebound, the run status's name otherwise, "failed" for
+/// a run that threw.
+std::string_view row_status(const fem::ImpactResult* result) {
+  if (result == nullptr) return kStatusFailed;
+  return result->status == fem::RunStatus::kSeparated ? kStatusOk : fem::to_string(result->status);
+}
+}  // namespace
+
 std::vector<std::string> result_row(std::string_view case_id,
                                     const std::vector<std::string>& swept_values,
                                     const fem::ImpactConfig& config,
                                     const fem::ImpactResult* result,
                                     std::string_view error,
                                     double wall_s) {
-  std::vector<std::string> row{std::string(case_id),
-                               std::string(result == nullptr   ? kStatusFailed
-                                           : result->separated ? kStatusOk
-                                                               : kStatusNotSeparated)};
+  std::vector<std::string> row{std::string(case_id), std::string(row_status(result))};
   row.insert(row.end(), swept_values.begin(), swept_values.end());
   if (result != nullptr) {
     const fem::ImpactResult& r = *result;
@@ -158,7 +164,7 @@ std::vector<std::string> result_row(std::string_view case_id,
   row.push_back(format_number(sphere.density));
   row.push_back(format_number(sigma_y));
   row.push_back(format_number(velocity));
-  row.emplace_back(error);
+  row.emplace_back(result != nullptr && error.empty() ? result->status_detail : std::string(error));
   return row;
 }
 

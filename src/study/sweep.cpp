@@ -79,6 +79,10 @@ Outcome execute_case(const std::vector<SweepCase>& cases,
   try {
     const fem::ImpactResult result = runner(run.config, control);
     outcome.wall_s = elapsed();
+    if (result.status == fem::RunStatus::kCancelled) {
+      outcome.status = kInterrupted;
+      return outcome;
+    }
     row = result_row(run.id, swept_values, run.config, &result, "", outcome.wall_s);
   } catch (const std::exception& err) {
     outcome.wall_s = elapsed();
@@ -194,7 +198,14 @@ void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir,
       throw InputError(fmt::format("invalid --out = '{}': must be writable", out_dir.string()));
     std::filesystem::rename(temp, spec_copy);
   }
-  const std::vector<std::string> keep{std::string(kStatusOk), std::string(kStatusNotSeparated)};
+  // Finished rows (the solver is deterministic: a run that ended without a clean rebound ends
+  // the same way again); failed rows (exceptions) are retried.
+  std::vector<std::string> keep{std::string(kStatusOk)};
+  for (const auto status : {fem::RunStatus::kNotSeparated, fem::RunStatus::kStepCollapsed,
+                            fem::RunStatus::kElementInverted, fem::RunStatus::kNonFinite,
+                            fem::RunStatus::kStepBudgetExceeded}) {
+    keep.emplace_back(fem::to_string(status));
+  }
   const ExistingResults existing = prepare_resume(out_dir / "results.csv", plan.header, keep);
   plan.pending.clear();
   plan.already_done = 0;

@@ -12,9 +12,10 @@
 namespace corlab::fem {
 
 /// Runs one impact on `mesh` (laid out as mesh.hpp says: sphere above the substrate at the gap).
-/// The config's mesh.* keys are ignored here. Throws InputError for an invalid config or mesh,
-/// std::runtime_error("interrupted") on cancel, std::runtime_error for a numerical failure
-/// (inverted element).
+/// The config's mesh.* keys are ignored here. Throws InputError for an invalid config or mesh;
+/// every other outcome (clean rebound, no rebound by t_max, inverted element, collapsed step,
+/// non-finite state, step budget, cancel) is the result's `status` (run_status.hpp), and e is
+/// NaN unless the status is kSeparated.
 ImpactResult run_impact(const ImpactConfig& config,
                         const Mesh& mesh,
                         const SimulationControl& control = {});

@@ -71,6 +71,8 @@ struct SolverConfig {
   /// estimate (independent of safety_factor) [-]
   double penalty_scale = 0.28;
   double t_max = 0.0;  ///< hard stop [s]; 0 = 20 x the Hertz contact time
+  /// Step budget: a run needing more steps ends with status step_budget_exceeded [-].
+  long long max_steps = 20'000'000;
 };
 
 struct OutputConfig {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "corlab/fem/run_status.hpp"
+
 namespace corlab::fem {
 
 /// Time histories, one entry per output row (structure of arrays).
@@ -23,8 +25,13 @@ struct ImpactHistory {
 };
 
 struct ImpactResult {
-  double e = 0.0;                   ///< CoR from momentum: rebound / impact c.o.m. velocity [-]
-  double e_energy = 0.0;            ///< CoR from the sphere's rebound kinetic energy [-]
+  RunStatus status = RunStatus::kNotSeparated;  ///< how the run ended (run_status.hpp)
+  std::string status_detail;  ///< one line on a status other than separated (else empty)
+  std::string suspect;        ///< why the run is suspect (run_quality.hpp), empty when it is not
+  double e =
+      0.0;  ///< CoR from momentum: rebound / impact c.o.m. velocity [-]; NaN unless separated
+  double e_energy =
+      0.0;  ///< CoR from the sphere's rebound kinetic energy [-]; NaN unless separated
   double force_max = 0.0;           ///< F_max [N]
   double indentation_max = 0.0;     ///< delta_max [m]
   double contact_time = 0.0;        ///< duration of contact [s]
@@ -38,7 +45,7 @@ struct ImpactResult {
   double energy_balance_error = 0.0;       ///< max over the run of |balance| / initial [-]
   double hysteresis_area = 0.0;            ///< closed integral of F d(delta) [J]
   double penetration_max = 0.0;            ///< largest penalty penetration of a slave [m]
-  bool separated = false;                  ///< false if t_max was reached before the sphere left
+  bool separated = false;                  ///< status == kSeparated (kept for the output schema)
   int elements = 0;
   int nodes = 0;
   long long steps = 0;

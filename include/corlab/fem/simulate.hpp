@@ -14,8 +14,7 @@
 namespace corlab::fem {
 
 struct SimulationControl {
-  /// Polled every few hundred steps; when it turns true the run stops and throws
-  /// std::runtime_error("interrupted").
+  /// Polled every few hundred steps; when it turns true the run stops with status kCancelled.
   const std::atomic<bool>* cancel = nullptr;
   /// Called now and then with the fraction done (estimate, 0..1).
   std::function<void(double)> progress;

@@ -63,7 +63,10 @@ TEST(ExplicitSolver, CancelStopsTheRun) {
   std::atomic<bool> cancel{true};
   SimulationControl control;
   control.cancel = &cancel;
-  EXPECT_THROW(run_impact(punch_config(2.0, false), punch(), control), std::runtime_error);
+  const ImpactResult r = run_impact(punch_config(2.0, false), punch(), control);
+  EXPECT_EQ(r.status, RunStatus::kCancelled);
+  EXPECT_EQ(r.steps, 0);
+  EXPECT_TRUE(std::isnan(r.e));
 }
 
 TEST(ExplicitSolver, FieldsAndProgressAreReported) {
@@ -90,6 +93,53 @@ TEST(ExplicitSolver, RejectsBadMeshes) {
   EXPECT_THROW(run_impact(punch_config(2.0, false), m), InputError);
   Mesh empty;
   EXPECT_THROW(run_impact(punch_config(2.0, false), empty), InputError);
+}
+
+}  // namespace
+}  // namespace corlab::fem
+
+namespace corlab::fem {
+namespace {
+
+// Run outcomes as statuses (run_status.hpp): never an e for a run that did not rebound cleanly.
+TEST(ExplicitSolverStatus, StepBudgetEndsTheRun) {
+  ImpactConfig c = punch_config(2.0, false);
+  c.solver.max_steps = 10;
+  const ImpactResult r = run_impact(c, punch());
+  EXPECT_EQ(r.status, RunStatus::kStepBudgetExceeded);
+  EXPECT_EQ(r.steps, 10);
+  EXPECT_TRUE(std::isnan(r.e));
+  EXPECT_TRUE(std::isnan(r.e_energy));
+  EXPECT_NE(r.status_detail.find("solver.max_steps"), std::string::npos);
+}
+
+TEST(ExplicitSolverStatus, TMaxDuringContactIsNotSeparated) {
+  ImpactConfig c = punch_config(2.0, false);
+  const ImpactResult full = run_impact(c, punch());
+  ASSERT_EQ(full.status, RunStatus::kSeparated);
+  c.solver.t_max = 0.5 * full.contact_time;
+  const ImpactResult r = run_impact(c, punch());
+  EXPECT_EQ(r.status, RunStatus::kNotSeparated);
+  EXPECT_FALSE(r.separated);
+  EXPECT_TRUE(std::isnan(r.e));  // not -1 or -0.5 as a rebound
+  EXPECT_NE(r.status_detail.find("t_max"), std::string::npos);
+}
+
+TEST(ExplicitSolverStatus, CleanRunIsNotSuspect) {
+  const ImpactResult r = run_impact(punch_config(2.0, true), punch());
+  EXPECT_EQ(r.status, RunStatus::kSeparated);
+  EXPECT_TRUE(std::isfinite(r.e));
+  EXPECT_GT(r.e, 0.0);
+  EXPECT_EQ(r.suspect, "");
+}
+
+TEST(ExplicitSolverStatus, SoftPenaltyIsSuspect) {
+  ImpactConfig c = punch_config(2.0, true);
+  c.solver.penalty_scale = 1e-3;  // the contact sinks into the substrate (issue 12)
+  const ImpactResult r = run_impact(c, punch());
+  ASSERT_EQ(r.status, RunStatus::kSeparated);
+  EXPECT_GT(r.penetration_max, 0.1 * r.indentation_max);
+  EXPECT_NE(r.suspect.find("penetration"), std::string::npos) << r.suspect;
 }
 
 }  // namespace

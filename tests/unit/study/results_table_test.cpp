@@ -80,6 +80,7 @@ TEST(ResultsTable, HeaderAndRowLayout) {
   fem::ImpactResult result;
   result.e = 0.5;
   result.separated = true;
+  result.status = fem::RunStatus::kSeparated;
   result.elements = 12;
   result.steps = 345;
   result.wall_s = 1.25;
@@ -99,7 +100,13 @@ TEST(ResultsTable, HeaderAndRowLayout) {
   EXPECT_EQ(table.numbers("sigma_y")[0], 500e6);
 
   result.separated = false;
+  result.status = fem::RunStatus::kNotSeparated;
   EXPECT_EQ(result_row("c1", {"s", "5"}, config, &result, "", 0)[1], "not_separated");
+  result.status = fem::RunStatus::kElementInverted;
+  result.status_detail = "element 3 inverted at t = 1e-05 s (step 7)";
+  const auto inverted = result_row("c1", {"s", "5"}, config, &result, "", 0);
+  EXPECT_EQ(inverted[1], "element_inverted");
+  EXPECT_EQ(inverted.back(), result.status_detail);
   const auto failed = result_row("c2", {"steel", "5"}, config, nullptr, "boom, badly", 2.5);
   ASSERT_EQ(failed.size(), header.size());
   const ResultsTable failed_table(header, {failed});

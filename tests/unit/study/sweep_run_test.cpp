@@ -79,6 +79,7 @@ struct FakeSolver {
       r.e_energy = r.e * r.e;
       r.force_max = v * 100.0;
       r.separated = v != not_separated_at_velocity;
+      r.status = r.separated ? fem::RunStatus::kSeparated : fem::RunStatus::kNotSeparated;
       r.elements = 100;
       r.steps = 1000;
       r.wall_s = 0.001;
@@ -284,6 +285,7 @@ TEST(Sweep, TwoSweepsCannotShareADirectoryAtOnce) {
     while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     fem::ImpactResult r;
     r.separated = true;
+    r.status = fem::RunStatus::kSeparated;
     return r;
   };
   std::thread first([&] { run_sweep(spec, out, slow); });

@@ -1,0 +1,216 @@
+// The solver's hot loops (see element_loop.hpp). Compiled with -fopenmp-simd -fno-math-errno
+// (src/CMakeLists.txt) so that the lane loops vectorise.
+#include "fem/solver/element_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "corlab/core/units.hpp"
+#include "corlab/fem/axisym_quad4.hpp"
+#include "corlab/fem/bulk_viscosity.hpp"
+#include "corlab/fem/hourglass.hpp"
+#include "corlab/fem/objective_rate.hpp"
+#include "corlab/fem/stable_time_step.hpp"
+
+namespace corlab::fem::solver {
+namespace {
+
+constexpr double kTwoPi = 2.0 * units::kPi;
+
+// Hot loops are compiled for AVX-512 (x86-64-v4), AVX2 (v3) and the baseline; the dynamic loader
+// picks the best the CPU has (GCC function multiversioning). Elsewhere: the baseline only.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && __GNUC__ >= 12
+#define CORLAB_SIMD_CLONES [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]]
+#else
+#define CORLAB_SIMD_CLONES
+#endif
+
+// Elements per block of the element loop: gathered into lane arrays, computed lane-parallel
+// (the pure kernels, inlined, vectorised across elements), then scattered.
+constexpr int kBlock = 16;
+
+// The lane-parallel part of one block of nb <= kBlock elements: stress update at the mid-step
+// geometry x^{n+1/2}, internal + hourglass forces at x^{n+1}, stable step. f_r/f_z receive f_int.
+[[gnu::always_inline]] inline void element_block(const BodyParams& p,
+                                                 int nb,
+                                                 const double* __restrict xr,
+                                                 const double* __restrict xz,
+                                                 const double* __restrict ur,
+                                                 const double* __restrict uz,
+                                                 double* __restrict srr,
+                                                 double* __restrict szz,
+                                                 double* __restrict stt,
+                                                 double* __restrict srz,
+                                                 double* __restrict eps_p,
+                                                 double* __restrict qr,
+                                                 double* __restrict qz,
+                                                 double* __restrict f_r,
+                                                 double* __restrict f_z,
+                                                 double dt,
+                                                 ElementSums& sums) {
+  const J2Plasticity mat = p.material;
+  const double shear = mat.shear_modulus;
+  const double rho = p.density;
+  const double c = p.wave_speed;
+  const double kappa = p.hourglass;
+  const double b1 = p.b1;
+  const double b2 = p.b2;
+  // Per-lane results (no reductions inside the loop, so it vectorises without reassociation).
+  alignas(64) double w_int[kBlock], w_p[kBlock], w_hg[kBlock], w_v[kBlock];
+  alignas(64) double dt_lane[kBlock], eps_lane[kBlock], omega_lane[kBlock];
+#pragma GCC ivdep
+  for (int l = 0; l < nb; ++l) {
+    double r[4], z[4], vr[4], vz[4], mr[4], mz[4];
+#pragma GCC unroll 4
+    for (int i = 0; i < 4; ++i) {
+      r[i] = xr[i * kBlock + l];
+      z[i] = xz[i * kBlock + l];
+      vr[i] = ur[i * kBlock + l];
+      vz[i] = uz[i * kBlock + l];
+      mr[i] = r[i] - 0.5 * dt * vr[i];
+      mz[i] = z[i] - 0.5 * dt * vz[i];
+    }
+    // Rates at the mid-step configuration; objective (Hughes-Winget) stress update.
+    const Quad4Geometry gm = quad4_geometry(mr, mz);
+    const StrainRate rate = quad4_strain_rate(gm, vr, vz);
+    AxisymTensor s{srr[l], szz[l], stt[l], srz[l]};
+    rotate_hughes_winget(s, rate.spin * dt);
+    const AxisymTensor s_old = s;
+    const AxisymTensor de{rate.d.rr * dt, rate.d.zz * dt, rate.d.tt * dt, rate.d.rz * dt};
+    const double vol_mid = kTwoPi * gm.omega;
+    J2Plasticity::State state{eps_p[l]};
+    const J2Plasticity::Increment inc = mat.update(s, state, de);
+    eps_p[l] = state.eps_p;
+    w_p[l] = vol_mid * inc.plastic_work;
+    eps_lane[l] = state.eps_p;
+    w_int[l] = 0.5 * vol_mid * (contract(s_old, de) + contract(s, de));
+    srr[l] = s.rr;
+    szz[l] = s.zz;
+    stt[l] = s.tt;
+    srz[l] = s.rz;
+    // Forces and stable step at x^{n+1}.
+    const Quad4Geometry g = quad4_geometry(r, z);
+    omega_lane[l] = std::min(g.omega, g.area);
+    const double length = characteristic_length(g);
+    const double evol = trace(rate.d);
+    const double s_bv = bulk_viscous_stress(evol, rho, c, length, b1, b2);
+    w_v[l] = vol_mid * s_bv * evol * dt;
+    s.rr += s_bv;
+    s.zz += s_bv;
+    s.tt += s_bv;
+    double fr[4], fz[4];
+    quad4_internal_forces(g, s, fr, fz);
+    double gamma[4];
+    hourglass_shape(g, r, z, gamma);
+    const double k_hg =
+        hourglass_stiffness(kappa, shear, kTwoPi * g.omega, quad4_gradient_norm2(g));
+    double q_r = qr[l];
+    double q_z = qz[l];
+    w_hg[l] = hourglass_update(gamma, vr, vz, k_hg, dt, q_r, q_z, fr, fz);
+    qr[l] = q_r;
+    qz[l] = q_z;
+#pragma GCC unroll 4
+    for (int i = 0; i < 4; ++i) {
+      f_r[i * kBlock + l] = fr[i];
+      f_z[i * kBlock + l] = fz[i];
+    }
+    const double xi = bulk_viscous_damping_ratio(evol, c, length, b1, b2);
+    dt_lane[l] = element_stable_time_step(length, c, xi);
+  }
+  for (int l = 0; l < nb; ++l) {
+    sums.internal_work += w_int[l];
+    sums.plastic_work += w_p[l];
+    sums.hourglass_work += w_hg[l];
+    sums.viscous_work += w_v[l];
+    sums.dt_min = std::min(sums.dt_min, dt_lane[l]);
+    sums.eps_p_max = std::max(sums.eps_p_max, eps_lane[l]);
+    sums.omega_min = std::min(sums.omega_min, omega_lane[l]);
+  }
+}
+
+// One pass over the elements [begin, end) of one body; fr/fz (nodal) receive -f_int. Compiled
+// for AVX-512, AVX2 and the baseline (the block kernel is inlined into each); the loader picks
+// the best the CPU has.
+}  // namespace
+
+CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
+                                     ElementState& es,
+                                     int begin,
+                                     int end,
+                                     const double* __restrict r,
+                                     const double* __restrict z,
+                                     const double* __restrict vr,
+                                     const double* __restrict vz,
+                                     double* __restrict fr_out,
+                                     double* __restrict fz_out,
+                                     double dt,
+                                     ElementSums& sums) {
+  alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
+  alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
+  for (int e0 = begin; e0 < end; e0 += kBlock) {
+    const int nb = std::min(kBlock, end - e0);
+    const std::array<int, 4>* nd = es.nodes.data() + e0;
+    for (int l = 0; l < nb; ++l) {
+#pragma GCC unroll 4
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        xr[i][l] = r[n];
+        xz[i][l] = z[n];
+        ur[i][l] = vr[n];
+        uz[i][l] = vz[n];
+      }
+    }
+    const double omega_before = sums.omega_min;
+    element_block(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
+                  es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0, es.eps_p.data() + e0,
+                  es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0], &f_z[0][0], dt, sums);
+    if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
+    for (int l = 0; l < nb; ++l) {
+#pragma GCC unroll 4
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        fr_out[n] -= f_r[i][l];
+        fz_out[n] -= f_z[i][l];
+      }
+    }
+  }
+}
+
+// Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
+// dt v^{n+1/2}, forces zeroed for the next assembly. Vectorised (simd reductions), cloned.
+CORLAB_SIMD_CLONES NodeSums node_update(int nn,
+                                        double dt,
+                                        double dt_avg,
+                                        double* __restrict pr,
+                                        double* __restrict pz,
+                                        double* __restrict pvr,
+                                        double* __restrict pvz,
+                                        double* __restrict pfr,
+                                        double* __restrict pfz,
+                                        const double* __restrict pm,
+                                        const double* __restrict pim,
+                                        const double* __restrict pfree_r,
+                                        const double* __restrict pfree_z,
+                                        const double* __restrict psph) {
+  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
+#pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
+  for (int i = 0; i < nn; ++i) {
+    const double vr_new = (pvr[i] + dt_avg * pfr[i] * pim[i]) * pfree_r[i];
+    const double vz_new = (pvz[i] + dt_avg * pfz[i] * pim[i]) * pfree_z[i];
+    const double k_i = 0.5 * pm[i] * (pvr[i] * vr_new + pvz[i] * vz_new);
+    ke += k_i;
+    ke_sphere += k_i * psph[i];
+    p_sphere += pm[i] * vz_new * psph[i];
+    pvr[i] = vr_new;
+    pvz[i] = vz_new;
+    pr[i] += dt * vr_new;
+    const double z_new = pz[i] + dt * vz_new;
+    pz[i] = z_new;
+    mz_sphere += pm[i] * z_new * psph[i];
+    pfr[i] = 0.0;
+    pfz[i] = 0.0;
+  }
+  return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
+}
+
+}  // namespace corlab::fem::solver

@@ -1,0 +1,92 @@
+#pragma once
+/// @file element_loop.hpp
+/// The solver's two hot loops over structure-of-arrays state: the element loop (stress update,
+/// internal and hourglass forces, stable step; the pure kernels of axisym_quad4.hpp,
+/// j2_plasticity.hpp, objective_rate.hpp, hourglass.hpp, bulk_viscosity.hpp and
+/// stable_time_step.hpp inlined and vectorised across elements) and the central-difference nodal
+/// update. Private to the solver (src/fem/solver).
+
+#include <array>
+#include <limits>
+#include <vector>
+
+#include "corlab/fem/j2_plasticity.hpp"
+
+namespace corlab::fem::solver {
+
+// Constant per-body parameters of the element loop.
+struct BodyParams {
+  J2Plasticity material;
+  double density = 0.0;     // [kg/m^3]
+  double wave_speed = 0.0;  // c_d [m/s]
+  double hourglass = 0.0;   // kappa [-]
+  double b1 = 0.0;
+  double b2 = 0.0;
+};
+
+// Structure-of-arrays element state, elements of one body contiguous.
+struct ElementState {
+  std::vector<std::array<int, 4>> nodes;
+  std::vector<double> srr, szz, stt, srz;  // Cauchy stress [Pa]
+  std::vector<double> eps_p;               // equivalent plastic strain [-]
+  std::vector<double> qr, qz;              // hourglass generalised forces [N]
+  void resize(std::size_t n) {
+    nodes.resize(n);
+    for (auto* v : {&srr, &szz, &stt, &srz, &eps_p, &qr, &qz}) v->assign(n, 0.0);
+  }
+};
+
+// Per-step sums returned by the element loop.
+struct ElementSums {
+  double internal_work = 0.0;
+  double plastic_work = 0.0;
+  double hourglass_work = 0.0;
+  double viscous_work = 0.0;
+  double eps_p_max = 0.0;
+  double dt_min = std::numeric_limits<double>::infinity();
+  double omega_min = std::numeric_limits<double>::infinity();  // smallest volume or area
+  int bad_element = -1;  // first element of the block holding an inverted element
+};
+
+// Sums of the nodal update.
+struct NodeSums {
+  double ke = 0.0;         // kinetic energy at t^n, product form [J]
+  double ke_sphere = 0.0;  // same, sphere nodes only [J]
+  double p_sphere = 0.0;   // sphere z-momentum at t^{n+1/2} [kg m/s]
+  double mz_sphere = 0.0;  // sum of m z over the sphere at t^{n+1} [kg m]
+};
+
+/// One pass over the elements [begin, end) of one body (all with parameters `p`) at the nodal
+/// positions r, z [m] and velocities vr, vz [m/s]; fr_out/fz_out (nodal) receive -f_int [N].
+/// Stresses are updated at the mid-step geometry, forces and the stable step at x^{n+1}.
+void element_loop(const BodyParams& p,
+                  ElementState& es,
+                  int begin,
+                  int end,
+                  const double* __restrict r,
+                  const double* __restrict z,
+                  const double* __restrict vr,
+                  const double* __restrict vz,
+                  double* __restrict fr_out,
+                  double* __restrict fz_out,
+                  double dt,
+                  ElementSums& sums);
+
+/// Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
+/// dt v^{n+1/2}, forces zeroed for the next assembly; dt, dt_avg [s].
+NodeSums node_update(int nn,
+                     double dt,
+                     double dt_avg,
+                     double* __restrict pr,
+                     double* __restrict pz,
+                     double* __restrict pvr,
+                     double* __restrict pvz,
+                     double* __restrict pfr,
+                     double* __restrict pfz,
+                     const double* __restrict pm,
+                     const double* __restrict pim,
+                     const double* __restrict pfree_r,
+                     const double* __restrict pfree_z,
+                     const double* __restrict psph);
+
+}  // namespace corlab::fem::solver

@@ -1,0 +1,213 @@
+// ImpactModel: the constant data of one run, and the initial state.
+#include "fem/solver/impact_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
+#include "corlab/fem/axisym_quad4.hpp"
+#include "corlab/fem/contact_estimate.hpp"
+#include "corlab/fem/contact_search.hpp"
+#include "corlab/fem/penalty_contact.hpp"
+#include "corlab/fem/stable_time_step.hpp"
+#include "fem/solver/impact_state.hpp"
+
+namespace corlab::fem::solver {
+namespace {
+
+constexpr double kTwoPi = 2.0 * units::kPi;
+/// Default hard stop when solver.t_max = 0, in Hertz contact times after the start [-].
+constexpr double kDefaultDurationInContactTimes = 20.0;
+/// Expected end (for the progress estimate only), in Hertz contact times [-].
+constexpr double kExpectedDurationInContactTimes = 1.3;
+/// Sphere wave transits in the shortest separation window [-].
+constexpr double kWaveTransits = 4.0;
+
+BodyParams body_params(const Material& m, const SolverConfig& s) {
+  BodyParams p;
+  p.material = J2Plasticity::from(m);
+  p.density = m.density;
+  p.wave_speed = m.dilatational_wave_speed();
+  p.hourglass = s.hourglass;
+  p.b1 = s.bulk_viscosity_linear;
+  p.b2 = s.bulk_viscosity_quadratic;
+  return p;
+}
+
+void check_node_set(const std::vector<int>& set, const char* name, int nn) {
+  for (int n : set) {
+    if (n < 0 || n >= nn) throw_invalid(name, n, fmt::format("a node index in [0, {})", nn));
+  }
+}
+
+void check_mesh(const Mesh& mesh) {
+  const int nn = mesh.num_nodes();
+  const int ne = mesh.num_elements();
+  if (nn == 0 || ne == 0) throw_invalid("mesh", "empty", "at least one element per body");
+  if (static_cast<int>(mesh.z.size()) != nn || static_cast<int>(mesh.node_body.size()) != nn ||
+      static_cast<int>(mesh.element_body.size()) != ne) {
+    throw_invalid("mesh", "inconsistent array sizes", "r, z, node_body of nnode entries");
+  }
+  for (const auto& q : mesh.quads) {
+    for (int n : q) {
+      if (n < 0 || n >= nn) throw_invalid("mesh element node", n, fmt::format("in [0, {})", nn));
+    }
+  }
+  check_node_set(mesh.axis_nodes, "mesh.axis_nodes", nn);
+  check_node_set(mesh.base_nodes, "mesh.base_nodes", nn);
+  check_node_set(mesh.sphere_surface_nodes, "mesh.sphere_surface_nodes", nn);
+  check_node_set(mesh.substrate_surface_nodes, "mesh.substrate_surface_nodes", nn);
+  if (mesh.sphere_surface_nodes.empty()) {
+    throw_invalid("mesh.sphere_surface_nodes", "empty", "the contact slave nodes");
+  }
+  if (mesh.substrate_surface_nodes.size() < 2) {
+    throw_invalid("mesh.substrate_surface_nodes", "fewer than 2", "the contact master surface");
+  }
+}
+
+/// Nodal positions, free flags and body flags; the sphere starts translated down by the gap.
+void set_nodes(const ImpactConfig& config, const Mesh& mesh, ImpactModel& m) {
+  const int nn = m.n_nodes;
+  m.r0 = mesh.r;
+  m.z0 = mesh.z;
+  m.free_r.assign(nn, 1.0);
+  m.free_z.assign(nn, 1.0);
+  m.is_sphere.assign(nn, 0.0);
+  for (int i = 0; i < nn; ++i) {
+    if (mesh.node_body[i] == Body::kSphere) {
+      m.is_sphere[i] = 1.0;
+      m.z0[i] -= config.impact.gap;
+    }
+  }
+  for (int i : mesh.axis_nodes) m.free_r[i] = 0.0;
+  for (int i : mesh.base_nodes) {
+    m.free_r[i] = 0.0;
+    m.free_z[i] = 0.0;
+  }
+}
+
+/// Elements sorted by body (sphere first), so that each body's loop runs over one range.
+void sort_elements(const Mesh& mesh, ImpactModel& m) {
+  m.element_nodes.clear();
+  m.original_element.clear();
+  for (const Body want : {Body::kSphere, Body::kSubstrate}) {
+    for (int e = 0; e < m.n_elements; ++e) {
+      if (mesh.element_body[e] != want) continue;
+      m.element_nodes.push_back(mesh.quads[e]);
+      m.original_element.push_back(e);
+    }
+    if (want == Body::kSphere) m.n_sphere_elements = static_cast<int>(m.element_nodes.size());
+  }
+}
+
+/// Lumped masses (rho V / 4 per node, V = 2 pi Omega exact) and the initial stable step.
+void set_masses(ImpactModel& m) {
+  m.mass.assign(m.n_nodes, 0.0);
+  m.dt_critical = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < m.n_elements; ++e) {
+    const auto& nd = m.element_nodes[e];
+    double xr[4], xz[4];
+    for (int i = 0; i < 4; ++i) {
+      xr[i] = m.r0[nd[i]];
+      xz[i] = m.z0[nd[i]];
+    }
+    const Quad4Geometry g = quad4_geometry(xr, xz);
+    if (!(g.area > 0.0 && g.omega > 0.0)) {
+      throw_invalid("mesh element", m.original_element[e],
+                    "counter-clockwise with positive area and volume");
+    }
+    const BodyParams& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
+    const double mass = p.density * kTwoPi * g.omega / 4.0;
+    for (int i = 0; i < 4; ++i) m.mass[nd[i]] += mass;
+    m.dt_critical = std::min(
+        m.dt_critical, element_stable_time_step(characteristic_length(g), p.wave_speed, p.b1));
+  }
+  m.inv_mass.assign(m.n_nodes, 0.0);
+  m.sphere_mass = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i) {
+    if (!(m.mass[i] > 0.0)) throw_invalid("mesh node", i, "part of at least one element");
+    m.inv_mass[i] = 1.0 / m.mass[i];
+    m.sphere_mass += m.mass[i] * m.is_sphere[i];
+  }
+}
+
+/// Penalty stiffness per slave, sized from the critical step itself (not from dt), so that the
+/// contact stiffness (and so the penetration and e) does not change with the safety factor.
+void set_penalties(const SolverConfig& sc, ImpactModel& m) {
+  m.penalty.assign(m.slaves.size(), 0.0);
+  for (std::size_t s = 0; s < m.slaves.size(); ++s) {
+    const int i = m.slaves[s];
+    const int seg = initial_segment(m.r0.data(), m.masters, m.r0[i]);
+    const int a = m.masters[seg];
+    const int b = m.masters[seg + 1];
+    const double xi = std::clamp((m.r0[i] - m.r0[a]) / (m.r0[b] - m.r0[a]), 0.0, 1.0);
+    const double m_master = (1.0 - xi) * m.mass[a] + xi * m.mass[b];
+    m.penalty[s] = penalty_stiffness(sc.penalty_scale, m.mass[i], m_master, m.dt_critical);
+  }
+}
+
+void set_time_scales(const ImpactConfig& config, ImpactModel& m) {
+  const SolverConfig& sc = config.solver;
+  m.velocity = config.impact.velocity;
+  m.safety_factor = sc.safety_factor;
+  m.dt_initial = sc.safety_factor * m.dt_critical;
+  m.t_start = config.impact.gap / m.velocity;
+  const double t_hertz = hertz_reference(config).contact_time;
+  m.t_max = sc.t_max > 0.0 ? sc.t_max : m.t_start + kDefaultDurationInContactTimes * t_hertz;
+  m.t_wave = kWaveTransits * config.sphere.radius / m.sphere.wave_speed;
+  m.t_expected = m.t_start + kExpectedDurationInContactTimes * t_hertz + m.t_wave;
+  m.energy_initial = 0.5 * m.sphere_mass * m.velocity * m.velocity;
+  double mz = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i) mz += m.mass[i] * m.z0[i] * m.is_sphere[i];
+  m.z_com_start = mz / m.sphere_mass;
+  m.max_steps = sc.max_steps;
+}
+
+}  // namespace
+
+ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
+  validate(config);
+  check_mesh(mesh);
+  ImpactModel m;
+  m.n_nodes = mesh.num_nodes();
+  m.n_elements = mesh.num_elements();
+  m.sphere = body_params(config.sphere.material, config.solver);
+  m.substrate = body_params(config.substrate.material, config.solver);
+  set_nodes(config, mesh, m);
+  sort_elements(mesh, m);
+  set_masses(m);
+  m.slaves = mesh.sphere_surface_nodes;
+  m.masters = mesh.substrate_surface_nodes;
+  set_penalties(config.solver, m);
+  set_time_scales(config, m);
+  return m;
+}
+
+ImpactState make_initial_state(const ImpactModel& m) {
+  ImpactState s;
+  s.r = m.r0;
+  s.z = m.z0;
+  s.vr.assign(m.n_nodes, 0.0);
+  s.vz.assign(m.n_nodes, 0.0);
+  for (int i = 0; i < m.n_nodes; ++i) {
+    if (m.is_sphere[i] != 0.0) s.vz[i] = -m.velocity;
+  }
+  s.fr.assign(m.n_nodes, 0.0);
+  s.fz.assign(m.n_nodes, 0.0);
+  s.elements.resize(static_cast<std::size_t>(m.n_elements));
+  s.elements.nodes = m.element_nodes;
+  s.cursor.resize(m.slaves.size());
+  for (std::size_t k = 0; k < m.slaves.size(); ++k) {
+    s.cursor[k] = initial_segment(m.r0.data(), m.masters, m.r0[m.slaves[k]]);
+  }
+  s.t = m.t_start;
+  s.dt = m.dt_initial;
+  s.sphere_velocity = -m.velocity;
+  return s;
+}
+
+}  // namespace corlab::fem::solver

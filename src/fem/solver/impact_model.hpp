@@ -1,0 +1,49 @@
+#pragma once
+/// @file impact_model.hpp
+/// The constant part of one impact run (what MuJoCo calls the model, Laghos the operator's
+/// data): element connectivity ordered by body, material parameters, lumped masses, boundary
+/// conditions, the contact pairing and penalty stiffnesses, and the run's time scales. Built once
+/// from the config and the mesh; never changed by a step.
+
+#include <array>
+#include <vector>
+
+#include "corlab/fem/impact_config.hpp"
+#include "corlab/fem/mesh.hpp"
+#include "fem/solver/element_loop.hpp"
+
+namespace corlab::fem::solver {
+
+struct ImpactModel {
+  int n_nodes = 0;
+  int n_elements = 0;
+  int n_sphere_elements = 0;                      ///< elements [0, n) are the sphere's
+  std::vector<std::array<int, 4>> element_nodes;  ///< sphere elements first, then substrate
+  std::vector<int> original_element;              ///< mesh index of each (sorted) element
+  BodyParams sphere;
+  BodyParams substrate;
+  std::vector<double> r0, z0;          ///< nodal positions at the start (sphere at contact) [m]
+  std::vector<double> mass, inv_mass;  ///< lumped masses [kg] and their inverses [1/kg]
+  std::vector<double> free_r, free_z;  ///< 1 where the dof is free, 0 where fixed [-]
+  std::vector<double> is_sphere;       ///< 1 on sphere nodes, 0 on substrate nodes [-]
+  std::vector<int> slaves;             ///< sphere surface nodes (contact slaves)
+  std::vector<int> masters;            ///< substrate surface nodes, increasing r
+  std::vector<double> penalty;         ///< penalty stiffness of each slave [N/m]
+  double sphere_mass = 0.0;            ///< [kg]
+  double velocity = 0.0;               ///< impact speed v0 [m/s]
+  double energy_initial = 0.0;         ///< 1/2 m v0^2 [J]
+  double dt_critical = 0.0;            ///< smallest element stable step at the start [s]
+  double dt_initial = 0.0;             ///< safety_factor x dt_critical [s]
+  double safety_factor = 0.0;          ///< [-]
+  double t_start = 0.0;                ///< gap / v0: the gap is crossed in free flight [s]
+  double t_max = 0.0;                  ///< hard stop [s]
+  double t_wave = 0.0;                 ///< 4 R / c_d of the sphere [s]
+  double t_expected = 0.0;             ///< expected end, for the progress estimate [s]
+  double z_com_start = 0.0;            ///< sphere c.o.m. height at the start [m]
+  long long max_steps = 0;             ///< step budget (solver.max_steps)
+};
+
+/// Builds the model; throws InputError for an invalid config or mesh (named field).
+ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh);
+
+}  // namespace corlab::fem::solver

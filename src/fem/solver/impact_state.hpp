@@ -1,0 +1,48 @@
+#pragma once
+/// @file impact_state.hpp
+/// The mutable part of one impact run (MuJoCo's data): nodal kinematics and forces, element
+/// stresses, contact cursors, time, and the running energy and response sums. One step
+/// (impact_step.hpp) maps a state to the next.
+
+#include <vector>
+
+#include "fem/solver/element_loop.hpp"
+#include "fem/solver/impact_model.hpp"
+
+namespace corlab::fem::solver {
+
+/// Running energies [J] (work done up to the current time).
+struct EnergySums {
+  double internal = 0.0;   ///< internal (strain + plastic) work
+  double plastic = 0.0;    ///< plastic dissipation
+  double hourglass = 0.0;  ///< hourglass work
+  double viscous = 0.0;    ///< bulk-viscosity dissipation
+  double contact = 0.0;    ///< penalty energy stored now
+};
+
+struct ImpactState {
+  std::vector<double> r, z;    ///< nodal positions [m]
+  std::vector<double> vr, vz;  ///< nodal velocities at the last half step [m/s]
+  std::vector<double> fr, fz;  ///< nodal forces being assembled [N]
+  ElementState elements;
+  std::vector<int> cursor;  ///< master segment of each slave at the last step
+  double t = 0.0;           ///< time [s]
+  double dt = 0.0;          ///< next step [s]
+  double dt_prev = 0.0;     ///< last step [s] (0 before the first)
+  long long step = 0;
+  EnergySums energy;
+  double eps_p_max = 0.0;        ///< largest equivalent plastic strain so far [-]
+  double force = 0.0;            ///< contact force on the sphere, + up [N]
+  double indentation = 0.0;      ///< sphere c.o.m. displacement since the start [m]
+  double hysteresis = 0.0;       ///< integral of F d(indentation) [J]
+  double force_max = 0.0;        ///< [N]
+  double indentation_max = 0.0;  ///< [m]
+  double penetration_max = 0.0;  ///< deepest slave penetration [m]
+  double sphere_velocity = 0.0;  ///< sphere c.o.m. velocity at the last half step, + up [m/s]
+  double sphere_com_z = 0.0;     ///< sphere c.o.m. height at the newest positions [m]
+};
+
+/// The state at the start: sphere touching, moving down at v0; everything else at rest.
+ImpactState make_initial_state(const ImpactModel& model);
+
+}  // namespace corlab::fem::solver
