@@ -65,7 +65,7 @@ struct J2Plasticity {
     stress.zz += two_g * d_eps.zz + lam * dvol;
     stress.tt += two_g * d_eps.tt + lam * dvol;
     stress.rz += two_g * d_eps.rz;
-    const double p = trace(stress) / 3.0;
+    const double p = trace(stress) * (1.0 / 3.0);
     const double srr = stress.rr - p;
     const double szz = stress.zz - p;
     const double stt = stress.tt - p;
@@ -90,7 +90,7 @@ struct J2Plasticity {
 
   /// Elastic strain energy density of a stress: s:s/(4G) + p^2/(2K) [J/m^3].
   double strain_energy_density(const AxisymTensor& stress) const {
-    const double p = trace(stress) / 3.0;
+    const double p = trace(stress) * (1.0 / 3.0);
     const double srr = stress.rr - p;
     const double szz = stress.zz - p;
     const double stt = stress.tt - p;
