@@ -512,10 +512,11 @@ def fig_onset(out_dir, fit):
         return None
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for i, o in enumerate(onset):
-        probes = sorted(o["probes"], key=lambda p: p["velocity"])
+        probes = sorted((p for p in o["probes"] if p.get("kind", "probe") == "probe"),
+                        key=lambda p: p["velocity"])
         ax.plot([p["velocity"] for p in probes], [max(p["plastic_strain_max"], 1e-12) for p in probes],
                 "o-", color=f"C{i}", label=o["group"])
-        for key, style in (("v_hertz_onset", ":"), ("v_y_paper_eq18", "--")):
+        for key, style in (("v_hertz_onset", ":"), ("v_y_paper_eq18", "--"), ("v_scaled", "-.")):
             if o.get(key):
                 ax.axvline(o[key], color=f"C{i}", ls=style, lw=1)
     ax.set_xscale("log")
@@ -524,6 +525,7 @@ def fig_onset(out_dir, fit):
     ax.set_ylabel("largest plastic strain left [-] (1e-12 = none)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7)
-    ax.set_title("Yield onset by bisection (dotted: Hertz p0 = 1.6 sigma_y; dashed: Ma eq. 18)",
+    ax.set_title("Yield onset: bracket runs (dash-dot: elastic-scaling estimate; dotted: Hertz "
+                 "p0 = 1.6 sigma_y; dashed: Ma eq. 18)",
                  fontsize=8)
     return _save(fig, out_dir, "fig_onset.png")

@@ -85,6 +85,16 @@ double sphere_kinetic_energy(const ImpactModel& m, const ImpactState& s) {
   return ke;
 }
 
+/// Largest von Mises stress over the substrate's elements now [Pa].
+double substrate_von_mises_max(const ImpactModel& m, const ImpactState& s) {
+  const auto& es = s.elements;
+  double vm = 0.0;
+  for (int e = m.n_sphere_elements; e < m.n_elements; ++e) {
+    vm = std::max(vm, von_mises(AxisymTensor{es.srr[e], es.szz[e], es.stt[e], es.srz[e]}));
+  }
+  return vm;
+}
+
 /// The result of a run that ended with `status`.
 ImpactResult finish(const ImpactModel& m,
                     const ImpactState& s,
@@ -112,6 +122,7 @@ ImpactResult finish(const ImpactModel& m,
   res.force_max = s.force_max;
   res.indentation_max = s.indentation_max;
   res.penetration_max = s.penetration_max;
+  res.substrate_von_mises_max = substrate_von_mises_max(m, s);
   res.steps = s.step;
   res.end_time = s.t;
   if (status != RunStatus::kNonFinite && !std::isfinite(res.energy_sphere_loss)) {
@@ -140,6 +151,8 @@ std::string status_detail(RunStatus status,
       return fmt::format("{} steps (solver.max_steps) reached at t = {:.6g} s", m.max_steps, s.t);
     case RunStatus::kCancelled:
       return "interrupted";
+    case RunStatus::kMaxCompression:
+      return fmt::format("stopped at maximum compression, t = {:.6g} s", s.t);
     case RunStatus::kNotSeparated:
       return v_com <= 0.0 && s.t < m.t_max
                  ? fmt::format(
@@ -219,6 +232,10 @@ ImpactResult run_impact(const ImpactConfig& config,
       break;
     }
     if (decision == SeparationRule::Decision::kNoRebound) break;
+    if (control.stop_at_max_compression && rule.touched() && s.sphere_velocity >= 0.0) {
+      status = RunStatus::kMaxCompression;
+      break;
+    }
     while (next_field < field_times.size() && s.t >= field_times[next_field]) {
       if (control.on_fields) control.on_fields(s.t, snapshot(m, mesh, s, s.t));
       ++next_field;

@@ -6,7 +6,7 @@
 namespace corlab::fem {
 namespace {
 
-constexpr std::array<std::pair<RunStatus, std::string_view>, 7> kNames{{
+constexpr std::array<std::pair<RunStatus, std::string_view>, 8> kNames{{
     {RunStatus::kSeparated, "separated"},
     {RunStatus::kNotSeparated, "not_separated"},
     {RunStatus::kStepCollapsed, "step_collapsed"},
@@ -14,6 +14,7 @@ constexpr std::array<std::pair<RunStatus, std::string_view>, 7> kNames{{
     {RunStatus::kNonFinite, "non_finite"},
     {RunStatus::kStepBudgetExceeded, "step_budget_exceeded"},
     {RunStatus::kCancelled, "cancelled"},
+    {RunStatus::kMaxCompression, "max_compression"},
 }};
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/run_cost.hpp"
 #include "sweep_internal.hpp"
 
 namespace corlab::study {
@@ -216,6 +217,20 @@ void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir,
       plan.pending.push_back(i);
     }
   }
+  longest_first(plan);
+}
+
+void longest_first(Plan& plan) {
+  std::vector<double> cost(plan.cases.size(), 0.0);
+  for (const std::size_t i : plan.pending) {
+    try {
+      cost[i] = fem::estimate_run_cost(plan.cases[i].config).element_steps();
+    } catch (const std::exception&) {
+      cost[i] = 0.0;  // an invalid case fails at once when it runs: last
+    }
+  }
+  std::stable_sort(plan.pending.begin(), plan.pending.end(),
+                   [&cost](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
 }
 
 DirectoryLock::DirectoryLock(const std::filesystem::path& out_dir) {

@@ -88,6 +88,9 @@ struct Plan {
 
 /// Expands the spec (every process).
 Plan make_plan(const SweepSpec& spec);
+/// Orders plan.pending by decreasing estimated cost (fem::estimate_run_cost), so that a sweep
+/// does not end waiting for one long run (longest-processing-time-first scheduling).
+void longest_first(Plan& plan);
 /// Creates out_dir if needed; InputError if that fails.
 void ensure_directory(const std::filesystem::path& out_dir);
 /// Prepares out_dir for writing (writer only): directory, spec.toml, resume of results.csv,

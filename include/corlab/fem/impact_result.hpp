@@ -45,7 +45,9 @@ struct ImpactResult {
   double energy_balance_error = 0.0;       ///< max over the run of |balance| / initial [-]
   double hysteresis_area = 0.0;            ///< closed integral of F d(delta) [J]
   double penetration_max = 0.0;            ///< largest penalty penetration of a slave [m]
-  bool separated = false;                  ///< status == kSeparated (kept for the output schema)
+  double substrate_von_mises_max =
+      0.0;                 ///< largest von Mises stress in the substrate at the end [Pa]
+  bool separated = false;  ///< status == kSeparated (kept for the output schema)
   int elements = 0;
   int nodes = 0;
   long long steps = 0;

@@ -16,6 +16,7 @@ enum class RunStatus {
   kNonFinite,           ///< a NaN or infinity appeared in the state (energies)
   kStepBudgetExceeded,  ///< more steps than solver.max_steps
   kCancelled,           ///< stopped on request (Ctrl-C, sweep interruption)
+  kMaxCompression,      ///< stopped on request at maximum compression (yield-onset probes)
 };
 
 /// The status's name in outputs (summary.json, results.csv, Python): "separated", ...

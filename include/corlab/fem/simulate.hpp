@@ -18,6 +18,9 @@ struct SimulationControl {
   const std::atomic<bool>* cancel = nullptr;
   /// Called now and then with the fraction done (estimate, 0..1).
   std::function<void(double)> progress;
+  /// Stop at maximum compression (the sphere's c.o.m. velocity turns from approach to rebound),
+  /// with status kMaxCompression: yield-onset probes need only the loading half.
+  bool stop_at_max_compression = false;
   /// Called at each requested field time with the current mesh and fields (for VTU output).
   std::function<void(double time, const struct FieldSnapshot&)> on_fields;
 };

@@ -9,7 +9,7 @@ TEST(RunStatus, NamesRoundTrip) {
   for (const RunStatus s :
        {RunStatus::kSeparated, RunStatus::kNotSeparated, RunStatus::kStepCollapsed,
         RunStatus::kElementInverted, RunStatus::kNonFinite, RunStatus::kStepBudgetExceeded,
-        RunStatus::kCancelled}) {
+        RunStatus::kCancelled, RunStatus::kMaxCompression}) {
     const auto back = run_status_from_string(to_string(s));
     ASSERT_TRUE(back.has_value()) << to_string(s);
     EXPECT_EQ(*back, s);
