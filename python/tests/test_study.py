@@ -45,6 +45,10 @@ def test_run_sweep_and_read_results(tmp_path):
     assert table["status"] == ["ok"] * 6
     assert np.all((table["e"] > 0) & (table["e"] < 1))
     np.testing.assert_array_equal(table["velocity"], table["impact.velocity"])
+    # The columns come from the one result-field table.
+    csv_fields = [f["name"] for f in corlab.result_fields() if f["in_csv"]]
+    assert list(table) == ["case_id", "status", "substrate.sigma_y", "impact.velocity", *csv_fields,
+                           "error"]
     assert sorted(table["case_id"]) == sorted(r["id"] for r in
                                               corlab.load_spec(str(SWEEPS / "tiny.toml"))["runs"])
     # A rerun resumes: nothing left to run.
@@ -61,3 +65,9 @@ def test_read_results_of_a_hand_written_table(tmp_path):
     assert table["sphere.material"] == ["E=1e9,nu=0.3,rho=1000", "steel"]
     assert table["error"] == ["", "boom, badly"]
     assert table["e"][0] == 0.5 and np.isnan(table["e"][1])
+
+
+def test_docs_name_every_results_csv_column():
+    page = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "user" / "sweeps.md").read_text()
+    missing = [f["name"] for f in corlab.result_fields() if f["in_csv"] and f"`{f['name']}`" not in page]
+    assert not missing, f"docs/user/sweeps.md does not name the results.csv columns {missing}"

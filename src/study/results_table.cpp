@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/result_fields.hpp"
 #include "corlab/materials/material.hpp"
 
 namespace corlab::study {
@@ -54,7 +55,9 @@ bool parse_double(std::string_view text, double& value) {
 }
 
 bool always_text(std::string_view column) {
-  return column == "case_id" || column == "status" || column == "error";
+  if (column == "case_id" || column == "status" || column == "error") return true;
+  const fem::ResultField* field = fem::find_result_field(column);
+  return field != nullptr && field->kind == fem::FieldKind::text;
 }
 
 void write_all(int fd, std::string_view data, const std::filesystem::path& file) {
@@ -72,34 +75,24 @@ void write_all(int fd, std::string_view data, const std::filesystem::path& file)
 }  // namespace
 
 const std::vector<std::string>& result_columns() {
-  static const std::vector<std::string> columns{"e",
-                                                "e_energy",
-                                                "F_max",
-                                                "delta_max",
-                                                "t_contact",
-                                                "crater_depth",
-                                                "plastic_strain_max",
-                                                "energy_initial",
-                                                "energy_sphere_loss",
-                                                "energy_dissipated_plastic",
-                                                "energy_hourglass",
-                                                "energy_balance_error",
-                                                "hysteresis_area",
-                                                "elements",
-                                                "steps",
-                                                "wall_s",
-                                                "element_steps_per_s",
-                                                "E_star",
-                                                "k1",
-                                                "k2",
-                                                "sphere_rho",
-                                                "sigma_y",
-                                                "velocity"};
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> names;
+    for (const auto& f : fem::result_fields()) {
+      if ((f.outputs & fem::kCsv) != 0) names.emplace_back(f.name);
+    }
+    return names;
+  }();
   return columns;
 }
 
 const std::vector<std::string>& timing_columns() {
-  static const std::vector<std::string> columns{"wall_s", "element_steps_per_s"};
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> names;
+    for (const auto& f : fem::result_fields()) {
+      if ((f.outputs & fem::kCsv) != 0 && f.machine_dependent) names.emplace_back(f.name);
+    }
+    return names;
+  }();
   return columns;
 }
 
@@ -111,11 +104,7 @@ std::vector<std::string> results_header(const std::vector<std::string>& swept_ke
   return header;
 }
 
-std::string format_number(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  return fmt::format("{}", value);
-}
+std::string format_number(double value) { return fem::field_text(value); }
 
 std::vector<std::string> result_row(std::string_view case_id,
                                     const std::vector<std::string>& swept_values,
@@ -128,36 +117,10 @@ std::vector<std::string> result_row(std::string_view case_id,
                                            : result->separated ? kStatusOk
                                                                : kStatusNotSeparated)};
   row.insert(row.end(), swept_values.begin(), swept_values.end());
-  if (result != nullptr) {
-    const fem::ImpactResult& r = *result;
-    for (const double v :
-         {r.e, r.e_energy, r.force_max, r.indentation_max, r.contact_time, r.crater_depth,
-          r.plastic_strain_max, r.energy_initial, r.energy_sphere_loss, r.energy_dissipated_plastic,
-          r.energy_hourglass, r.energy_balance_error, r.hysteresis_area}) {
-      row.push_back(format_number(v));
-    }
-    row.push_back(fmt::format("{}", r.elements));
-    row.push_back(fmt::format("{}", r.steps));
-    row.push_back(format_number(r.wall_s > 0.0 ? r.wall_s : wall_s));
-    row.push_back(format_number(r.element_steps_per_s));
-  } else {
-    row.insert(row.end(), 15, std::string());
-    row.push_back(format_number(wall_s));
-    row.emplace_back();
+  const fem::FieldInput in{result, &config, wall_s};
+  for (const auto& f : fem::result_fields()) {
+    if ((f.outputs & fem::kCsv) != 0) row.push_back(fem::field_text(f.value(in)));
   }
-  // Derived dimensionless inputs (Ma et al. 2023 eqs. 3, 5, 6), so fits need no re-derivation.
-  const Material& sphere = config.sphere.material;
-  const Material& substrate = config.substrate.material;
-  const double e_star = effective_modulus(sphere, substrate);
-  const double velocity = config.impact.velocity;
-  const double sigma_y = substrate.yield_stress.value_or(std::numeric_limits<double>::quiet_NaN());
-  row.push_back(format_number(e_star));
-  row.push_back(format_number(k1(e_star, sphere.density, velocity)));
-  row.push_back(format_number(substrate.yield_stress ? k2(sigma_y, e_star)
-                                                     : std::numeric_limits<double>::quiet_NaN()));
-  row.push_back(format_number(sphere.density));
-  row.push_back(format_number(sigma_y));
-  row.push_back(format_number(velocity));
   row.emplace_back(error);
   return row;
 }

@@ -21,15 +21,12 @@
 
 namespace corlab::study {
 
-/// Result columns, in order: e, e_energy, F_max [N], delta_max [m], t_contact [s],
-/// crater_depth [m], plastic_strain_max [-], energy_initial [J], energy_sphere_loss [J],
-/// energy_dissipated_plastic [J], energy_hourglass [J], energy_balance_error [-],
-/// hysteresis_area [J], elements, steps, wall_s [s], element_steps_per_s [1/s], then the derived
-/// E_star [Pa] (Ma et al. 2023 eq. 3), k1 (eq. 5), k2 (eq. 6), sphere_rho [kg/m^3],
-/// sigma_y [Pa] (substrate; nan if elastic), velocity [m/s].
+/// Result columns, in order: the fields of fem::result_fields() written to the CSV (names, units
+/// and descriptions are in that table, src/fem/result_fields.cpp).
 const std::vector<std::string>& result_columns();
 
-/// Columns whose values depend on the machine (timings); excluded when comparing two runs.
+/// Columns whose values depend on the machine (timings, `machine_dependent` in the table);
+/// excluded when comparing two runs.
 const std::vector<std::string>& timing_columns();
 
 /// The full header for the given swept keys.
