@@ -71,3 +71,18 @@ def test_docs_name_every_results_csv_column():
     page = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "user" / "sweeps.md").read_text()
     missing = [f["name"] for f in corlab.result_fields() if f["in_csv"] and f"`{f['name']}`" not in page]
     assert not missing, f"docs/user/sweeps.md does not name the results.csv columns {missing}"
+
+
+def test_read_results_never_drops_or_doubles_silently(tmp_path):
+    csv = tmp_path / "r.csv"
+    csv.write_text("case_id,status,e,error\nc1,ok,0.5,\nc2,ok,0.25,")  # no final line break
+    assert list(corlab.read_results(str(csv))["e"]) == [0.5, 0.25]
+    csv.write_text("case_id,status,e,error\nc1,ok,0.5,\nc1,ok,0.5,\n")
+    with pytest.warns(UserWarning, match="case_id 'c1' repeats line 2"):
+        assert list(corlab.read_results(str(csv))["e"]) == [0.5]
+    csv.write_text("case_id,status,e,error\nc1,ok,0.5,\nc2,ok,0.")
+    with pytest.warns(UserWarning, match="dropped a partial last line"):
+        assert list(corlab.read_results(str(csv))["e"]) == [0.5]
+    csv.write_text("case_id,e,e\nc1,0.5,0.6\n")
+    with pytest.raises(ValueError, match="column 'e': must appear once"):
+        corlab.read_results(str(csv))
