@@ -43,6 +43,14 @@ def test_bad_settings_raise_value_error():
         corlab.simulate({"impact.speed": 1.0})
 
 
+def test_bad_input_carries_field_value_and_constraint():
+    with pytest.raises(ValueError) as err:
+        corlab.simulate({"impact.velocity": -1.0})
+    assert (err.value.field, err.value.value) == ("impact.velocity", "-1")
+    assert err.value.constraint.startswith("> 0")
+    assert str(err.value) == f"invalid impact.velocity = -1: must be {err.value.constraint}"
+
+
 def test_config_file(tmp_path):
     f = tmp_path / "case.toml"
     f.write_text("[impact]\nvelocity = 4.5\n[substrate]\nsigma_y = \"none\"\n")
