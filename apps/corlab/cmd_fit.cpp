@@ -7,7 +7,7 @@
 //   corlab fit results.csv --form "e ~ a + s*ln(k1) + b*ln(k2)" --param a=1,s=0.05,b=0.2
 //       --where "e < 0.999"                    # (one line) any user form, nonlinear LS
 // Exit status: 0 fitted, 1 the iteration did not converge, 2 bad input.
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <string>
@@ -45,6 +45,13 @@ void print_goodness(const char* what, const study::GoodnessOfFit& g) {
              g.r_squared, 100 * g.max_relative_error, 100 * g.rms_relative_error);
 }
 
+/// Every row a fit left out, with the reason (never dropped silently).
+void print_excluded(const std::vector<study::ExcludedRow>& rows) {
+  if (rows.empty()) return;
+  fmt::print("excluded rows ({}):\n", rows.size());
+  for (const auto& r : rows) fmt::print("  {}: {}\n", r.case_id, r.reason);
+}
+
 int fit_paper(const FitArgs& args, const study::ResultsTable& table) {
   study::PaperFitOptions options;
   options.confidence = args.confidence;
@@ -53,12 +60,14 @@ int fit_paper(const FitArgs& args, const study::ResultsTable& table) {
     fmt::print("{}\n", study::fit_paper_forms(table, options).dump(2));
     return 0;
   }
-  const auto samples = study::restitution_samples(table);
+  std::vector<study::ExcludedRow> excluded;
+  const auto samples = study::restitution_samples(table, &excluded);
   const study::RestitutionLawFit law = study::fit_restitution_law(samples, options);
+  excluded.insert(excluded.end(), law.excluded.begin(), law.excluded.end());
   fmt::print(
-      "Ma et al. 2023 forms on {} ({} plastic points used, {} excluded: e >= 1 - {:g}, "
-      "not ok, or cases with too few points)\n",
-      args.results, law.points_used, law.points_excluded, args.plastic_tolerance);
+      "Ma et al. 2023 forms on {} ({} rows: {} plastic points used, {} excluded, listed "
+      "below)\n",
+      args.results, table.size(), law.points_used, excluded.size());
   fmt::print("{:<34} {:>12} {:>11} {:>27} {:>9}\n", "coefficient", "value", "std. err.",
              fmt::format("{:g} % confidence interval", 100 * args.confidence), "paper");
   print_coefficient(law.slope);
@@ -72,6 +81,7 @@ int fit_paper(const FitArgs& args, const study::ResultsTable& table) {
   print_goodness("(i)  e = a_i + s ln k1:", law.form_i);
   print_goodness("(ii) a = alpha + beta ln k2:", law.form_ii);
   print_goodness("eq. 12 (plastic points):", law.combined);
+  print_excluded(excluded);
   return 0;
 }
 
@@ -84,12 +94,19 @@ int fit_form(const FitArgs& args, const study::ResultsTable& table) {
   const study::ResultsTable rows = table.has_column("status") ? table.where("status", "ok") : table;
   const study::NonlinearFit fit =
       study::fit_expression(args.form, params, study::numeric_columns(rows), options);
+  const auto excluded = study::form_exclusions(table, study::split_formula(args.form).first);
+  const auto by_where = table.size() - excluded.size() - static_cast<std::size_t>(fit.observations);
   if (args.json) {
-    fmt::print("{}\n", study::to_json(fit).dump(2));
+    nlohmann::json out = study::to_json(fit);
+    out["rows"] = table.size();
+    out["excluded"] = study::to_json(excluded);
+    out["excluded_by_where"] = by_where;
+    fmt::print("{}\n", out.dump(2));
     return fit.converged ? 0 : 1;
   }
-  fmt::print("{} ~ {}   ({} rows, {} iterations, {})\n", fit.response, fit.model, fit.observations,
-             fit.iterations, fit.message);
+  fmt::print("{} ~ {}   ({} rows used of {}; {} left out by --where; {} iterations, {})\n",
+             fit.response, fit.model, fit.observations, table.size(), by_where, fit.iterations,
+             fit.message);
   fmt::print("{:<26} {:>12} {:>11} {:>27}\n", "parameter", "value", "std. err.",
              fmt::format("{:g} % confidence interval", 100 * args.confidence));
   for (std::size_t j = 0; j < fit.names.size(); ++j) {
@@ -97,6 +114,7 @@ int fit_form(const FitArgs& args, const study::ResultsTable& table) {
                num(fit.standard_errors[j]), num(fit.ci_lower[j]), num(fit.ci_upper[j]));
   }
   print_goodness("goodness of fit:", fit.goodness);
+  print_excluded(excluded);
   return fit.converged ? 0 : 1;
 }
 
@@ -117,6 +135,7 @@ const CommandRegistration kRegistration{Command{
       sub.add_flag("--json", args->json, "print JSON instead of a table");
       return [args] {
         const study::ResultsTable table = study::read_results(args->results);
+        for (const auto& note : table.notes()) fmt::print(stderr, "corlab: warning: {}\n", note);
         if (args->form.empty()) {
           if (!args->params.empty() || !args->where.empty()) {
             throw_invalid("--param/--where", "given", "used with --form only");

@@ -70,7 +70,11 @@ ci_upper, start), covariance, goodness, iterations, converged, message.)doc");
         study::PaperFitOptions options;
         options.confidence = confidence;
         options.plastic_tolerance = plastic_tolerance;
-        return to_python(study::fit_paper_forms(study::read_results(results_csv), options));
+        const study::ResultsTable table = study::read_results(results_csv);
+        for (const auto& note : table.notes()) {
+          py::module_::import("warnings").attr("warn")(note);
+        }
+        return to_python(study::fit_paper_forms(table, options));
       },
       py::arg("results_csv"), py::arg("confidence") = 0.95, py::arg("plastic_tolerance") = 1e-3,
       R"doc(The model forms of Ma et al. (2023) fitted to a sweep's results.csv.
@@ -78,7 +82,9 @@ ci_upper, start), covariance, goodness, iterations, converged, message.)doc");
 Returns {"restitution_law": forms (i) e = a_i + s ln k1 and (ii) a = alpha + beta ln k2,
  "yield_velocity": forms (iii) rho v_y^2 = b sigma_bar^n and (iv) b = c E_bar^m on the
  per-case e = 1 crossings, or None when the table has < 3 E* values or < 2 yield stresses}.
-Each coefficient has value, standard_error, ci_lower, ci_upper and the paper's value.)doc");
+Each coefficient has value, standard_error, ci_lower, ci_upper and the paper's value.
+"excluded" lists every row left out ({case_id, reason}); what the reader repaired (a cut
+last line, a repeated row) is also issued as a UserWarning.)doc");
 }
 
 }  // namespace corlab::python

@@ -11,6 +11,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/fem/impact_config.hpp"
 #include "corlab/fem/impact_output.hpp"
+#include "corlab/fem/result_fields.hpp"
 #include "corlab/fem/simulate.hpp"
 
 namespace py = pybind11;
@@ -46,9 +47,45 @@ std::string setting_text(const py::handle& value) {
   return py::str(value).cast<std::string>();
 }
 
+const char* kind_name(fem::FieldKind kind) {
+  switch (kind) {
+    case fem::FieldKind::real:
+      return "real";
+    case fem::FieldKind::integer:
+      return "integer";
+    case fem::FieldKind::boolean:
+      return "boolean";
+    case fem::FieldKind::text:
+      return "text";
+  }
+  return "text";
+}
+
+py::list result_fields_list() {
+  py::list fields;
+  for (const auto& f : fem::result_fields()) {
+    py::dict d;
+    d["name"] = std::string(f.name);
+    d["unit"] = std::string(f.unit);
+    d["description"] = std::string(f.description);
+    d["kind"] = kind_name(f.kind);
+    d["in_summary"] = (f.outputs & fem::kSummary) != 0;
+    d["in_csv"] = (f.outputs & fem::kCsv) != 0;
+    d["machine_dependent"] = f.machine_dependent;
+    fields.append(d);
+  }
+  return fields;
+}
+
 }  // namespace
 
 void bind_simulate(py::module_& m) {
+  m.def("result_fields", &result_fields_list,
+        "The result fields (one table in C++, src/fem/result_fields.cpp): a list of dicts with "
+        "name, unit (SI; '-' dimensionless), description, kind (real | integer | boolean | text), "
+        "in_summary (simulate()'s dict, summary.json), in_csv (a sweep's results.csv, in column "
+        "order) and machine_dependent (timings).");
+
   m.def(
       "simulate",
       [](const py::dict& settings, std::optional<std::string> config_file) {

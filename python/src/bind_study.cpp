@@ -119,6 +119,9 @@ void bind_study(py::module_& m) {
       "read_results",
       [](const std::string& path) {
         const study::ResultsTable table = study::read_results(path);
+        for (const auto& note : table.notes()) {
+          py::module_::import("warnings").attr("warn")(note);
+        }
         py::dict d;
         for (const auto& column : table.columns()) {
           if (table.is_numeric(column)) {
@@ -132,7 +135,9 @@ void bind_study(py::module_& m) {
         return d;
       },
       py::arg("path"),
-      "Read a results.csv: dict column -> numpy array (numeric columns) or list of str.");
+      "Read a results.csv: dict column -> numpy array (numeric columns) or list of str. A cut "
+      "last line of a sweep's results.csv or a repeated row is dropped with a UserWarning; a cut "
+      "line elsewhere, a case_id with two different rows or a repeated column is a ValueError.");
 }
 
 }  // namespace corlab::python

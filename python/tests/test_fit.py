@@ -2,6 +2,8 @@
 fit_paper (Ma et al. 2023 forms on a synthetic results.csv)."""
 import csv
 import math
+import os
+import subprocess
 import pathlib
 
 import numpy as np
@@ -124,3 +126,57 @@ def test_fit_paper_recovers_the_paper_constants_from_its_own_model(tmp_path):
 def test_fit_paper_missing_file_is_a_value_error(tmp_path):
     with pytest.raises(ValueError):
         corlab.fit_paper(str(tmp_path / "nope.csv"))
+
+
+def paper_rows():
+    """A synthetic results table from the paper's own law: 3 densities x 5 yield stresses x 7 v."""
+    es = 210e9 / (2 * (1 - 0.3 ** 2))
+    rows, k = [], 0
+    for rho in (3925.0, 7850.0, 15700.0):
+        for sy in (300e6, 500e6, 700e6, 1000e6, 1300e6):
+            for v in (0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0):
+                k1, k2 = es / (rho * v * v), sy / es
+                e = min(1.0, 1.16 + 0.253 * math.log(k2) + 0.056 * math.log(k1))
+                rows.append({"case_id": f"c{k}", "status": "ok", "e": e, "velocity": v,
+                             "sphere_rho": rho, "E_star": es, "sigma_y": sy, "k1": k1, "k2": k2,
+                             "error": ""})
+                k += 1
+    return rows
+
+
+def test_fit_lists_every_excluded_row_with_its_reason(tmp_path):
+    """issue 12 item 3: rows with e = nan / inf / negative, failed or elastic are named, not lost."""
+    rows = paper_rows()
+    bad = {"bad_nan": "nan", "bad_inf": "inf", "bad_negative": "-0.5"}
+    for case_id, e in bad.items():
+        rows.append(dict(rows[10], case_id=case_id, e=e))
+    rows.append(dict(rows[10], case_id="bad_failed", status="failed", e=""))
+    rows.append(dict(rows[10], case_id="bad_elastic", sigma_y="nan"))
+    write_results(tmp_path / "results.csv", rows)
+    fit = corlab.fit_paper(str(tmp_path / "results.csv"))
+    reasons = {r["case_id"]: r["reason"] for r in fit["excluded"]}
+    assert reasons["bad_nan"] == "e = nan" and reasons["bad_inf"] == "e = inf"
+    assert reasons["bad_negative"] == "e = -0.5: not > 0"
+    assert reasons["bad_failed"] == "status = failed"
+    assert reasons["bad_elastic"].startswith("sigma_y = nan")
+    clamped = [r for r in rows if r["case_id"].startswith("c") and r["e"] >= 1 - 1e-3]
+    assert clamped and all(reasons[r["case_id"]].endswith(": elastic (>= 1 - 0.001)") for r in clamped)
+    assert fit["rows"] == len(rows)
+    assert fit["rows_excluded"] == len(reasons) == len(rows) - fit["restitution_law"]["points_used"]
+    assert fit["restitution_law"]["slope"]["value"] == pytest.approx(0.056, abs=1e-10)
+    if os.environ.get("CORLAB_BIN"):  # the CLI lists them too, one per line
+        out = subprocess.run([os.environ["CORLAB_BIN"], "fit", str(tmp_path / "results.csv")],
+                             capture_output=True, text=True, check=True).stdout
+        assert f"excluded rows ({len(reasons)}):" in out
+        assert "  bad_inf: e = inf\n" in out and "  bad_failed: status = failed\n" in out
+
+
+def test_fit_counts_a_repeated_row_once_and_says_so(tmp_path):
+    rows = paper_rows()
+    write_results(tmp_path / "once.csv", rows)
+    write_results(tmp_path / "twice.csv", rows + rows)
+    once = corlab.fit_paper(str(tmp_path / "once.csv"))["restitution_law"]
+    with pytest.warns(UserWarning, match="repeats line"):
+        twice = corlab.fit_paper(str(tmp_path / "twice.csv"))["restitution_law"]
+    assert twice["points_used"] == once["points_used"]
+    assert twice["slope"]["ci_upper"] == once["slope"]["ci_upper"]

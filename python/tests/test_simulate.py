@@ -43,9 +43,29 @@ def test_bad_settings_raise_value_error():
         corlab.simulate({"impact.speed": 1.0})
 
 
+def test_bad_input_carries_field_value_and_constraint():
+    with pytest.raises(ValueError) as err:
+        corlab.simulate({"impact.velocity": -1.0})
+    assert (err.value.field, err.value.value) == ("impact.velocity", "-1")
+    assert err.value.constraint.startswith("> 0")
+    assert str(err.value) == f"invalid impact.velocity = -1: must be {err.value.constraint}"
+
+
 def test_config_file(tmp_path):
     f = tmp_path / "case.toml"
     f.write_text("[impact]\nvelocity = 4.5\n[substrate]\nsigma_y = \"none\"\n")
     r = corlab.simulate(SMALL, config_file=str(f))
     assert r["config"]["impact"]["velocity"] == 4.5
     assert r["e"] > 0.97
+
+
+def test_result_fields_are_the_summary_keys_and_the_csv_columns():
+    fields = corlab.result_fields()
+    names = [f["name"] for f in fields]
+    assert len(names) == len(set(names))
+    assert {"e", "F_max", "wall_s", "k1"} <= set(names)
+    assert all(f["unit"] and f["description"] for f in fields)
+    assert {f["kind"] for f in fields} <= {"real", "integer", "boolean", "text"}
+    r = corlab.simulate({**SMALL, "impact.velocity": 1.0, "substrate.sigma_y": "none"})
+    summary = {f["name"] for f in fields if f["in_summary"]}
+    assert set(r) - {"config", "history"} == summary

@@ -45,6 +45,10 @@ def test_run_sweep_and_read_results(tmp_path):
     assert table["status"] == ["ok"] * 6
     assert np.all((table["e"] > 0) & (table["e"] < 1))
     np.testing.assert_array_equal(table["velocity"], table["impact.velocity"])
+    # The columns come from the one result-field table.
+    csv_fields = [f["name"] for f in corlab.result_fields() if f["in_csv"]]
+    assert list(table) == ["case_id", "status", "substrate.sigma_y", "impact.velocity", *csv_fields,
+                           "error"]
     assert sorted(table["case_id"]) == sorted(r["id"] for r in
                                               corlab.load_spec(str(SWEEPS / "tiny.toml"))["runs"])
     # A rerun resumes: nothing left to run.
@@ -61,3 +65,24 @@ def test_read_results_of_a_hand_written_table(tmp_path):
     assert table["sphere.material"] == ["E=1e9,nu=0.3,rho=1000", "steel"]
     assert table["error"] == ["", "boom, badly"]
     assert table["e"][0] == 0.5 and np.isnan(table["e"][1])
+
+
+def test_docs_name_every_results_csv_column():
+    page = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "user" / "sweeps.md").read_text()
+    missing = [f["name"] for f in corlab.result_fields() if f["in_csv"] and f"`{f['name']}`" not in page]
+    assert not missing, f"docs/user/sweeps.md does not name the results.csv columns {missing}"
+
+
+def test_read_results_never_drops_or_doubles_silently(tmp_path):
+    csv = tmp_path / "r.csv"
+    csv.write_text("case_id,status,e,error\nc1,ok,0.5,\nc2,ok,0.25,")  # no final line break
+    assert list(corlab.read_results(str(csv))["e"]) == [0.5, 0.25]
+    csv.write_text("case_id,status,e,error\nc1,ok,0.5,\nc1,ok,0.5,\n")
+    with pytest.warns(UserWarning, match="case_id 'c1' repeats line 2"):
+        assert list(corlab.read_results(str(csv))["e"]) == [0.5]
+    csv.write_text("case_id,status,e,error\nc1,ok,0.5,\nc2,ok,0.")
+    with pytest.warns(UserWarning, match="dropped a partial last line"):
+        assert list(corlab.read_results(str(csv))["e"]) == [0.5]
+    csv.write_text("case_id,e,e\nc1,0.5,0.6\n")
+    with pytest.raises(ValueError, match="column 'e': must appear once"):
+        corlab.read_results(str(csv))

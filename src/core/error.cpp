@@ -3,15 +3,24 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <utility>
 
 namespace corlab {
 
+InputError::InputError(std::string field, std::string value, std::string constraint, bool quoted)
+    : std::invalid_argument(
+          quoted ? fmt::format("invalid {} = '{}': must be {}", field, value, constraint)
+                 : fmt::format("invalid {} = {}: must be {}", field, value, constraint)),
+      field_(std::move(field)),
+      value_(std::move(value)),
+      constraint_(std::move(constraint)) {}
+
 void throw_invalid(std::string_view field, double value, std::string_view constraint) {
-  throw InputError(fmt::format("invalid {} = {}: must be {}", field, value, constraint));
+  throw InputError(std::string(field), fmt::format("{}", value), std::string(constraint), false);
 }
 
 void throw_invalid(std::string_view field, std::string_view value, std::string_view constraint) {
-  throw InputError(fmt::format("invalid {} = '{}': must be {}", field, value, constraint));
+  throw InputError(std::string(field), std::string(value), std::string(constraint), true);
 }
 
 void require_positive(std::string_view field, double value, std::string_view unit) {

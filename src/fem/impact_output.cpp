@@ -5,6 +5,10 @@
 
 #include <fstream>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
+
+#include "corlab/fem/result_fields.hpp"
 
 namespace corlab::fem {
 
@@ -55,37 +59,25 @@ nlohmann::json config_to_json(const ImpactConfig& c) {
 
 nlohmann::json summary_to_json(const ImpactResult& r, const ImpactConfig& config) {
   nlohmann::json j;
-  j["e"] = r.e;
-  j["e_energy"] = r.e_energy;
-  j["F_max"] = r.force_max;
-  j["delta_max"] = r.indentation_max;
-  j["t_contact"] = r.contact_time;
-  j["crater_depth"] = r.crater_depth;
-  j["plastic_strain_max"] = r.plastic_strain_max;
-  j["energy_initial"] = r.energy_initial;
-  j["energy_sphere_loss"] = r.energy_sphere_loss;
-  j["energy_dissipated_plastic"] = r.energy_dissipated_plastic;
-  j["energy_hourglass"] = r.energy_hourglass;
-  j["energy_viscous"] = r.energy_viscous;
-  j["energy_balance_error"] = r.energy_balance_error;
-  j["hysteresis_area"] = r.hysteresis_area;
-  j["penetration_max"] = r.penetration_max;
-  j["separated"] = r.separated;
-  j["status"] = std::string(to_string(r.status));
-  j["status_detail"] = r.status_detail;
-  j["suspect"] = r.suspect;
-  j["elements"] = r.elements;
-  j["nodes"] = r.nodes;
-  j["steps"] = r.steps;
-  j["h_contact"] = r.h_contact;
-  j["time_step"] = r.time_step;
-  j["end_time"] = r.end_time;
-  j["wall_s"] = r.wall_s;
-  j["element_steps_per_s"] = r.element_steps_per_s;
-  j["units"] = {{"F_max", "N"},           {"delta_max", "m"},       {"t_contact", "s"},
-                {"crater_depth", "m"},    {"energy_*", "J"},        {"h_contact", "m"},
-                {"time_step", "s"},       {"end_time", "s"},        {"wall_s", "s"},
-                {"hysteresis_area", "J"}, {"penetration_max", "m"}, {"element_steps_per_s", "1/s"}};
+  nlohmann::json units = nlohmann::json::object();
+  const FieldInput in{&r, &config, r.wall_s};
+  for (const ResultField& f : result_fields()) {
+    if ((f.outputs & kSummary) == 0) continue;
+    const std::string name(f.name);
+    std::visit(
+        [&](const auto& v) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) {
+            j[name] = nullptr;
+          } else {
+            j[name] = v;
+          }
+        },
+        f.value(in));
+    if (f.unit == "-") continue;
+    // The energies share one entry, as summary.json has always written them.
+    units[f.unit == "J" && name.starts_with("energy_") ? "energy_*" : name] = f.unit;
+  }
+  j["units"] = std::move(units);
   j["config"] = config_to_json(config);
   return j;
 }

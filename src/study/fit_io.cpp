@@ -1,7 +1,7 @@
 // Results tables -> samples, and fit results -> JSON.
 #include "corlab/study/fit_io.hpp"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <cmath>
 #include <set>
@@ -14,19 +14,53 @@ std::string group_label(double sphere_rho, double E_star, double sigma_y) {
   return fmt::format("rho{:g}_E{:.4g}GPa_sy{:g}MPa", sphere_rho, E_star / 1e9, sigma_y / 1e6);
 }
 
-std::vector<RestitutionSample> restitution_samples(const ResultsTable& table) {
+std::string row_name(const ResultsTable& table, std::size_t row) {
+  return table.has_column("case_id") ? table.cell(row, "case_id") : fmt::format("row {}", row + 1);
+}
+
+std::vector<RestitutionSample> restitution_samples(const ResultsTable& table,
+                                                   std::vector<ExcludedRow>* excluded) {
   std::vector<RestitutionSample> out;
   if (table.size() == 0) return out;
-  const ResultsTable ok = table.has_column("status") ? table.where("status", "ok") : table;
-  if (ok.size() == 0) return out;
-  const auto e = ok.numbers("e");
-  const auto v = ok.numbers("velocity");
-  const auto rho = ok.numbers("sphere_rho");
-  const auto es = ok.numbers("E_star");
-  const auto sy = ok.numbers("sigma_y");
-  for (std::size_t i = 0; i < ok.size(); ++i) {
-    if (!std::isfinite(sy[i]) || !(sy[i] > 0)) continue;
-    out.push_back({group_label(rho[i], es[i], sy[i]), v[i], e[i], rho[i], es[i], sy[i]});
+  const auto e = table.numbers("e");
+  const auto v = table.numbers("velocity");
+  const auto rho = table.numbers("sphere_rho");
+  const auto es = table.numbers("E_star");
+  const auto sy = table.numbers("sigma_y");
+  const bool has_status = table.has_column("status");
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    std::string reason;
+    if (has_status && table.cell(i, "status") != "ok") {
+      reason = fmt::format("status = {}", table.cell(i, "status"));
+    } else if (!std::isfinite(sy[i]) || !(sy[i] > 0)) {
+      reason = fmt::format("sigma_y = {}: elastic substrate", sy[i]);
+    }
+    if (reason.empty()) {
+      out.push_back({group_label(rho[i], es[i], sy[i]), v[i], e[i], rho[i], es[i], sy[i],
+                     row_name(table, i)});
+    } else if (excluded != nullptr) {
+      excluded->push_back({row_name(table, i), std::move(reason)});
+    }
+  }
+  return out;
+}
+
+nlohmann::json to_json(const std::vector<ExcludedRow>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& r : rows) out.push_back({{"case_id", r.case_id}, {"reason", r.reason}});
+  return out;
+}
+
+std::vector<ExcludedRow> form_exclusions(const ResultsTable& table, const std::string& response) {
+  std::vector<ExcludedRow> out;
+  const bool has_status = table.has_column("status");
+  const auto y = table.is_numeric(response) ? table.numbers(response) : std::vector<double>{};
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    if (has_status && table.cell(i, "status") != "ok") {
+      out.push_back({row_name(table, i), fmt::format("status = {}", table.cell(i, "status"))});
+    } else if (!y.empty() && !std::isfinite(y[i])) {
+      out.push_back({row_name(table, i), fmt::format("{} = {}", response, y[i])});
+    }
   }
   return out;
 }
@@ -130,7 +164,8 @@ nlohmann::json to_json(const RestitutionLawFit& fit) {
           {"goodness_combined", to_json(fit.combined)},
           {"points_used", fit.points_used},
           {"points_excluded", fit.points_excluded},
-          {"cases_excluded", fit.cases_excluded}};
+          {"cases_excluded", fit.cases_excluded},
+          {"excluded", to_json(fit.excluded)}};
 }
 
 nlohmann::json to_json(const YieldVelocityFit& fit) {
@@ -154,9 +189,16 @@ nlohmann::json to_json(const YieldVelocityFit& fit) {
 }
 
 nlohmann::json fit_paper_forms(const ResultsTable& table, const PaperFitOptions& options) {
-  const auto samples = restitution_samples(table);
+  std::vector<ExcludedRow> excluded;
+  const auto samples = restitution_samples(table, &excluded);
   const RestitutionLawFit law = fit_restitution_law(samples, options);
-  nlohmann::json out{{"restitution_law", to_json(law)}, {"yield_velocity", nullptr}};
+  excluded.insert(excluded.end(), law.excluded.begin(), law.excluded.end());
+  nlohmann::json out{{"restitution_law", to_json(law)},
+                     {"yield_velocity", nullptr},
+                     {"rows", table.size()},
+                     {"rows_excluded", excluded.size()},
+                     {"excluded", to_json(excluded)},
+                     {"read_notes", table.notes()}};
   std::set<double> es;
   std::set<double> sy;
   std::vector<YieldVelocitySample> yv;

@@ -1,6 +1,8 @@
 // The model forms of Ma et al. (2023), eqs. 9, 11, 15, 17, 18, fitted with inference.
 #include "corlab/study/fit_paper.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -73,6 +75,25 @@ double power_law_yield_velocity(
   return std::sqrt(K * std::pow(sigma_y, n) * std::pow(E_star, m) / sphere_rho);
 }
 
+namespace {
+
+/// Why a sample cannot be a point of form (i), or "" if it can.
+std::string exclusion_reason(const RestitutionSample& s, double plastic_tolerance) {
+  if (!std::isfinite(s.e)) return fmt::format("e = {}", s.e);
+  if (s.e <= 0.0) return fmt::format("e = {:g}: not > 0", s.e);
+  if (s.e >= 1.0 - plastic_tolerance) {
+    return fmt::format("e = {:g}: elastic (>= 1 - {:g})", s.e, plastic_tolerance);
+  }
+  for (const auto& [name, value] :
+       {std::pair{"velocity", s.velocity}, std::pair{"sphere_rho", s.sphere_rho},
+        std::pair{"E_star", s.E_star}, std::pair{"sigma_y", s.sigma_y}}) {
+    if (!(std::isfinite(value) && value > 0.0)) return fmt::format("{} = {}: not > 0", name, value);
+  }
+  return {};
+}
+
+}  // namespace
+
 RestitutionLawFit fit_restitution_law(const std::vector<RestitutionSample>& samples,
                                       const PaperFitOptions& options) {
   require_open_range("confidence", options.confidence, 0.0, 1.0);
@@ -81,10 +102,10 @@ RestitutionLawFit fit_restitution_law(const std::vector<RestitutionSample>& samp
   // plastic, finite points grouped by case
   std::map<std::string, std::vector<const RestitutionSample*>> by_case;
   for (const auto& s : samples) {
-    const bool finite =
-        std::isfinite(s.e) && s.velocity > 0 && s.sphere_rho > 0 && s.E_star > 0 && s.sigma_y > 0;
-    if (!finite || s.e >= 1.0 - options.plastic_tolerance || s.e <= 0.0) {
+    const std::string reason = exclusion_reason(s, options.plastic_tolerance);
+    if (!reason.empty()) {
       ++out.points_excluded;
+      out.excluded.push_back({s.row_id.empty() ? s.case_id : s.row_id, reason});
       continue;
     }
     by_case[s.case_id].push_back(&s);
@@ -93,6 +114,12 @@ RestitutionLawFit fit_restitution_law(const std::vector<RestitutionSample>& samp
     if (static_cast<int>(it->second.size()) < options.min_points_per_case) {
       out.points_excluded += static_cast<int>(it->second.size());
       out.cases_excluded.push_back(it->first);
+      for (const auto* s : it->second) {
+        out.excluded.push_back(
+            {s->row_id.empty() ? s->case_id : s->row_id,
+             fmt::format("its case {} has {} plastic point(s), fewer than {}", it->first,
+                         it->second.size(), options.min_points_per_case)});
+      }
       it = by_case.erase(it);
     } else {
       ++it;

@@ -11,10 +11,13 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <numeric>
+#include <optional>
 #include <sstream>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/result_fields.hpp"
 #include "corlab/materials/material.hpp"
 
 namespace corlab::study {
@@ -54,7 +57,9 @@ bool parse_double(std::string_view text, double& value) {
 }
 
 bool always_text(std::string_view column) {
-  return column == "case_id" || column == "status" || column == "error";
+  if (column == "case_id" || column == "status" || column == "error") return true;
+  const fem::ResultField* field = fem::find_result_field(column);
+  return field != nullptr && field->kind == fem::FieldKind::text;
 }
 
 void write_all(int fd, std::string_view data, const std::filesystem::path& file) {
@@ -69,37 +74,155 @@ void write_all(int fd, std::string_view data, const std::filesystem::path& file)
   }
 }
 
+/// A data row with its line number in the file (1 = header).
+struct NumberedRow {
+  std::size_t line = 0;
+  std::vector<std::string> fields;
+};
+
+[[noreturn]] void throw_wrong_field_count(const std::string& file,
+                                          std::size_t line,
+                                          const std::vector<std::string>& header,
+                                          const std::vector<std::string>& fields) {
+  throw InputError(fmt::format("invalid {} line {}: must have {} fields, has {}", file, line,
+                               header.size(), fields.size()));
+}
+
+void require_unique_columns(const std::vector<std::string>& header, const std::string& file) {
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    const auto first = std::find(header.begin(), header.end(), header[c]);
+    if (first != header.begin() + static_cast<std::ptrdiff_t>(c)) {
+      throw InputError(
+          fmt::format("invalid {} column '{}': must appear once in the header (columns {} and {})",
+                      file, header[c], first - header.begin() + 1, c + 1));
+    }
+  }
+}
+
+/// The fields of a last line that has no line break, if it is a complete row.
+std::optional<std::vector<std::string>> last_line_fields(std::string_view line, std::size_t count) {
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  try {
+    auto fields = split_csv_line(line);
+    if (fields.size() == count) return fields;
+  } catch (const InputError&) {  // cut inside a quoted field
+  }
+  return std::nullopt;
+}
+
+/// A sweep's own results.csv (results_header()): append-only, so a cut last line is a kill.
+bool is_sweep_output(const std::vector<std::string>& header) {
+  return header.size() >= 3 && header[0] == "case_id" && header[1] == "status" &&
+         header.back() == "error";
+}
+
+/// True if two rows hold the same values, timings (machine dependent) aside.
+bool same_results(const std::vector<std::string>& header,
+                  const std::vector<std::string>& a,
+                  const std::vector<std::string>& b) {
+  const auto& timing = timing_columns();
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    if (std::find(timing.begin(), timing.end(), header[c]) != timing.end()) continue;
+    if (a[c] != b[c]) return false;
+  }
+  return true;
+}
+
+/// Rows with a case_id seen before: the same values again are dropped with a note; different
+/// values for one case are an error (two studies mixed into one file).
+std::vector<std::vector<std::string>> without_duplicate_cases(
+    const std::vector<std::string>& header,
+    std::vector<NumberedRow> rows,
+    const std::string& file,
+    std::vector<std::string>& notes) {
+  std::vector<std::vector<std::string>> kept;
+  const auto id_col = std::find(header.begin(), header.end(), "case_id");
+  if (id_col == header.end()) {
+    for (auto& row : rows) kept.push_back(std::move(row.fields));
+    return kept;
+  }
+  const auto id = static_cast<std::size_t>(id_col - header.begin());
+  std::map<std::string, const NumberedRow*> first;
+  for (const NumberedRow& row : rows) {
+    const auto [it, inserted] = first.emplace(row.fields[id], &row);
+    if (inserted) continue;
+    if (!same_results(header, it->second->fields, row.fields)) {
+      throw InputError(fmt::format(
+          "invalid {} line {}: case_id '{}' must appear once (line {} holds other values for it: "
+          "two studies in one file?)",
+          file, row.line, row.fields[id], it->second->line));
+    }
+    notes.push_back(
+        fmt::format("{} line {}: case_id '{}' repeats line {} (same values): counted "
+                    "once",
+                    file, row.line, row.fields[id], it->second->line));
+  }
+  for (auto& row : rows) {
+    if (first.at(row.fields[id]) == &row) kept.push_back(std::move(row.fields));
+  }
+  return kept;
+}
+
+/// The header and the rows of `lines` to keep on resume (status in `keep_status`, first row of a
+/// case), as text; fills existing.status, .rows and .duplicates_dropped.
+std::string kept_rows(const std::filesystem::path& file,
+                      const std::vector<std::string_view>& lines,
+                      const std::vector<std::string>& keep_status,
+                      ExistingResults& existing) {
+  const auto& header = existing.header;
+  const auto status_col =
+      static_cast<std::size_t>(std::find(header.begin(), header.end(), "status") - header.begin());
+  std::string kept(lines.front());
+  kept += '\n';
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const auto fields = split_csv_line(lines[i]);
+    if (fields.size() != header.size())
+      throw_wrong_field_count(file.string(), i + 1, header, fields);
+    const std::string& status = fields[status_col];
+    if (std::find(keep_status.begin(), keep_status.end(), status) == keep_status.end()) continue;
+    if (!existing.status.emplace(fields[0], status).second) {
+      ++existing.duplicates_dropped;
+      continue;
+    }
+    ++existing.rows;
+    kept += lines[i];
+    kept += '\n';
+  }
+  return kept;
+}
+
+/// Replaces `file` by `text`: temp file + fsync + rename, so a kill leaves the old or the new file.
+void rewrite_atomically(const std::filesystem::path& file, std::string_view text) {
+  const std::filesystem::path temp = file.string() + ".tmp";
+  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error("cannot write " + temp.string());
+  write_all(fd, text, temp);
+  ::fsync(fd);
+  ::close(fd);
+  std::filesystem::rename(temp, file);
+}
+
 }  // namespace
 
 const std::vector<std::string>& result_columns() {
-  static const std::vector<std::string> columns{"e",
-                                                "e_energy",
-                                                "F_max",
-                                                "delta_max",
-                                                "t_contact",
-                                                "crater_depth",
-                                                "plastic_strain_max",
-                                                "energy_initial",
-                                                "energy_sphere_loss",
-                                                "energy_dissipated_plastic",
-                                                "energy_hourglass",
-                                                "energy_balance_error",
-                                                "hysteresis_area",
-                                                "elements",
-                                                "steps",
-                                                "wall_s",
-                                                "element_steps_per_s",
-                                                "E_star",
-                                                "k1",
-                                                "k2",
-                                                "sphere_rho",
-                                                "sigma_y",
-                                                "velocity"};
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> names;
+    for (const auto& f : fem::result_fields()) {
+      if ((f.outputs & fem::kCsv) != 0) names.emplace_back(f.name);
+    }
+    return names;
+  }();
   return columns;
 }
 
 const std::vector<std::string>& timing_columns() {
-  static const std::vector<std::string> columns{"wall_s", "element_steps_per_s"};
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> names;
+    for (const auto& f : fem::result_fields()) {
+      if ((f.outputs & fem::kCsv) != 0 && f.machine_dependent) names.emplace_back(f.name);
+    }
+    return names;
+  }();
   return columns;
 }
 
@@ -111,11 +234,7 @@ std::vector<std::string> results_header(const std::vector<std::string>& swept_ke
   return header;
 }
 
-std::string format_number(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  return fmt::format("{}", value);
-}
+std::string format_number(double value) { return fem::field_text(value); }
 
 namespace {
 /// The status column: "ok" for a clean rebound, the run status's name otherwise, "failed" for
@@ -134,36 +253,10 @@ std::vector<std::string> result_row(std::string_view case_id,
                                     double wall_s) {
   std::vector<std::string> row{std::string(case_id), std::string(row_status(result))};
   row.insert(row.end(), swept_values.begin(), swept_values.end());
-  if (result != nullptr) {
-    const fem::ImpactResult& r = *result;
-    for (const double v :
-         {r.e, r.e_energy, r.force_max, r.indentation_max, r.contact_time, r.crater_depth,
-          r.plastic_strain_max, r.energy_initial, r.energy_sphere_loss, r.energy_dissipated_plastic,
-          r.energy_hourglass, r.energy_balance_error, r.hysteresis_area}) {
-      row.push_back(format_number(v));
-    }
-    row.push_back(fmt::format("{}", r.elements));
-    row.push_back(fmt::format("{}", r.steps));
-    row.push_back(format_number(r.wall_s > 0.0 ? r.wall_s : wall_s));
-    row.push_back(format_number(r.element_steps_per_s));
-  } else {
-    row.insert(row.end(), 15, std::string());
-    row.push_back(format_number(wall_s));
-    row.emplace_back();
+  const fem::FieldInput in{result, &config, wall_s};
+  for (const auto& f : fem::result_fields()) {
+    if ((f.outputs & fem::kCsv) != 0) row.push_back(fem::field_text(f.value(in)));
   }
-  // Derived dimensionless inputs (Ma et al. 2023 eqs. 3, 5, 6), so fits need no re-derivation.
-  const Material& sphere = config.sphere.material;
-  const Material& substrate = config.substrate.material;
-  const double e_star = effective_modulus(sphere, substrate);
-  const double velocity = config.impact.velocity;
-  const double sigma_y = substrate.yield_stress.value_or(std::numeric_limits<double>::quiet_NaN());
-  row.push_back(format_number(e_star));
-  row.push_back(format_number(k1(e_star, sphere.density, velocity)));
-  row.push_back(format_number(substrate.yield_stress ? k2(sigma_y, e_star)
-                                                     : std::numeric_limits<double>::quiet_NaN()));
-  row.push_back(format_number(sphere.density));
-  row.push_back(format_number(sigma_y));
-  row.push_back(format_number(velocity));
   row.emplace_back(result != nullptr && error.empty() ? result->status_detail : std::string(error));
   return row;
 }
@@ -253,11 +346,20 @@ ExistingResults prepare_resume(const std::filesystem::path& file,
   if (!std::filesystem::exists(file)) return existing;
   const std::string text = read_file(file);
   std::string_view partial;
-  const auto lines = complete_lines(text, partial);
-  existing.dropped_partial_line = !partial.empty();
+  auto lines = complete_lines(text, partial);
+  bool changed = false;
+  if (!partial.empty()) {
+    // A row whose write stopped just before its line break is complete: keep it (the rewrite
+    // below adds the break, so the next append starts a new line). A cut row is dropped.
+    changed = true;
+    if (!lines.empty() && last_line_fields(partial, expected_header.size())) {
+      lines.push_back(partial);
+    } else {
+      existing.dropped_partial_line = true;
+    }
+  }
   if (lines.empty()) {
-    if (existing.dropped_partial_line)
-      std::filesystem::remove(file);  // killed while writing header
+    if (existing.dropped_partial_line) std::filesystem::remove(file);  // killed writing the header
     return existing;
   }
   existing.header = split_csv_line(lines.front());
@@ -267,40 +369,8 @@ ExistingResults prepare_resume(const std::filesystem::path& file,
         "another --out directory)",
         file.string()));
   }
-  const auto status_col =
-      static_cast<std::size_t>(std::find(expected_header.begin(), expected_header.end(), "status") -
-                               expected_header.begin());
-  std::string kept(lines.front());
-  kept += '\n';
-  bool changed = existing.dropped_partial_line;
-  for (std::size_t i = 1; i < lines.size(); ++i) {
-    const auto fields = split_csv_line(lines[i]);
-    if (fields.size() != expected_header.size()) {
-      throw InputError(fmt::format("invalid {} line {}: must have {} fields, has {}", file.string(),
-                                   i + 1, expected_header.size(), fields.size()));
-    }
-    const std::string& status = fields[status_col];
-    if (std::find(keep_status.begin(), keep_status.end(), status) == keep_status.end()) {
-      changed = true;
-      continue;
-    }
-    existing.status[fields[0]] = status;
-    ++existing.rows;
-    kept += lines[i];
-    kept += '\n';
-  }
-  if (changed) {
-    // Rewrite atomically: a kill now leaves either the old or the new file.
-    const std::filesystem::path temp = file.string() + ".tmp";
-    {
-      const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-      if (fd < 0) throw std::runtime_error("cannot write " + temp.string());
-      write_all(fd, kept, temp);
-      ::fsync(fd);
-      ::close(fd);
-    }
-    std::filesystem::rename(temp, file);
-  }
+  const std::string kept = kept_rows(file, lines, keep_status, existing);
+  if (changed || existing.rows + 1 != lines.size()) rewrite_atomically(file, kept);
   return existing;
 }
 
@@ -395,19 +465,40 @@ ResultsTable read_results(const std::filesystem::path& csv) {
   const std::string text = read_file(csv);
   std::string_view partial;
   const auto lines = complete_lines(text, partial);
-  if (lines.empty()) throw_invalid("results file", csv.string(), "a CSV file with a header line");
-  std::vector<std::string> header = split_csv_line(lines.front());
-  std::vector<std::vector<std::string>> rows;
+  if (lines.empty() && partial.empty()) {
+    throw_invalid("results file", csv.string(), "a CSV file with a header line");
+  }
+  const std::string name = csv.string();
+  std::vector<std::string> header = split_csv_line(lines.empty() ? partial : lines.front());
+  require_unique_columns(header, name);
+  std::vector<std::string> notes;
+  std::vector<NumberedRow> rows;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].empty()) continue;
     auto fields = split_csv_line(lines[i]);
-    if (fields.size() != header.size()) {
-      throw InputError(fmt::format("invalid {} line {}: must have {} fields, has {}", csv.string(),
-                                   i + 1, header.size(), fields.size()));
-    }
-    rows.push_back(std::move(fields));
+    if (fields.size() != header.size()) throw_wrong_field_count(name, i + 1, header, fields);
+    rows.push_back({i + 1, std::move(fields)});
   }
-  return ResultsTable(std::move(header), std::move(rows));
+  if (!lines.empty() && !partial.empty()) {
+    // No line break at the end: a complete row is data; a cut row is damage.
+    auto last = last_line_fields(partial, header.size());
+    if (last) {
+      rows.push_back({lines.size() + 1, std::move(*last)});
+    } else if (is_sweep_output(header)) {
+      notes.push_back(fmt::format(
+          "{} line {}: dropped a partial last line (a sweep's results.csv cut while a row was "
+          "written; resuming the sweep runs that case again)",
+          name, lines.size() + 1));
+    } else {
+      throw InputError(fmt::format(
+          "invalid {} line {}: must be a complete row of {} fields (the file ends in a cut line)",
+          name, lines.size() + 1, header.size()));
+    }
+  }
+  auto kept = without_duplicate_cases(header, std::move(rows), name, notes);
+  ResultsTable table(std::move(header), std::move(kept));
+  table.notes_ = std::move(notes);
+  return table;
 }
 
 }  // namespace corlab::study

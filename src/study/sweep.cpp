@@ -208,6 +208,16 @@ void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir,
     keep.emplace_back(fem::to_string(status));
   }
   const ExistingResults existing = prepare_resume(out_dir / "results.csv", plan.header, keep);
+  if (existing.dropped_partial_line) {
+    fmt::print(stderr,
+               "corlab: {}: dropped a cut last line (a kill during a write); its case "
+               "runs again\n",
+               (out_dir / "results.csv").string());
+  }
+  if (existing.duplicates_dropped > 0) {
+    fmt::print(stderr, "corlab: {}: dropped {} repeated row(s) of cases already recorded\n",
+               (out_dir / "results.csv").string(), existing.duplicates_dropped);
+  }
   plan.pending.clear();
   plan.already_done = 0;
   for (std::size_t i = 0; i < plan.cases.size(); ++i) {

@@ -56,26 +56,18 @@ class SpecError {
     throw InputError(one_line(
         fmt::format("invalid spec {} {} = {}: {}", origin_, where, shown(value), constraint)));
   }
-  /// Re-throws a message of fem::apply_setting / fem::validate at a location of the spec. When the
-  /// message is about `key` itself ("invalid <key> = <v>: must ..."), only the constraint is kept.
+  /// Re-throws an error of fem::apply_setting / fem::validate at a location of the spec. When the
+  /// error is about `key` itself (or, for "<body>.material", about the material of <body>), only
+  /// its constraint is kept.
   [[noreturn]] void rethrow_at(std::string_view where,
                                std::string_view key,
                                std::string_view value,
                                const InputError& err) const {
-    const std::string message = err.what();
-    // "invalid <field> = <value>: must <constraint>": about this key (or, for "<body>.material",
-    // about the material spec of <body>)?
-    constexpr std::string_view kInvalid = "invalid ";
-    const auto equals = message.find(" = ");
-    const auto must = message.find(": must ", equals == std::string::npos ? 0 : equals);
-    if (message.rfind(kInvalid, 0) == 0 && equals != std::string::npos &&
-        must != std::string::npos) {
-      const std::string field = message.substr(kInvalid.size(), equals - kInvalid.size());
-      if (field == key || std::string(key) == field + ".material") {
-        fail_value(where, value, message.substr(must + 2));
-      }
+    const std::string& field = err.field();
+    if (!field.empty() && (field == key || std::string(key) == field + ".material")) {
+      fail_value(where, value, "must be " + err.constraint());
     }
-    fail_value(where, value, message);
+    fail_value(where, value, err.what());
   }
 
  private:
@@ -215,15 +207,12 @@ void validate_spec(const SweepSpec& spec,
   try {
     fem::validate(base_config);
   } catch (const InputError& err) {
-    // Name the [base] key the message is about, if it is one of them.
-    const std::string message = err.what();
+    // Name the [base] key the error is about, if it is one of them.
     for (std::size_t i = 0; i < spec.base.size(); ++i) {
       const auto& [key, value] = spec.base[i];
-      if (message.rfind("invalid " + key + " = ", 0) == 0) {
-        error.rethrow_at(base_where[i], key, value, err);
-      }
+      if (err.field() == key) error.rethrow_at(base_where[i], key, value, err);
     }
-    error.fail("[base]", message);
+    error.fail("[base]", err.what());
   }
   // 2. Every case value and every grid value on its own over [base].
   auto check_one = [&](const std::string& where, const std::string& key, const std::string& value) {

@@ -13,9 +13,28 @@ namespace corlab {
 
 /// Bad user input (configuration, material, model name, velocity ...). Thrown only at the edges
 /// (parsers, validators); physics kernels never throw.
+///
+/// An error about one field carries the field, the value and the constraint as data, so callers
+/// that re-word it (a sweep spec naming the line of the value) read them instead of parsing
+/// what(). what() is the one-line message.
 class InputError : public std::invalid_argument {
  public:
+  /// An error that is not about one field's value (field(), value(), constraint() are empty).
   explicit InputError(const std::string& message) : std::invalid_argument(message) {}
+  /// "invalid <field> = <value>: must be <constraint>", value quoted when `quoted`.
+  InputError(std::string field, std::string value, std::string constraint, bool quoted);
+
+  /// The field, e.g. "impact.velocity"; empty if the error is not about one field.
+  const std::string& field() const noexcept { return field_; }
+  /// The value as written in the message (text, or the number's shortest form), without quotes.
+  const std::string& value() const noexcept { return value_; }
+  /// What the value must be, e.g. "> 0 [m/s]" (the text after "must be ").
+  const std::string& constraint() const noexcept { return constraint_; }
+
+ private:
+  std::string field_;
+  std::string value_;
+  std::string constraint_;
 };
 
 /// Throws InputError("invalid <field> = <value>: must be <constraint>").

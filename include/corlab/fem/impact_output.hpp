@@ -13,9 +13,8 @@ namespace corlab::fem {
 /// The config as JSON, keyed by the text keys of impact_config.hpp (SI units).
 nlohmann::json config_to_json(const ImpactConfig& config);
 
-/// The summary numbers of a result (no history) plus the config under "config". Keys include
-/// e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], energy_balance_error [-],
-/// elements, nodes, steps, wall_s, element_steps_per_s.
+/// The summary of a result (no history): every field of result_fields() written to the summary,
+/// their units under "units" and the config under "config".
 nlohmann::json summary_to_json(const ImpactResult& result, const ImpactConfig& config);
 
 /// Writes summary_to_json to `file` (pretty-printed). Throws std::runtime_error on I/O failure.

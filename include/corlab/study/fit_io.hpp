@@ -19,14 +19,24 @@ namespace corlab::study {
 std::string group_label(double sphere_rho, double E_star, double sigma_y);
 
 /// The rows with status "ok" as restitution samples (columns e, velocity, sphere_rho, E_star,
-/// sigma_y); case_id = group_label() so that one paper "case" collects all its velocities.
-/// Rows without a yield stress (elastic substrate) are skipped. Throws InputError if a needed
+/// sigma_y); case_id = group_label() so that one paper "case" collects all its velocities, row_id =
+/// the row's case_id. Rows that are not "ok" or have no yield stress (elastic substrate) are left
+/// out and, if `excluded` is given, appended to it with the reason. Throws InputError if a needed
 /// column is missing.
-std::vector<RestitutionSample> restitution_samples(const ResultsTable& table);
+std::vector<RestitutionSample> restitution_samples(const ResultsTable& table,
+                                                   std::vector<ExcludedRow>* excluded = nullptr);
+
+/// The case_id of a row ("row N", 1-based, in a table without a case_id column).
+std::string row_name(const ResultsTable& table, std::size_t row);
+
+/// The rows a user form (`corlab fit --form`) leaves out before its --where filter: status not
+/// "ok", or a non-finite `response`; each with the reason.
+std::vector<ExcludedRow> form_exclusions(const ResultsTable& table, const std::string& response);
 
 /// The numeric columns of a table (for fit_expression()); text columns are left out.
 DataColumns numeric_columns(const ResultsTable& table);
 
+nlohmann::json to_json(const std::vector<ExcludedRow>& rows);  ///< [{case_id, reason}]
 nlohmann::json to_json(const GoodnessOfFit& g);
 nlohmann::json to_json(const Coefficient& c);
 nlohmann::json to_json(const LinearFit& fit);
@@ -36,7 +46,8 @@ nlohmann::json to_json(const YieldVelocityFit& fit);
 
 /// Forms (i)-(ii) on a results.csv and, when the table holds >= 3 E* values and >= 2 yield
 /// stresses, forms (iii)-(iv) on the per-case crossing velocities. Returns
-/// {"restitution_law": ..., "yield_velocity": ... | null}.
+/// {"restitution_law": ..., "yield_velocity": ... | null, "rows", "rows_excluded", "excluded":
+/// [{case_id, reason}] (every row not used by form (i)), "read_notes": the table's notes()}.
 nlohmann::json fit_paper_forms(const ResultsTable& table, const PaperFitOptions& options = {});
 
 }  // namespace corlab::study

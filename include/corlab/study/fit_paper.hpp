@@ -31,14 +31,21 @@ struct PaperConstants {
   static constexpr double kE0 = 100e9;        ///< E0*, eq. 16 [Pa]
 };
 
+/// A row left out of a fit, and why (e.g. "e = nan", "status = failed").
+struct ExcludedRow {
+  std::string case_id;  ///< the row's case_id (or "row N" in a table without one)
+  std::string reason;
+};
+
 /// One simulated impact (a row of results.csv).
 struct RestitutionSample {
-  std::string case_id;
+  std::string case_id;      ///< the paper "case" (group of velocities) the point belongs to
   double velocity = 0.0;    ///< impact speed v [m/s]
   double e = 0.0;           ///< coefficient of restitution [-]
   double sphere_rho = 0.0;  ///< sphere density rho [kg/m^3]
   double E_star = 0.0;      ///< effective modulus E* [Pa]
   double sigma_y = 0.0;     ///< substrate yield stress [Pa]
+  std::string row_id;       ///< case_id of its results.csv row (names it when it is excluded)
   double k1() const { return E_star / (sphere_rho * velocity * velocity); }  ///< [-]
   double k2() const { return sigma_y / E_star; }                             ///< [-]
 };
@@ -87,6 +94,7 @@ struct RestitutionLawFit {
   int points_used = 0;
   int points_excluded = 0;  ///< elastic (e >= 1 - tol), non-finite, or in too-small cases
   std::vector<std::string> cases_excluded;  ///< cases with < min_points_per_case plastic points
+  std::vector<ExcludedRow> excluded;        ///< each excluded point, with the reason
 };
 
 /// Fits forms (i) and (ii). Form (ii) needs >= 3 distinct cases; with fewer, alpha/beta are NaN.

@@ -21,15 +21,12 @@
 
 namespace corlab::study {
 
-/// Result columns, in order: e, e_energy, F_max [N], delta_max [m], t_contact [s],
-/// crater_depth [m], plastic_strain_max [-], energy_initial [J], energy_sphere_loss [J],
-/// energy_dissipated_plastic [J], energy_hourglass [J], energy_balance_error [-],
-/// hysteresis_area [J], elements, steps, wall_s [s], element_steps_per_s [1/s], then the derived
-/// E_star [Pa] (Ma et al. 2023 eq. 3), k1 (eq. 5), k2 (eq. 6), sphere_rho [kg/m^3],
-/// sigma_y [Pa] (substrate; nan if elastic), velocity [m/s].
+/// Result columns, in order: the fields of fem::result_fields() written to the CSV (names, units
+/// and descriptions are in that table, src/fem/result_fields.cpp).
 const std::vector<std::string>& result_columns();
 
-/// Columns whose values depend on the machine (timings); excluded when comparing two runs.
+/// Columns whose values depend on the machine (timings, `machine_dependent` in the table);
+/// excluded when comparing two runs.
 const std::vector<std::string>& timing_columns();
 
 /// The full header for the given swept keys.
@@ -79,13 +76,15 @@ class CsvAppender {
 /// What an existing results.csv holds, for resuming.
 struct ExistingResults {
   std::vector<std::string> header;            ///< empty if the file does not exist or is empty
-  std::map<std::string, std::string> status;  ///< case_id -> status of its last complete row
-  bool dropped_partial_line = false;          ///< a partial last line (kill during a write)
+  std::map<std::string, std::string> status;  ///< case_id -> status of its first complete row
+  bool dropped_partial_line = false;          ///< a cut last line (kill during a write)
   std::size_t rows = 0;                       ///< complete rows kept
+  std::size_t duplicates_dropped = 0;         ///< kept rows of a case that was already kept
 };
 
-/// Prepares `file` for resuming: drops a partial last line and the rows whose status is not in
-/// `keep_status` (rewritten atomically: temp file + rename), and returns what is left. Throws
+/// Prepares `file` for resuming: drops a cut last line (a last line that has every field but no
+/// line break is kept), the rows whose status is not in `keep_status` and repeated rows of a case
+/// (rewritten atomically: temp file + rename), and returns what is left. Throws
 /// InputError if the file's header differs from `expected_header` (written for another spec).
 ExistingResults prepare_resume(const std::filesystem::path& file,
                                const std::vector<std::string>& expected_header,
@@ -113,17 +112,27 @@ class ResultsTable {
   ResultsTable where(std::string_view column, std::string_view value) const;
   /// Rows sorted by a text column (e.g. case_id), stable.
   ResultsTable sorted_by(std::string_view column) const;
+  /// What read_results() repaired, one line each (a dropped partial line, a repeated row): to
+  /// show the user as warnings.
+  const std::vector<std::string>& notes() const { return notes_; }
 
  private:
+  friend ResultsTable read_results(const std::filesystem::path& csv);
   std::size_t index_of(std::string_view name) const;
   std::vector<std::string> columns_;
   std::vector<std::vector<std::string>> cells_;  ///< column-major
   std::size_t rows_ = 0;
+  std::vector<std::string> notes_;
 };
 
-/// Reads a results.csv (any CSV with a header). A partial last line (no line break at the end
-/// of the file, from a killed writer) is ignored; any other malformed row throws InputError
-/// naming the file and line.
+/// Reads a results.csv (any CSV with a header). Nothing is dropped or doubled silently:
+/// - a last line without a line break is a row like any other when it has every field;
+/// - a cut last line is dropped with a note in a sweep's own results.csv (header case_id, status,
+///   ..., error: append-only, so the cut is a kill during a write) and is an error elsewhere;
+/// - a case_id repeated with the same values (timings aside) is kept once, with a note; with
+///   other values it is an error;
+/// - a column named twice in the header, or a row with the wrong number of fields, is an error.
+/// Errors are InputError naming the file and line; notes are in ResultsTable::notes().
 ResultsTable read_results(const std::filesystem::path& csv);
 
 }  // namespace corlab::study

@@ -43,5 +43,27 @@ TEST(InputError, TextValuesAreQuoted) {
             "invalid model = 'foo': must be one of [a, b]");
 }
 
+TEST(InputError, CarriesFieldValueAndConstraintAsData) {
+  try {
+    require_positive("impact.velocity", -1.5, "[m/s]");
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "impact.velocity");
+    EXPECT_EQ(e.value(), "-1.5");
+    EXPECT_EQ(e.constraint(), "> 0 [m/s]");
+    EXPECT_STREQ(e.what(), "invalid impact.velocity = -1.5: must be > 0 [m/s]");
+  }
+  try {
+    throw_invalid("model", "Nope", "one of A, B");
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "model");
+    EXPECT_EQ(e.value(), "Nope");  // without the quotes of the message
+    EXPECT_STREQ(e.what(), "invalid model = 'Nope': must be one of A, B");
+  }
+  const InputError free_form("gmsh support not built");
+  EXPECT_TRUE(free_form.field().empty() && free_form.value().empty());
+  EXPECT_TRUE(free_form.constraint().empty());
+}
+
 }  // namespace
 }  // namespace corlab

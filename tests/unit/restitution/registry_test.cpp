@@ -66,6 +66,34 @@ TEST(Registry, UnknownModelMessage) {
   EXPECT_THROW((void)make_model("", alumina(), aluminium()), InputError);
 }
 
+// The registry is one table of {info, factory}: each name builds its own model (no name falls
+// through to another's kernel), and an unknown name is an error listing the known ones.
+TEST(Registry, EveryNameBuildsItsOwnModel) {
+  const auto v = log_grid(0.5, 50.0, 9);
+  std::vector<std::vector<double>> curves;
+  for (const auto& name : model_names()) {
+    ModelOptions options;
+    options.clamp = false;
+    const Model m = make_model(name, steel(), aluminium(), options);
+    EXPECT_EQ(m.info().name, name);
+    EXPECT_EQ(&m.info(), &model_info(name));
+    auto e = m.cor(v);
+    e.push_back(m.yield_velocity());  // ma2023 and ma2023-exact differ only there
+    for (std::size_t i = 0; i < curves.size(); ++i) {
+      EXPECT_NE(curves[i], e) << name << " gives the same e(v) as " << model_names()[i];
+    }
+    curves.push_back(e);
+  }
+  try {
+    (void)make_model("johnson", steel(), aluminium());
+    ADD_FAILURE() << "an unknown name was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "model");
+    EXPECT_EQ(e.value(), "johnson");
+    EXPECT_NE(e.constraint().find("johnson1985"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Registry, BadVelocityMessages) {
   const Model m = make_model("ma2023", alumina(), aluminium());
   expect_input_error([&] { (void)m.cor(0.0); }, "invalid velocity = 0: must be > 0 [m/s]");

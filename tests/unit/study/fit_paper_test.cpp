@@ -24,7 +24,7 @@ std::vector<RestitutionSample> table2_like(double noise_sd, unsigned seed) {
   for (double rho : {3925.0, 7850.0, 15700.0}) {
     for (double sy : {300e6, 500e6, 700e6, 1000e6, 1300e6}) {
       for (double v : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 40.0, 70.0}) {
-        RestitutionSample s{fmt_id(rho, sy), v, 0.0, rho, kEStar, sy};
+        RestitutionSample s{fmt_id(rho, sy), v, 0.0, rho, kEStar, sy, {}};
         s.e =
             std::min(1.0, 1.16 + 0.253 * std::log(s.k2()) + 0.056 * std::log(s.k1()) + noise(rng));
         out.push_back(s);

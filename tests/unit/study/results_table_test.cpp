@@ -147,9 +147,13 @@ TEST(ResultsTable, AppendThenReadByColumnName) {
   ASSERT_EQ(ok.size(), 2u);
   EXPECT_EQ(ok.text("case_id"), (std::vector<std::string>{"c0", "c1"}));
 
-  // A partial last line (killed writer) is ignored by the reader.
+  // A cut last line of a sweep's results.csv (killed writer) is dropped, with a note saying so.
   spit(csv, slurp(csv) + "c9,ok,steel,0.");
-  EXPECT_EQ(read_results(csv).size(), 3u);
+  const ResultsTable cut = read_results(csv);
+  EXPECT_EQ(cut.size(), 3u);
+  ASSERT_EQ(cut.notes().size(), 1u);
+  EXPECT_NE(cut.notes()[0].find("line 5: dropped a partial last line"), std::string::npos)
+      << cut.notes()[0];
   // A malformed complete line is an error naming the line.
   spit(csv, slurp(csv) + "\nc8,ok\n");
   try {
@@ -158,6 +162,81 @@ TEST(ResultsTable, AppendThenReadByColumnName) {
   } catch (const InputError& err) {
     EXPECT_NE(std::string(err.what()).find("line 5"), std::string::npos) << err.what();
   }
+}
+
+// issue 12 item 3: a reader never drops or doubles data silently.
+TEST(ResultsTable, ALastRowWithoutLineBreakIsData) {
+  const fs::path csv = fresh_dir("no_newline") / "r.csv";
+  spit(csv, "case_id,status,e,error\nc1,ok,0.5,\nc2,ok,0.25,");
+  const ResultsTable table = read_results(csv);
+  ASSERT_EQ(table.size(), 2u);
+  EXPECT_EQ(table.numbers("e")[1], 0.25);
+  EXPECT_TRUE(table.notes().empty());
+  spit(csv, "x,y\n1,2\n3,4");  // any CSV, not only a sweep's
+  EXPECT_EQ(read_results(csv).numbers("y"), (std::vector<double>{2.0, 4.0}));
+}
+
+TEST(ResultsTable, ACutLastLineOfAnyOtherCsvIsAnError) {
+  const fs::path csv = fresh_dir("cut") / "r.csv";
+  spit(csv, "x,y\n1,2\n3");
+  try {
+    read_results(csv);
+    FAIL() << "no error";
+  } catch (const InputError& err) {
+    const std::string message = err.what();
+    EXPECT_NE(message.find("line 3: must be a complete row of 2 fields"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  spit(csv, "x,y\n1,2\n3,\"cut in a quote");
+  EXPECT_THROW(read_results(csv), InputError);
+}
+
+TEST(ResultsTable, ARepeatedCaseIsCountedOnceWithANoteOrRefused) {
+  const fs::path csv = fresh_dir("dup") / "r.csv";
+  // The same case twice (only the timing differs): counted once, and the note says so.
+  spit(csv, "case_id,status,e,wall_s,error\nc1,ok,0.5,1.0,\nc2,ok,0.25,1.0,\nc1,ok,0.5,2.0,\n");
+  const ResultsTable table = read_results(csv);
+  EXPECT_EQ(table.text("case_id"), (std::vector<std::string>{"c1", "c2"}));
+  ASSERT_EQ(table.notes().size(), 1u);
+  EXPECT_NE(table.notes()[0].find("line 4: case_id 'c1' repeats line 2"), std::string::npos)
+      << table.notes()[0];
+  // The same case with another e: two studies mixed, refused.
+  spit(csv, "case_id,status,e,wall_s,error\nc1,ok,0.5,1.0,\nc1,ok,0.6,1.0,\n");
+  try {
+    read_results(csv);
+    FAIL() << "no error";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("line 3: case_id 'c1' must appear once"),
+              std::string::npos)
+        << err.what();
+  }
+}
+
+TEST(ResultsTable, ADuplicateColumnIsAnError) {
+  const fs::path csv = fresh_dir("dupcol") / "r.csv";
+  spit(csv, "case_id,e,status,e\nc1,0.5,ok,0.6\n");
+  try {
+    read_results(csv);
+    FAIL() << "no error";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what())
+                  .find("column 'e': must appear once in the header (columns 2 "
+                        "and 4)"),
+              std::string::npos)
+        << err.what();
+  }
+}
+
+TEST(ResultsTable, PrepareResumeKeepsACompleteLastRowAndDropsRepeats) {
+  const fs::path csv = fresh_dir("resume2") / "results.csv";
+  const std::vector<std::string> header{"case_id", "status", "e", "error"};
+  spit(csv, "case_id,status,e,error\nc1,ok,0.5,\nc1,ok,0.5,\nc2,ok,0.25,");
+  const ExistingResults existing = prepare_resume(csv, header, {"ok"});
+  EXPECT_FALSE(existing.dropped_partial_line);
+  EXPECT_EQ(existing.rows, 2u);
+  EXPECT_EQ(existing.duplicates_dropped, 1u);
+  EXPECT_EQ(slurp(csv), "case_id,status,e,error\nc1,ok,0.5,\nc2,ok,0.25,\n");
 }
 
 TEST(ResultsTable, PrepareResumeDropsPartialLineAndUnfinishedRows) {
