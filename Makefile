@@ -6,7 +6,7 @@ BUILD_DIR := build
 JOBS ?= $(shell nproc)
 CTEST_ARGS ?=
 REPORT_DIR ?= out/report
-REPORT_PRESET ?= quick
+REPORT_PRESET ?= paper
 
 DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   libeigen3-dev libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev \
@@ -32,7 +32,7 @@ configure: deps
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The main job: the paper's pipeline end to end (studies, fits, report) with the quick preset.
+# The main job: the paper's pipeline end to end (studies, fits, report) at the paper's resolution.
 run: build
 	./$(BUILD_DIR)/bin/corlab reproduce --preset $(REPORT_PRESET) --out $(REPORT_DIR)
 

@@ -1,11 +1,11 @@
-// `corlab reproduce --preset quick|full --out DIR [--jobs N]`: the studies of Ma et al. (2023),
+// `corlab reproduce --preset paper|coarse --out DIR [--jobs N]`: the studies of Ma et al. (2023),
 // the fits of their model forms and the HTML report, end to end. Resumable: rerunning the same
 // command continues where it stopped (finished runs are kept in DIR).
 //
 // Sample runs:
-//   corlab reproduce --preset quick --out out/report            # ~10 min on 2 cores
-//   corlab reproduce --preset full --out out/full --jobs 16     # the paper's grids (hours)
-//   corlab reproduce --preset quick --out out/r --only table2 --no-report
+//   corlab reproduce --out out/report                 # the paper's mesh and grids (make run)
+//   corlab reproduce --preset coarse --out out/demo   # a coarse demo, not the reproduction
+//   corlab reproduce --out out/r --only table2 --no-report
 // Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 130 interrupted.
 #include <fmt/core.h>
 #include <unistd.h>
@@ -36,13 +36,14 @@ void on_interrupt(int /*signal*/) {
 }
 
 struct ReproduceArgs {
-  std::string preset = "quick";
+  std::string preset = "paper";
   std::string out;
   int jobs = 0;
   std::vector<std::string> only;
   std::string studies;
   bool no_report = false;
   bool quiet = false;
+  bool error_estimate = true;
 };
 
 std::string shell_quote(const std::string& s) {
@@ -117,6 +118,7 @@ int run(const ReproduceArgs& args) {
   if (args.jobs < 0) throw_invalid("--jobs", args.jobs, ">= 0 (0 = all cores)");
   study::ReproduceOptions options;
   options.preset = args.preset;
+  options.error_estimate = args.error_estimate;
   options.out_dir = args.out;
   options.jobs = args.jobs;
   options.only = args.only;
@@ -147,8 +149,12 @@ const CommandRegistration kRegistration{Command{
     "Reproduce Ma et al. (2023): run the studies, fit the model forms, write the HTML report",
     [](CLI::App& sub) -> std::function<int()> {
       auto args = std::make_shared<ReproduceArgs>();
-      sub.add_option("--preset", args->preset, "quick (~10 min on 2 cores) or full (paper grids)")
-          ->check(CLI::IsMember({"quick", "full"}));
+      sub.add_option("--preset", args->preset,
+                     "paper (default: the reproduction, the paper's mesh and grids) or coarse (a "
+                     "demo and test fixture, not the reproduction)")
+          ->check(CLI::IsMember({"paper", "coarse"}));
+      sub.add_flag("!--no-error-estimate", args->error_estimate,
+                   "skip the companion runs at 2h that give each e its error bar");
       sub.add_option("--out", args->out, "output directory (resumable)")->required();
       sub.add_option("--jobs", args->jobs, "runs at the same time (0 = all cores)");
       sub.add_option("--only", args->only,

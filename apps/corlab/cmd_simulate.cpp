@@ -3,6 +3,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/fem/discretisation_error.hpp"
 #include "corlab/fem/impact_config.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/simulate.hpp"
@@ -28,6 +30,7 @@ struct SimulateOptions {
   std::vector<std::string> settings;
   std::string out_dir;
   bool quiet = false;
+  bool error_estimate = false;
 };
 
 int run_simulate(const SimulateOptions& opt) {
@@ -64,7 +67,9 @@ int run_simulate(const SimulateOptions& opt) {
     written.push_back(file.string());
   };
   const auto previous = std::signal(SIGINT, on_sigint);
-  const fem::ImpactResult result = fem::simulate(config, control);
+  const fem::ImpactResult result = opt.error_estimate
+                                       ? fem::simulate_with_error_estimate(config, control)
+                                       : fem::simulate(config, control);
   std::signal(SIGINT, previous);
   if (result.status == fem::RunStatus::kCancelled) {
     fmt::print(stderr, "\ncorlab simulate: interrupted, nothing written\n");
@@ -73,6 +78,10 @@ int run_simulate(const SimulateOptions& opt) {
   fem::write_summary_json(result, config, out / "summary.json");
   fem::write_history_csv(result.history, out / "history.csv");
   const bool clean = result.status == fem::RunStatus::kSeparated;
+  if (clean && std::isfinite(result.e_error)) {
+    fmt::print("e = {:.4f} +/- {:.4f} (discretisation error; e at 2h = {:.4f})\n", result.e,
+               result.e_error, result.e_coarse);
+  }
   if (clean) {
     fmt::print(
         "e = {:.4f}  e_energy = {:.4f}  F_max = {:.5g} N  delta_max = {:.5g} m  t_contact = {:.5g} "
@@ -106,6 +115,8 @@ const CommandRegistration kRegistration{Command{
           ->take_all();
       sub.add_option("--out", opt->out_dir, "output directory")->required();
       sub.add_flag("--quiet", opt->quiet, "no progress on stderr");
+      sub.add_flag("--error-estimate", opt->error_estimate,
+                   "also run at 2h for the error bar of e (e_error in summary.json)");
       return [opt] { return run_simulate(*opt); };
     },
     30}};

@@ -17,6 +17,7 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/fem/discretisation_error.hpp"
 #include "corlab/study/progress.hpp"
 #include "corlab/study/sweep.hpp"
 #include "corlab/study/sweep_spec.hpp"
@@ -38,6 +39,7 @@ struct SweepArgs {
   int jobs = 0;
   bool quiet = false;
   bool dry_run = false;
+  bool error_estimate = false;
 };
 
 int list_cases(const study::SweepSpec& spec) {
@@ -83,6 +85,11 @@ int run(const SweepArgs& args) {
   options.jobs = args.jobs;
   options.progress = !args.quiet;
   options.cancel = &g_cancel;
+  if (args.error_estimate) {
+    options.runner = [](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
+      return fem::simulate_with_error_estimate(config, control);
+    };
+  }
   std::signal(SIGINT, on_interrupt);
   const study::SweepSummary summary = study::run_sweep(spec, args.out, options);
   std::signal(SIGINT, SIG_DFL);
@@ -128,6 +135,8 @@ const CommandRegistration kRegistration{Command{
                      "cases at a time per process (0 = all cores; under mpirun 1 per rank)");
       sub.add_flag("--quiet,-q", args->quiet, "no progress bar");
       sub.add_flag("--dry-run", args->dry_run, "list the expanded cases and exit");
+      sub.add_flag("--error-estimate", args->error_estimate,
+                   "also run each case at 2h for its error bar (e_error, e_coarse columns)");
       return [args] { return run(*args); };
     },
     40}};

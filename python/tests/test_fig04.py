@@ -32,11 +32,11 @@ def test_fig4_without_snapshots_is_missing(tmp_path):
 
 @pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
 def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path):
-    studies = tmp_path / "studies" / "quick"
+    studies = tmp_path / "studies" / "coarse"
     studies.mkdir(parents=True)
     (studies / "verification_hertz.toml").write_text(TINY_HERTZ)
     out = tmp_path / "out"
-    cmd = [os.environ["CORLAB_BIN"], "reproduce", "--preset", "quick", "--out", str(out),
+    cmd = [os.environ["CORLAB_BIN"], "reproduce", "--preset", "coarse", "--out", str(out),
            "--studies", str(tmp_path / "studies"), "--only", "verification_hertz", "--jobs", "2",
            "--quiet"]
     done = subprocess.run(cmd, capture_output=True, text=True, timeout=300)

@@ -76,7 +76,7 @@ def test_report_from_synthetic_directory(tmp_path):
                                "sigma_y": float(r["sigma_y"]), "velocity": float(r["velocity"]),
                                "e_fe": float(r["e"]), "e_paper": float(r["e"]) * 1.01,
                                "e_ours": float(r["e"])})
-    fit = {"preset": "quick", "command": "corlab reproduce --preset quick --out x",
+    fit = {"preset": "coarse", "command": "corlab reproduce --preset coarse --out x",
            "studies": {"table2": {"total": 18, "ran": 18, "already_done": 0, "failed": 0,
                                   "wall_s": 12.5, "description": "Table 2"}},
            "fits": {"restitution_law": fits["restitution_law"], "comparison": comparison,
@@ -92,7 +92,7 @@ def test_report_from_synthetic_directory(tmp_path):
     slope = fits["restitution_law"]["slope"]["value"]
     assert f"{slope:.5g}" in text  # our coefficient is printed
     assert "No experimental points" in text
-    assert "Quick preset" in text
+    assert "Coarse preset: a demo, NOT the reproduction" in text
     assert "1.00 %" in text  # the paper-model error we put in (e_paper = 1.01 e_fe)
     assert "Fig. 9: no data" in text  # missing studies are reported, not hidden
 
@@ -116,11 +116,11 @@ description = "tiny Table 2 for the test"
 
 @pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
 def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path):
-    studies = tmp_path / "studies" / "quick"
+    studies = tmp_path / "studies" / "coarse"
     studies.mkdir(parents=True)
     (studies / "table2.toml").write_text(TINY_SPEC)
     out = tmp_path / "out"
-    cmd = [os.environ["CORLAB_BIN"], "reproduce", "--preset", "quick", "--out", str(out),
+    cmd = [os.environ["CORLAB_BIN"], "reproduce", "--preset", "coarse", "--out", str(out),
            "--studies", str(tmp_path / "studies"), "--only", "table2", "--jobs", "2", "--quiet"]
     first = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     assert first.returncode == 0, first.stderr

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/discretisation_error.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/simulate.hpp"
 #include "corlab/fem/vtu_writer.hpp"
@@ -201,6 +202,11 @@ json run_sweep_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
   so.jobs = opt.jobs;
   so.progress = opt.progress;
   so.cancel = opt.cancel;
+  if (opt.error_estimate) {
+    so.runner = [](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
+      return fem::simulate_with_error_estimate(config, control);
+    };
+  }
   const SweepSummary s = run_sweep(spec, dir, so);
   return {{"kind", "sweep"},    {"total", s.total},     {"already_done", s.already_done},
           {"ran", s.ran},       {"failed", s.failed},   {"not_separated", s.not_separated},
@@ -555,8 +561,8 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
 }
 
 json reproduce(const ReproduceOptions& opt) {
-  if (opt.preset != "quick" && opt.preset != "full") {
-    throw_invalid("--preset", opt.preset, "quick or full");
+  if (opt.preset != "paper" && opt.preset != "coarse") {
+    throw_invalid("--preset", opt.preset, "paper or coarse");
   }
   if (opt.out_dir.empty()) throw_invalid("--out", "", "given (the report directory)");
   const auto& names = reproduce_study_names();

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "corlab/fem/discretisation_error.hpp"
 #include "corlab/fem/simulate.hpp"
 
 namespace corlab::fem {
@@ -77,11 +78,21 @@ TEST_F(PaperCase, MeshConvergence) {
                 r.steps);
     return r.e;
   };
-  for (const double h : {1.0e-3, 0.5e-3, 0.35e-3}) run(h);
+  double e_half_mm = 0.0;
+  for (const double h : {1.0e-3, 0.5e-3, 0.35e-3}) {
+    const double e = run(h);
+    if (h == 0.5e-3) e_half_mm = e;
+  }
   ASSERT_NEAR(result().h_contact, 0.25e-3, 1e-7);
   std::printf("h_min = 0.25 mm: e = %.5f\n", result().e);
   const double e_finest = run(0.2e-3);
   EXPECT_LT(std::abs(e_finest - result().e), 0.01 * e_finest);
+  // The error estimator (discretisation_error.hpp) from the (0.5, 0.25) mm pair brackets the
+  // 0.2 mm value: e_0.25 +/- GCI contains e_0.2.
+  const double gci = grid_convergence_index(result().e, e_half_mm);
+  std::printf("GCI(0.5, 0.25 mm) = %.5f: e = %.5f +/- %.5f; e(0.2 mm) = %.5f\n", gci, result().e,
+              gci, e_finest);
+  EXPECT_LE(std::abs(e_finest - result().e), gci);
 }
 
 TEST_F(PaperCase, ScaleInvariance) {

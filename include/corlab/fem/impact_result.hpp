@@ -2,6 +2,7 @@
 /// @file impact_result.hpp
 /// What one impact simulation returns: the summary numbers and the time histories.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,11 @@ struct ImpactResult {
       0.0;  ///< CoR from momentum: rebound / impact c.o.m. velocity [-]; NaN unless separated
   double e_energy =
       0.0;  ///< CoR from the sphere's rebound kinetic energy [-]; NaN unless separated
+  /// e on the mesh twice as coarse at the contact [-] (NaN unless estimated)
+  double e_coarse = std::numeric_limits<double>::quiet_NaN();
+  /// discretisation-error estimate of e: e +/- e_error [-] (discretisation_error.hpp; NaN unless
+  /// estimated)
+  double e_error = std::numeric_limits<double>::quiet_NaN();
   double force_max = 0.0;           ///< F_max [N]
   double indentation_max = 0.0;     ///< delta_max [m]
   double contact_time = 0.0;        ///< duration of contact [s]

@@ -23,7 +23,12 @@ namespace corlab::study {
 
 /// Options of reproduce().
 struct ReproduceOptions {
-  std::string preset = "quick";               ///< "quick" or "full" (subfolder of studies_dir)
+  /// "paper" (the reproduction: the paper's mesh and grids) or "coarse" (a demo and test
+  /// fixture, not the reproduction); the subfolder of studies_dir
+  std::string preset = "paper";
+  /// Every sweep run also runs on a mesh twice as coarse at the contact for its error bar
+  /// (e_error, discretisation_error.hpp; about +20 % CPU time).
+  bool error_estimate = true;
   std::filesystem::path out_dir;              ///< output directory (created)
   std::filesystem::path studies_dir;          ///< empty = CORLAB_STUDIES_DIR (the source tree)
   int jobs = 0;                               ///< runs at the same time; 0 = all cores
