@@ -319,10 +319,11 @@ def fig6_e_vs_k1(out_dir, fit):
     intercepts = {c["case"]: c["a"]["value"] for c in (law or {}).get("cases", [])}
     s = (law or {}).get("slope", {}).get("value", math.nan)
     for i, (g, pts) in enumerate(sorted(groups.items())):
-        pts.sort()
+        pts.sort(key=lambda p: p[0])
         color = f"C{i % 10}"
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], "o", color=color, ms=4,
-                label=g.replace("_E115.4GPa", ""))
+        ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=_yerr(p[2] for p in pts),
+                    fmt="o", color=color, ms=4, capsize=2, elinewidth=0.8,
+                    label=g.replace("_E115.4GPa", ""))
         if g in intercepts:
             xs = [pts[0][0], pts[-1][0]]
             ax.plot(xs, [min(1.0, intercepts[g] + s * x) for x in xs], "-", color=color, lw=1)
@@ -330,7 +331,8 @@ def fig6_e_vs_k1(out_dir, fit):
     ax.set_ylabel("coefficient of restitution e [-]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=6, ncol=2)
-    ax.set_title(f"Fig. 6: e vs ln k1 (lines: e = a_i + s ln k1, s = {s:.4f}; paper 0.056)")
+    ax.set_title(f"Fig. 6: e vs ln k1 (bars: discretisation error; lines: e = a_i + s ln k1, "
+                 f"s = {s:.4f}; paper 0.056)", fontsize=9)
     return _save(fig, out_dir, "fig06_e_vs_lnk1.png")
 
 
@@ -456,11 +458,17 @@ MODEL_STYLE = {"ma2023": ("k-", "Ma et al. 2023 eq. 19"), "thornton1997": ("C0--
                "jg2": ("C3-.", "J-G2"), "ours": ("C4-", "eq. 19 with our constants")}
 
 
+def _yerr(runs):
+    """Error bars from each run's discretisation-error estimate (0 where there is none)."""
+    errs = [num(c.get("e_error")) for c in runs]
+    return [0.0 if math.isnan(x) else x for x in errs]
+
+
 def _fe_points(fit, study):
     pts = {}
     for c in fit.get("fits", {}).get("comparison", []):
         if c["study"] == study:
-            pts.setdefault(c["group"], []).append((c["velocity"], c["e_fe"]))
+            pts.setdefault(c["group"], []).append((c["velocity"], c["e_fe"], c))
     return pts
 
 
@@ -477,10 +485,11 @@ def fig_pairs(out_dir, fit, study, file_prefix, title_of):
                 continue
             style, label = MODEL_STYLE.get(name, ("-", name))
             ax.plot(v, values, style, lw=1.2, label=label)
-        p = sorted(pts.get(group, []))
+        p = sorted(pts.get(group, []), key=lambda q: q[0])
         if p:
-            ax.plot([q[0] for q in p], [q[1] for q in p], "ko", mfc="white", ms=6,
-                    label="FE (corlab solver)")
+            ax.errorbar([q[0] for q in p], [q[1] for q in p], yerr=_yerr(q[2] for q in p),
+                        fmt="ko", mfc="white", ms=6, capsize=2, elinewidth=0.8,
+                        label="FE (corlab solver, +/- discretisation error)")
         ax.set_xscale("log")
         ax.set_xlabel("impact velocity v [m/s]")
         ax.set_ylabel("coefficient of restitution e [-]")

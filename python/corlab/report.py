@@ -267,6 +267,31 @@ def runs_table(fit, out_dir):
                   "wall now [s]", "finished runs on disk", "their solver time [s] (sum)"], rows)
 
 
+def versus(name, c, paper, digits=4):
+    """'name = x [lo, hi] against the paper's p (+d %, inside/outside our 95 % CI)'."""
+    v, lo, hi = (figures.num(c.get(k)) for k in ("value", "ci_lower", "ci_upper"))
+    if math.isnan(v):
+        return f"{name}: no value"
+    where = "inside" if lo <= paper <= hi else "outside"
+    return (f"{name} = {fmt(v, digits)} [{fmt(lo, digits)}, {fmt(hi, digits)}] against the "
+            f"paper's {paper:g} ({pct(v / paper - 1, 1)}; the paper's value is {where} our 95 % CI)")
+
+
+def error_bar_item(fits):
+    """The study's discretisation-error estimates (two-grid GCI per run), one sentence."""
+    d = fits.get("discretisation_error", {}).get("all")
+    if not d:
+        return None
+    m = d["max_case"]
+    return (f"Every FE restitution coefficient carries a discretisation-error estimate (two-grid "
+            f"Grid Convergence Index from a companion run at twice the contact element size, "
+            f"Roache 1998; error bars in Figs. 6 and 11-13): over {d['count']} runs the median "
+            f"is {fmt(d['median'], 2)} and the largest {fmt(d['max'], 2)} "
+            f"({pct(d['max_relative'], 1)} of e = {fmt(m['e'], 4)}, {esc(m['study'])} "
+            f"{esc(m['group'])} at {fmt(m['velocity'], 3)} m/s). The confidence intervals of the "
+            "fits below are statistical only and do not include it.")
+
+
 def discussion(fit, out_dir):
     fits = fit.get("fits", {})
     law = fits.get("restitution_law", {})
@@ -283,12 +308,14 @@ def discussion(fit, out_dir):
         a, b = law["alpha"], law["beta"]
         if a.get("value") is not None and not math.isnan(figures.num(a.get("value"))):
             items.append(
-                f"Intercept law a = alpha + beta ln k2: ours alpha = {fmt(a['value'], 4)} "
-                f"[{fmt(a['ci_lower'], 4)}, {fmt(a['ci_upper'], 4)}], beta = {fmt(b['value'], 4)} "
-                f"[{fmt(b['ci_lower'], 4)}, {fmt(b['ci_upper'], 4)}] against 1.16 and 0.253. "
+                f"Intercept law a = alpha + beta ln k2: ours {versus('alpha', a, 1.16)}; "
+                f"{versus('beta', b, 0.253)}. "
                 "Alpha and beta are strongly correlated (alpha is the extrapolation of the line to "
                 "ln k2 = 0, far outside the data at ln k2 ~ -6 to -4), so compare the predicted e "
                 "rather than alpha alone.")
+    bars = error_bar_item(fits)
+    if bars:
+        items.append(bars)
     mesh = figures.history_runs(out_dir, "verification_mesh")
     if len(mesh) >= 2:
         mesh.sort(key=lambda r: -figures.num(r[0]["mesh.h_min"]))
@@ -315,10 +342,8 @@ def discussion(fit, out_dir):
         kf = y.get("K_fixed_exponents", {})
         ratio = math.sqrt(figures.num(kf.get("value")) / 15.81)
         items.append(
-            f"Yield-velocity law from our FE crossings: n = {fmt(y['n']['value'], 4)} "
-            f"[{fmt(y['n']['ci_lower'], 4)}, {fmt(y['n']['ci_upper'], 4)}] (paper 4.5), "
-            f"m = {fmt(y['m']['value'], 4)} [{fmt(y['m']['ci_lower'], 4)}, "
-            f"{fmt(y['m']['ci_upper'], 4)}] (paper -3.5), c = {fmt(y['c']['value'], 4)} Pa "
+            f"Yield-velocity law from our FE crossings: {versus('n', y['n'], 4.5)}; "
+            f"{versus('m', y['m'], -3.5)}; c = {fmt(y['c']['value'], 4)} Pa "
             f"(paper 0.05 Pa). With the exponents fixed at the paper's 4.5 and -3.5 the constant "
             f"is K = {fmt(kf.get('value'), 4)} [{fmt(kf.get('ci_lower'), 4)}, "
             f"{fmt(kf.get('ci_upper'), 4)}] against 15.81, i.e. our crossing velocities are "

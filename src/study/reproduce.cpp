@@ -277,6 +277,34 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
           {"wall_s", now_s() - t0}, {"options", onset_options_json(options)}};
 }
 
+/// The largest and the median discretisation-error estimate (e_error) over the compared runs,
+/// overall and per study, with the run of the largest.
+json discretisation_error_summary(const json& comparison) {
+  std::map<std::string, std::vector<std::pair<double, const json*>>> by_study;
+  for (const auto& c : comparison) {
+    const double err = c.value("e_error", kNaN);
+    if (!std::isfinite(err)) continue;
+    by_study[c["study"].get<std::string>()].emplace_back(err, &c);
+    by_study["all"].emplace_back(err, &c);
+  }
+  json out = json::object();
+  for (auto& [study, errs] : by_study) {
+    std::sort(errs.begin(), errs.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    const auto& [worst, run] = errs.back();
+    out[study] = {{"count", errs.size()},
+                  {"median", errs[errs.size() / 2].first},
+                  {"max", worst},
+                  {"max_relative", worst / (*run)["e_fe"].get<double>()},
+                  {"max_case", {{"study", (*run)["study"]},
+                                {"case_id", (*run)["case_id"]},
+                                {"group", (*run)["group"]},
+                                {"velocity", (*run)["velocity"]},
+                                {"e", (*run)["e_fe"]}}}};
+  }
+  return out;
+}
+
 /// Case id -> config of a spec.
 std::map<std::string, fem::ImpactConfig> configs_by_id(const SweepSpec& spec) {
   std::map<std::string, fem::ImpactConfig> out;
@@ -419,6 +447,8 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
     const auto& ids = ok.text("case_id");
     const auto e = ok.numbers("e");
     const auto v = ok.numbers("velocity");
+    const auto e_error = ok.has_column("e_error") ? ok.numbers("e_error")
+                                                  : std::vector<double>(ok.size(), kNaN);
     std::map<std::string, const fem::ImpactConfig*> groups;
     for (std::size_t i = 0; i < ok.size(); ++i) {
       const auto it = configs.find(ids[i]);
@@ -448,6 +478,7 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
                             {"sigma_y", sy},
                             {"velocity", v[i]},
                             {"e_fe", e[i]},
+                            {"e_error", e_error[i]},
                             {"e_paper", e_paper},
                             {"e_ours", e_ours}});
     }
@@ -495,6 +526,7 @@ json fit_outputs(const fs::path& out_dir, const fs::path& studies_dir, const std
     }
   }
   fits["model_info"] = titles;
+  fits["discretisation_error"] = discretisation_error_summary(comparison);
 
   // yield onset from the solver
   {
