@@ -166,7 +166,8 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
   const std::string head = "[study]\nname = \"t\"\n";
   const std::vector<BadSpec> cases{
       {"negative velocity", head + "[grid]\n\"impact.velocity\" = [1.0, 5.0, -1]\n",
-       "invalid spec t.toml grid.\"impact.velocity\"[2] = -1: must be > 0 [m/s]"},
+       "invalid spec t.toml grid.\"impact.velocity\"[2] = -1: must be in (0, 1000] [m/s] (no "
+       "equation of state for hypervelocity impact)"},
       {"empty grid", head + "[grid]\n\"impact.velocity\" = []\n",
        "invalid spec t.toml grid.\"impact.velocity\" = []: must be a non-empty array of values"},
       {"grid scalar", head + "[grid]\n\"impact.velocity\" = 5.0\n",
@@ -193,9 +194,10 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
        "invalid spec t.toml base.\"mesh.h_min\": must be a number, a string or a boolean"},
       {"unknown material", head + "[[cases]]\n\"sphere.material\" = \"unobtainium\"\n", ""},
       {"base range", head + "[base]\n\"sphere.radius\" = 0\n",
-       "invalid spec t.toml base.\"sphere.radius\" = 0: must be > 0 [m]"},
+       "invalid spec t.toml base.\"sphere.radius\" = 0: must be in [1e-06, 1] [m]"},
       {"case range", head + "[[cases]]\n\"sphere.rho\" = -5\n",
-       "invalid spec t.toml cases[0].\"sphere.rho\" = -5: must be > 0 [kg/m^3]"},
+       "invalid spec t.toml cases[0].\"sphere.rho\" = -5: must be in [1, 100000] [kg/m^3] (from "
+       "foams to 4 x osmium)"},
       {"combination", head + "[base]\n\"mesh.h_max\" = 1e-3\n[grid]\n\"mesh.h_min\" = [2e-3]\n",
        "invalid spec t.toml grid.\"mesh.h_min\"[0] = 0.002: invalid mesh.h_max = 0.001: must be "
        ">= mesh.h_min = 0.002 [m]"},
