@@ -66,6 +66,12 @@ void check_geometry(const ImpactConfig& c) {
                         ? fmt::format("{:g}", *c.substrate.material.yield_stress)
                         : std::string("none")));
   }
+  try {
+    validate(mesh_options_for(c));  // the generator's own limits, reported on the user's key
+  } catch (const InputError& err) {
+    throw InputError(fmt::format("invalid mesh.h_min = {}: the mesh it gives is refused ({})",
+                                 c.mesh.h_min, err.what()));
+  }
   const double min_size = kMinSubstrateContactRadii * predicted_contact_radius(c);
   for (const auto& [key, value] : {std::pair{"substrate.radius", c.substrate.radius},
                                    std::pair{"substrate.depth", c.substrate.depth}}) {
