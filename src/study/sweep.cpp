@@ -184,6 +184,7 @@ void ensure_directory(const std::filesystem::path& out_dir) {
 
 void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan) {
   ensure_directory(out_dir);
+  check_same_study(spec, out_dir);
   {
     const auto spec_copy = out_dir / "spec.toml";
     const auto temp = out_dir / "spec.toml.tmp";
@@ -196,6 +197,7 @@ void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir,
   }
   const std::vector<std::string> keep{std::string(kStatusOk), std::string(kStatusNotSeparated)};
   const ExistingResults existing = prepare_resume(out_dir / "results.csv", plan.header, keep);
+  check_no_duplicate_rows(out_dir / "results.csv", existing);
   plan.pending.clear();
   plan.already_done = 0;
   for (std::size_t i = 0; i < plan.cases.size(); ++i) {
