@@ -6,12 +6,36 @@
 
 namespace corlab {
 
+namespace {
+// User text in a message is shown with its control characters escaped, so the message stays one
+// line whatever the input holds (found by fuzzing the inline material parser).
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (u < 0x20 || u == 0x7f) {
+      out += fmt::format("\\x{:02x}", u);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+}  // namespace
+
 void throw_invalid(std::string_view field, double value, std::string_view constraint) {
-  throw InputError(fmt::format("invalid {} = {}: must be {}", field, value, constraint));
+  throw InputError(
+      fmt::format("invalid {} = {}: must be {}", printable(field), value, printable(constraint)));
 }
 
 void throw_invalid(std::string_view field, std::string_view value, std::string_view constraint) {
-  throw InputError(fmt::format("invalid {} = '{}': must be {}", field, value, constraint));
+  throw InputError(fmt::format("invalid {} = '{}': must be {}", printable(field), printable(value),
+                               printable(constraint)));
 }
 
 void require_positive(std::string_view field, double value, std::string_view unit) {
