@@ -40,11 +40,7 @@ void print_quality(const char* name, const fem::MeshQuality& q) {
 int run_mesh(const MeshArgs& args) {
   fem::ImpactConfig config =
       args.config.empty() ? fem::ImpactConfig{} : fem::load_impact_config(args.config);
-  for (const auto& s : args.settings) {
-    const auto eq = s.find('=');
-    if (eq == std::string::npos) throw_invalid("--set", s, "of the form key=value");
-    fem::apply_setting(config, s.substr(0, eq), s.substr(eq + 1));
-  }
+  fem::apply_settings(config, args.settings, "--set");
   fem::validate(config);
   const fem::Mesh mesh = fem::build_impact_mesh(config);
   if (config.mesh.file.empty()) {

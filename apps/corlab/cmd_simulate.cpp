@@ -13,10 +13,12 @@
 #include "command.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/fem/discretisation_error.hpp"
+#include "corlab/fem/config_keys.hpp"
 #include "corlab/fem/impact_config.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/simulate.hpp"
 #include "corlab/fem/vtu_writer.hpp"
+#include "corlab/study/progress.hpp"
 
 namespace corlab::cli {
 namespace {
@@ -36,11 +38,7 @@ struct SimulateOptions {
 int run_simulate(const SimulateOptions& opt) {
   fem::ImpactConfig config;
   if (!opt.config_file.empty()) config = fem::load_impact_config(opt.config_file);
-  for (const auto& s : opt.settings) {
-    const auto eq = s.find('=');
-    if (eq == std::string::npos) throw_invalid("--set", s, "key=value");
-    fem::apply_setting(config, s.substr(0, eq), s.substr(eq + 1));
-  }
+  fem::apply_settings(config, opt.settings, "--set");
   fem::validate(config);
   const std::filesystem::path out(opt.out_dir);
   std::error_code ec;
@@ -50,16 +48,7 @@ int run_simulate(const SimulateOptions& opt) {
   fem::SimulationControl control;
   g_cancel.store(false);
   control.cancel = &g_cancel;
-  auto last = std::chrono::steady_clock::now();
-  if (!opt.quiet) {
-    control.progress = [&last](double fraction) {
-      const auto now = std::chrono::steady_clock::now();
-      if (fraction < 1.0 && now - last < std::chrono::milliseconds(500)) return;
-      last = now;
-      fmt::print(stderr, "\rcorlab simulate: {:5.1f} %", 100.0 * fraction);
-      if (fraction >= 1.0) fmt::print(stderr, "\n");
-    };
-  }
+  if (!opt.quiet) control.progress = study::fraction_progress(stderr, "corlab simulate");
   std::vector<std::string> written;
   control.on_fields = [&out, &written](double time, const fem::FieldSnapshot& snapshot) {
     const auto file = out / fmt::format("fields_{:.6e}.vtu", time);
@@ -117,6 +106,7 @@ const CommandRegistration kRegistration{Command{
       sub.add_flag("--quiet", opt->quiet, "no progress on stderr");
       sub.add_flag("--error-estimate", opt->error_estimate,
                    "also run at 2h for the error bar of e (e_error in summary.json)");
+      sub.footer(fem::config_keys_help());
       return [opt] { return run_simulate(*opt); };
     },
     30}};

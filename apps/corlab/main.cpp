@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <string>
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
@@ -35,8 +36,18 @@ int main(int argc, char** argv) {
   }
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& err) {
+  } catch (const CLI::CallForHelp& err) {
     return app.exit(err);
+  } catch (const CLI::CallForAllHelp& err) {
+    return app.exit(err);
+  } catch (const CLI::CallForVersion& err) {
+    return app.exit(err);
+  } catch (const CLI::ParseError& err) {
+    // The parser's own errors follow the same rule as ours: one line on stderr, exit 2.
+    std::string message = err.what();
+    std::replace(message.begin(), message.end(), '\n', ' ');
+    std::fprintf(stderr, "corlab: error: %s (see corlab --help)\n", message.c_str());
+    return 2;
   } catch (const corlab::InputError& err) {
     std::fprintf(stderr, "corlab: error: %s\n", err.what());
     return 2;

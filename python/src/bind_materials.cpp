@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "corlab/core/error.hpp"
 #include "corlab/materials/material.hpp"
 #include "corlab/materials/material_database.hpp"
 
@@ -43,9 +44,25 @@ void bind_materials(py::module_& m) {
   m.def("effective_modulus",
         py::overload_cast<const Material&, const Material&>(&effective_modulus), py::arg("sphere"),
         py::arg("substrate"), "E* [Pa] (Ma et al. 2023 eq. 3)");
-  m.def("k1", &k1, py::arg("E_star"), py::arg("rho"), py::arg("v"),
-        "k1 = E*/(rho v^2) (Ma et al. 2023 eq. 5)");
-  m.def("k2", &k2, py::arg("sigma_y"), py::arg("E_star"), "k2 = sigma_y/E* (Ma eq. 6)");
+  m.def(
+      "k1",
+      [](double e_star, double rho, double v) {
+        require_positive("E_star", e_star, "[Pa]");
+        require_positive("rho", rho, "[kg/m^3]");
+        require_positive("v", v, "[m/s]");
+        return k1(e_star, rho, v);
+      },
+      py::arg("E_star"), py::arg("rho"), py::arg("v"),
+      "k1 = E*/(rho v^2) (Ma et al. 2023 eq. 5); ValueError unless every input is finite and > 0");
+  m.def(
+      "k2",
+      [](double sigma_y, double e_star) {
+        require_positive("sigma_y", sigma_y, "[Pa]");
+        require_positive("E_star", e_star, "[Pa]");
+        return k2(sigma_y, e_star);
+      },
+      py::arg("sigma_y"), py::arg("E_star"),
+      "k2 = sigma_y/E* (Ma eq. 6); ValueError unless both are finite and > 0");
 }
 
 }  // namespace corlab::python

@@ -9,6 +9,7 @@
 
 #include "bindings.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/fem/config_keys.hpp"
 #include "corlab/fem/impact_config.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/result_fields.hpp"
@@ -26,10 +27,14 @@ py::array_t<double> to_numpy(const std::vector<double>& v) {
   return a;
 }
 
-// A setting value: text, or a number (formatted with full precision).
-std::string setting_text(const py::handle& value) {
+// A setting value: text, or a number (formatted with full precision); a list only for a list key
+// (output.times), never a bool or None (ambiguous: refused, not guessed).
+std::string setting_text(const std::string& key, const py::handle& value) {
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  if (py::isinstance<py::bool_>(value)) return value.cast<bool>() ? "1" : "0";
+  if (value.is_none() || py::isinstance<py::bool_>(value)) {
+    throw_invalid(key, py::repr(value).cast<std::string>(),
+                  "a number or a string (`none` for an elastic body)");
+  }
   if (py::isinstance<py::int_>(value)) return std::to_string(value.cast<long long>());
   if (py::isinstance<py::float_>(value)) {
     char buf[32];
@@ -37,10 +42,14 @@ std::string setting_text(const py::handle& value) {
     return buf;
   }
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    const fem::ConfigKeyInfo* info = fem::find_config_key(key);
+    if (info != nullptr && info->kind != fem::KeyKind::number_list) {
+      throw_invalid(key, py::repr(value).cast<std::string>(), "a single value, not a list");
+    }
     std::string out;
     for (const auto& item : value) {
       if (!out.empty()) out += ",";
-      out += setting_text(item);
+      out += setting_text(key, item);
     }
     return out;
   }
@@ -91,9 +100,12 @@ void bind_simulate(py::module_& m) {
       [](const py::dict& settings, std::optional<std::string> config_file) {
         fem::ImpactConfig config;
         if (config_file) config = fem::load_impact_config(*config_file);
+        std::vector<std::string> items;
         for (const auto& [key, value] : settings) {
-          fem::apply_setting(config, py::str(key).cast<std::string>(), setting_text(value));
+          const auto name = py::str(key).cast<std::string>();
+          items.push_back(name + "=" + setting_text(name, value));
         }
+        fem::apply_settings(config, items, "settings");
         fem::validate(config);
         fem::ImpactResult result;
         {

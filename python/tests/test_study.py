@@ -31,7 +31,8 @@ def test_bad_spec_is_a_value_error_with_one_line():
         corlab.load_spec(str(SWEEPS / "bad_velocity.toml"))
     message = str(err.value)
     assert "\n" not in message
-    assert message.endswith('grid."impact.velocity"[2] = -1: must be > 0 [m/s]')
+    assert message.endswith('grid."impact.velocity"[2] = -1: must be in (0, 1000] [m/s] '
+                            '(no equation of state for hypervelocity impact)')
 
 
 def test_run_sweep_and_read_results(tmp_path):

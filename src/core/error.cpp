@@ -7,10 +7,34 @@
 
 namespace corlab {
 
+namespace {
+// User text in a message is shown with its control characters escaped, so the message stays one
+// line whatever the input holds (found by fuzzing the inline material parser).
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (u < 0x20 || u == 0x7f) {
+      out += fmt::format("\\x{:02x}", u);
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+}  // namespace
+
 InputError::InputError(std::string field, std::string value, std::string constraint, bool quoted)
     : std::invalid_argument(
-          quoted ? fmt::format("invalid {} = '{}': must be {}", field, value, constraint)
-                 : fmt::format("invalid {} = {}: must be {}", field, value, constraint)),
+          quoted ? fmt::format("invalid {} = '{}': must be {}", printable(field), printable(value),
+                               printable(constraint))
+                 : fmt::format("invalid {} = {}: must be {}", printable(field), printable(value),
+                               printable(constraint))),
       field_(std::move(field)),
       value_(std::move(value)),
       constraint_(std::move(constraint)) {}

@@ -4,13 +4,20 @@
 
 #ifdef CORLAB_WITH_GMSH
 #include <gmsh.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstddef>
+#include <cstdlib>
 #include <map>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 #endif
@@ -161,17 +168,95 @@ std::vector<int> chain(const std::vector<std::size_t>& segments,
 
 bool gmsh_available() { return true; }
 
+namespace {
+
+Mesh read_opened_gmsh(const std::filesystem::path& file);
+
+// One line: gmsh's messages may hold line breaks.
+std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+// Longest time gmsh may take to open a file [s]; CORLAB_GMSH_TIMEOUT_S overrides it.
+double gmsh_open_timeout_s() {
+  if (const char* env = std::getenv("CORLAB_GMSH_TIMEOUT_S"); env != nullptr) {
+    const double value = std::atof(env);
+    if (value > 0.0) return value;
+  }
+  return 60.0;
+}
+
+// Debian's gmsh 4.8 reader segfaults on some damaged .msh files (GModel::getMeshVertexByTag) and
+// loops for minutes on a damaged node count (found by fuzzing; regressions in gmsh_reader_test).
+// Open the file in a forked child first: if the child dies or overruns the time limit, the file is
+// refused as an InputError instead of taking corlab down or hanging it.
+void check_gmsh_survives_opening(const std::filesystem::path& file) {
+  const pid_t pid = ::fork();
+  if (pid < 0) return;  // cannot probe: read directly
+  if (pid == 0) {
+    for (const int s : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) std::signal(s, SIG_DFL);
+    try {
+      gmsh::open(file.string());
+    } catch (...) {
+      // a clean error: the parent reports it
+    }
+    ::_exit(0);
+  }
+  const double limit = gmsh_open_timeout_s();
+  const auto start = std::chrono::steady_clock::now();
+  int status = 0;
+  while (true) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) return;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limit) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      throw InputError("invalid mesh.file = " + file.string() + ": gmsh could not read it within " +
+                       std::to_string(static_cast<int>(limit)) +
+                       " s (a damaged count?; CORLAB_GMSH_TIMEOUT_S raises the limit)");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+  throw InputError(
+      "invalid mesh.file = " + file.string() + ": gmsh could not read it (its reader " +
+      (WIFSIGNALED(status) ? "crashed with signal " + std::to_string(WTERMSIG(status)) : "failed") +
+      " on this file)");
+}
+
+}  // namespace
+
 Mesh read_gmsh(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file))
     throw InputError("invalid mesh.file = " + file.string() + ": must be an existing file");
   const std::lock_guard<std::mutex> lock(gmsh_mutex());
   const GmshSession session;
+  // The gmsh API throws std::string (not std::exception) on a damaged file, from any call; found
+  // by fuzzing (tests/fuzz, regression: gmsh_reader_test DamagedFileIsAnInputError).
+  const auto unreadable = [&file](const std::string& why) {
+    return InputError("invalid mesh.file = " + file.string() + ": gmsh could not read it (" +
+                      one_line(why) + ")");
+  };
+  check_gmsh_survives_opening(file);
   try {
     gmsh::open(file.string());
+    return read_opened_gmsh(file);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::string& why) {
+    throw unreadable(why);
   } catch (const std::exception& e) {
-    throw InputError("invalid mesh.file = " + file.string() + ": gmsh could not read it (" +
-                     e.what() + ")");
+    throw unreadable(e.what());
   }
+}
+
+namespace {
+
+Mesh read_opened_gmsh(const std::filesystem::path& file) {
   {
     std::vector<int> types;
     std::vector<std::vector<std::size_t> > tags;
@@ -268,6 +353,8 @@ Mesh read_gmsh(const std::filesystem::path& file) {
       [&](int n) { return mesh.r[static_cast<std::size_t>(n)]; }, "substrate_contact", file);
   return mesh;
 }
+
+}  // namespace
 
 #endif
 

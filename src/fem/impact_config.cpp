@@ -1,201 +1,89 @@
-// Validation and text input (--set key=value, TOML) of ImpactConfig.
+// Validation and text input (--set key=value, TOML) of ImpactConfig. The keys, their units and
+// ranges are the table of config_keys.cpp; the limits that join keys are config_limits.cpp.
 #include "corlab/fem/impact_config.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <toml++/toml.h>
 
-#include <charconv>
-#include <cmath>
-#include <functional>
-#include <map>
+#include <algorithm>
+#include <set>
 #include <string>
 
 #include "corlab/core/error.hpp"
-#include "corlab/materials/material_database.hpp"
+#include "corlab/fem/config_keys.hpp"
+#include "corlab/fem/config_limits.hpp"
 
 namespace corlab::fem {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
+bool is_material_key(std::string_view key) {
+  constexpr std::string_view suffix = ".material";
+  return key.size() >= suffix.size() && key.substr(key.size() - suffix.size()) == suffix;
 }
 
-double parse_double(std::string_view key, std::string_view text) {
-  text = trim(text);
-  double value = 0.0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
-    throw_invalid(key, text, "a finite number");
+std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
   }
-  return value;
+  return text;
 }
 
-int parse_int(std::string_view key, std::string_view text) {
-  text = trim(text);
-  int value = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end) throw_invalid(key, text, "an integer");
-  return value;
-}
-
-std::vector<double> parse_list(std::string_view key, std::string_view text) {
-  std::vector<double> out;
-  text = trim(text);
-  if (!text.empty() && text.front() == '[' && text.back() == ']') {
-    text = trim(text.substr(1, text.size() - 2));
-  }
-  if (text.empty()) return out;
-  while (true) {
-    const auto comma = text.find(',');
-    out.push_back(parse_double(key, text.substr(0, comma)));
-    if (comma == std::string_view::npos) break;
-    text.remove_prefix(comma + 1);
-  }
-  return out;
-}
-
-// "none" / "" / "elastic" clears the yield stress.
-std::optional<double> parse_yield(std::string_view key, std::string_view text) {
-  const auto t = trim(text);
-  if (t.empty() || t == "none" || t == "elastic") return std::nullopt;
-  return parse_double(key, t);
-}
-
-using Setter = std::function<void(ImpactConfig&, std::string_view key, std::string_view value)>;
-
-template <typename Get>
-Setter number_setter(Get get) {
-  return [get](ImpactConfig& c, std::string_view key, std::string_view value) {
-    get(c) = parse_double(key, value);
-  };
-}
-
-const std::map<std::string, Setter, std::less<>>& setters() {
-  static const std::map<std::string, Setter, std::less<>> table = [] {
-    std::map<std::string, Setter, std::less<>> m;
-    auto material = [](bool sphere) -> Material& (*)(ImpactConfig&) {
-      return sphere ? +[](ImpactConfig& c) -> Material& { return c.sphere.material; }
-                    : +[](ImpactConfig& c) -> Material& { return c.substrate.material; };
-    };
-    for (const bool sphere : {true, false}) {
-      const std::string body = sphere ? "sphere" : "substrate";
-      auto mat = material(sphere);
-      m[body + ".material"] = [mat, body](ImpactConfig& c, std::string_view, std::string_view v) {
-        mat(c) = parse_material_spec(trim(v), body);
-      };
-      m[body + ".E"] = [mat](ImpactConfig& c, std::string_view k, std::string_view v) {
-        mat(c).youngs_modulus = parse_double(k, v);
-      };
-      m[body + ".nu"] = [mat](ImpactConfig& c, std::string_view k, std::string_view v) {
-        mat(c).poisson_ratio = parse_double(k, v);
-      };
-      m[body + ".rho"] = [mat](ImpactConfig& c, std::string_view k, std::string_view v) {
-        mat(c).density = parse_double(k, v);
-      };
-      m[body + ".sigma_y"] = [mat](ImpactConfig& c, std::string_view k, std::string_view v) {
-        mat(c).yield_stress = parse_yield(k, v);
-      };
-      m[body + ".hardening"] = [mat](ImpactConfig& c, std::string_view k, std::string_view v) {
-        mat(c).hardening_modulus = parse_double(k, v);
-      };
+// The text of one TOML value for `key`: scalars as they are, arrays only for list keys.
+std::string toml_value_text(const std::string& key, const toml::node& node) {
+  const ConfigKeyInfo* info = find_config_key(key);
+  if (const auto* s = node.as_string()) return s->get();
+  if (const auto* i = node.as_integer()) return fmt::format("{}", i->get());
+  if (const auto* f = node.as_floating_point()) return fmt::format("{}", f->get());
+  if (const auto* arr = node.as_array()) {
+    if (info != nullptr && info->kind != KeyKind::number_list) {
+      throw_invalid(key, "an array", "a single value, not a list");
     }
-    m["sphere.radius"] = number_setter([](ImpactConfig& c) -> double& { return c.sphere.radius; });
-    m["substrate.radius"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.substrate.radius; });
-    m["substrate.depth"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.substrate.depth; });
-    m["impact.velocity"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.impact.velocity; });
-    m["impact.gap"] = number_setter([](ImpactConfig& c) -> double& { return c.impact.gap; });
-    m["mesh.h_min"] = number_setter([](ImpactConfig& c) -> double& { return c.mesh.h_min; });
-    m["mesh.growth"] = number_setter([](ImpactConfig& c) -> double& { return c.mesh.growth; });
-    m["mesh.h_max"] = number_setter([](ImpactConfig& c) -> double& { return c.mesh.h_max; });
-    m["mesh.refine_factor"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.mesh.refine_factor; });
-    m["mesh.contact_elements"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.mesh.contact_elements; });
-    m["mesh.file"] = [](ImpactConfig& c, std::string_view, std::string_view v) {
-      c.mesh.file = std::string(trim(v));
-    };
-    m["solver.safety_factor"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.solver.safety_factor; });
-    m["solver.hourglass"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.solver.hourglass; });
-    m["solver.bulk_viscosity_linear"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.solver.bulk_viscosity_linear; });
-    m["solver.bulk_viscosity_quadratic"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.solver.bulk_viscosity_quadratic; });
-    m["solver.penalty_scale"] =
-        number_setter([](ImpactConfig& c) -> double& { return c.solver.penalty_scale; });
-    m["solver.t_max"] = number_setter([](ImpactConfig& c) -> double& { return c.solver.t_max; });
-    m["output.times"] = [](ImpactConfig& c, std::string_view k, std::string_view v) {
-      c.output.field_times = parse_list(k, v);
-    };
-    m["output.history_every"] = [](ImpactConfig& c, std::string_view k, std::string_view v) {
-      c.output.history_every = parse_int(k, v);
-    };
-    return m;
-  }();
-  return table;
-}
-
-std::vector<std::string> known_keys() {
-  std::vector<std::string> keys;
-  for (const auto& [k, s] : setters()) keys.push_back(k);
-  return keys;
+    std::vector<std::string> items;
+    for (const auto& item : *arr) {
+      if (item.is_integer() || item.is_floating_point()) {
+        items.push_back(fmt::format("{}", *item.value<double>()));
+      } else {
+        throw_invalid(key, "non-number array item", "a list of numbers");
+      }
+    }
+    return fmt::format("{}", fmt::join(items, ","));
+  }
+  throw_invalid(key, "unsupported value", "a number, a string or a list of numbers");
 }
 
 }  // namespace
 
 void validate(const ImpactConfig& c) {
-  require_positive("sphere.radius", c.sphere.radius, "[m]");
-  validate(c.sphere.material, "sphere");
-  require_positive("substrate.radius", c.substrate.radius, "[m]");
-  require_positive("substrate.depth", c.substrate.depth, "[m]");
-  validate(c.substrate.material, "substrate");
-  require_positive("impact.velocity", c.impact.velocity, "[m/s]");
-  require_non_negative("impact.gap", c.impact.gap, "[m]");
-  require_positive("mesh.h_min", c.mesh.h_min, "[m]");
-  if (!(std::isfinite(c.mesh.growth) && c.mesh.growth >= 1.0)) {
-    throw_invalid("mesh.growth", c.mesh.growth, ">= 1");
-  }
-  if (!(std::isfinite(c.mesh.h_max) && c.mesh.h_max >= c.mesh.h_min)) {
-    throw_invalid("mesh.h_max", c.mesh.h_max, fmt::format(">= mesh.h_min = {} [m]", c.mesh.h_min));
-  }
-  require_positive("mesh.refine_factor", c.mesh.refine_factor);
-  require_non_negative("mesh.contact_elements", c.mesh.contact_elements);
-  if (!(std::isfinite(c.solver.safety_factor) && c.solver.safety_factor > 0.0 &&
-        c.solver.safety_factor <= 1.0)) {
-    throw_invalid("solver.safety_factor", c.solver.safety_factor, "in (0, 1]");
-  }
-  require_non_negative("solver.hourglass", c.solver.hourglass);
-  require_non_negative("solver.bulk_viscosity_linear", c.solver.bulk_viscosity_linear);
-  require_non_negative("solver.bulk_viscosity_quadratic", c.solver.bulk_viscosity_quadratic);
-  if (!(std::isfinite(c.solver.penalty_scale) && c.solver.penalty_scale > 0.0 &&
-        c.solver.penalty_scale <= 1.0)) {
-    throw_invalid("solver.penalty_scale", c.solver.penalty_scale, "in (0, 1]");
-  }
-  require_non_negative("solver.t_max", c.solver.t_max, "[s]");
-  for (double t : c.output.field_times) require_non_negative("output.times", t, "[s]");
-  if (c.output.history_every < 1) {
-    throw_invalid("output.history_every", c.output.history_every, ">= 1");
-  }
+  validate_key_ranges(c);
+  validate_limits(c);
 }
 
 void apply_setting(ImpactConfig& config, std::string_view key, std::string_view value) {
-  key = trim(key);
-  const auto& table = setters();
-  const auto it = table.find(key);
-  if (it == table.end()) {
-    throw_invalid("config key", key, fmt::format("one of {}", fmt::join(known_keys(), ", ")));
+  set_config_key(config, key, value);
+}
+
+void apply_settings(ImpactConfig& config,
+                    const std::vector<std::string>& key_value_items,
+                    std::string_view origin) {
+  std::vector<std::pair<std::string, std::string>> items;
+  std::set<std::string> seen;
+  for (const auto& item : key_value_items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw_invalid(origin, item, "key=value");
+    std::string key = item.substr(0, eq);
+    key.erase(0, key.find_first_not_of(" \t"));
+    key.erase(key.find_last_not_of(" \t") + 1);
+    if (!seen.insert(key).second) {
+      throw_invalid(fmt::format("{} {}", origin, key), item.substr(eq + 1),
+                    "given once (the key is set twice)");
+    }
+    items.emplace_back(std::move(key), item.substr(eq + 1));
   }
-  it->second(config, key, value);
+  std::stable_partition(items.begin(), items.end(),
+                        [](const auto& kv) { return is_material_key(kv.first); });
+  for (const auto& [key, value] : items) apply_setting(config, key, value);
 }
 
 ImpactConfig load_impact_config(const std::filesystem::path& file) {
@@ -203,10 +91,10 @@ ImpactConfig load_impact_config(const std::filesystem::path& file) {
   try {
     root = toml::parse_file(file.string());
   } catch (const toml::parse_error& err) {
-    throw InputError(fmt::format("invalid config file '{}': {} (line {})", file.string(),
-                                 err.description(), err.source().begin.line));
+    throw InputError(one_line(fmt::format("invalid config file '{}': {} (line {})", file.string(),
+                                          err.description(), err.source().begin.line)));
   }
-  ImpactConfig config;
+  std::vector<std::string> items;
   for (const auto& [group_key, group] : root) {
     const std::string group_name(group_key.str());
     const auto* table = group.as_table();
@@ -216,29 +104,12 @@ ImpactConfig load_impact_config(const std::filesystem::path& file) {
     }
     for (const auto& [key, node] : *table) {
       const std::string full = group_name + "." + std::string(key.str());
-      std::string text;
-      if (auto s = node.value<std::string>(); s && node.is_string()) {
-        text = *s;
-      } else if (node.is_integer()) {
-        text = fmt::format("{}", *node.value<long long>());
-      } else if (node.is_floating_point()) {
-        text = fmt::format("{}", *node.value<double>());
-      } else if (const auto* arr = node.as_array()) {
-        std::vector<std::string> items;
-        for (const auto& item : *arr) {
-          if (auto d = item.value<double>()) {
-            items.push_back(fmt::format("{}", *d));
-          } else {
-            throw_invalid(full, "non-number array item", "a list of numbers");
-          }
-        }
-        text = fmt::format("{}", fmt::join(items, ","));
-      } else {
-        throw_invalid(full, "unsupported value", "a number, a string or a list of numbers");
-      }
-      apply_setting(config, full, text);
+      if (node.is_table()) throw_invalid(full, "a table", "a value (no deeper tables)");
+      items.push_back(full + "=" + toml_value_text(full, node));
     }
   }
+  ImpactConfig config;
+  apply_settings(config, items, fmt::format("config file '{}'", file.string()));
   validate(config);
   return config;
 }

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 
 #include "corlab/core/error.hpp"
 
@@ -126,6 +127,7 @@ Material parse_material_spec(std::string_view spec,
   m.name = "inline";
   bool first = true;
   bool any_value = false;
+  std::set<std::string_view> given;  // canonical keys already set in this spec
   while (true) {
     const auto comma = spec.find(',');
     const std::string_view token = trim(spec.substr(0, comma));
@@ -137,6 +139,11 @@ Material parse_material_spec(std::string_view spec,
       m = database.get(token, f);
     } else {
       const std::string_view key = trim(token.substr(0, eq));
+      const std::string_view canonical = key == "sigma_y" ? std::string_view("sy") : key;
+      if (!given.insert(canonical).second) {
+        throw_invalid(f + "." + std::string(key), trim(token.substr(eq + 1)),
+                      "given once (the key is set twice in the material spec)");
+      }
       const double value = parse_number(trim(token.substr(eq + 1)), f + "." + std::string(key));
       if (!set_field(m, key, value)) {
         throw_invalid(f + " key", key, "one of E, nu, rho, sy, sigma_y, H");

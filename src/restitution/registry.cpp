@@ -14,6 +14,14 @@ namespace {
 constexpr const char* kMaCitation =
     "Ma J., Jie H., Bai M., Peng J., Chen H., Chen D. (2023) Chinese J. Theor. Appl. Mech. "
     "55(4):982-990, eqs. 12, 18, 19";
+// The FE calibration of Ma et al. 2023 (steel E = 210 GPa, nu = 0.3 on both sides, so
+// E* = E / (2 (1 - nu^2)); rho = 3925-15700 kg/m^3, v = 0.1-70 m/s, sigma_y = 300-1300 MPa) in
+// k1 = E*/(rho v^2) and k2 = sigma_y/E*.
+constexpr double kMaEStar = 210e9 / (2.0 * (1.0 - 0.3 * 0.3));
+constexpr DimensionlessBox kMaCalibration{.k1_min = kMaEStar / (15700.0 * 70.0 * 70.0),
+                                          .k1_max = kMaEStar / (3925.0 * 0.1 * 0.1),
+                                          .k2_min = 300e6 / kMaEStar,
+                                          .k2_max = 1300e6 / kMaEStar};
 constexpr const char* kThorntonCitation =
     "Thornton C. (1997) J. Appl. Mech. 64:383-386 (closed form as quoted by Jackson, Green & "
     "Marghitu 2010, eq. 2)";
@@ -55,7 +63,8 @@ void add_ma2023(std::vector<Registration>& r) {
                      "reproduces 15.81 and the e = 1 crossing. Eq. 18's v_y differs from the exact "
                      "crossing (log branch 1.0003-1.0005 at v_y on the seed pairs, removed by the "
                      "clamp; for sigma_y/E* < ~0.0047 a downward step < ~1e-3 at v_y)",
-                 .clamped_by_default = true},
+                 .clamped_by_default = true,
+                 .calibrated = kMaCalibration},
        [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
          return Ma2023{.pair = pair, .exact_crossing = false, .clamp = clamp};
        }});
@@ -71,7 +80,8 @@ void add_ma2023(std::vector<Registration>& r) {
                  .status_note =
                      "confirmed (one source + derivation): eq. 12 of the paper with the yield "
                      "velocity replaced by the exact e = 1 crossing (checked numerically)",
-                 .clamped_by_default = true},
+                 .clamped_by_default = true,
+                 .calibrated = kMaCalibration},
        [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
          return Ma2023{.pair = pair, .exact_crossing = true, .clamp = clamp};
        }});

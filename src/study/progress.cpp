@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace corlab::study {
 
@@ -35,6 +36,25 @@ std::string progress_text(int done, int total, double elapsed_s, double eta_s, i
                   100.0 * fraction, format_duration(elapsed_s), format_duration(eta_s));
   if (failed > 0) text += fmt::format("  ({} failed)", failed);
   return text;
+}
+
+std::function<void(double)> fraction_progress(std::FILE* out, std::string label) {
+  if (out == nullptr) return {};
+  const bool terminal = ::isatty(::fileno(out)) != 0;
+  const auto every = terminal ? std::chrono::milliseconds(500) : std::chrono::milliseconds(10000);
+  auto last = std::make_shared<std::chrono::steady_clock::time_point>();
+  return [out, terminal, every, last, label = std::move(label)](double fraction) {
+    const auto now = std::chrono::steady_clock::now();
+    if (fraction < 1.0 && now - *last < every) return;
+    *last = now;
+    if (terminal) {
+      std::fprintf(out, "\r%s: %5.1f %%", label.c_str(), 100.0 * fraction);
+      if (fraction >= 1.0) std::fputc('\n', out);
+    } else {
+      std::fprintf(out, "%s: %5.1f %%\n", label.c_str(), 100.0 * fraction);
+    }
+    std::fflush(out);
+  };
 }
 
 ProgressBar::ProgressBar(std::FILE* out, int total, int workers, int terminal)

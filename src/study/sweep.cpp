@@ -189,6 +189,7 @@ void ensure_directory(const std::filesystem::path& out_dir) {
 
 void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan) {
   ensure_directory(out_dir);
+  check_same_study(spec, out_dir);
   {
     const auto spec_copy = out_dir / "spec.toml";
     const auto temp = out_dir / "spec.toml.tmp";
@@ -208,6 +209,7 @@ void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir,
     keep.emplace_back(fem::to_string(status));
   }
   const ExistingResults existing = prepare_resume(out_dir / "results.csv", plan.header, keep);
+  check_no_duplicate_rows(out_dir / "results.csv", existing);
   if (existing.dropped_partial_line) {
     fmt::print(stderr,
                "corlab: {}: dropped a cut last line (a kill during a write); its case "

@@ -97,6 +97,13 @@ void ensure_directory(const std::filesystem::path& out_dir);
 /// fills plan.pending / plan.already_done.
 void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan);
 
+/// Throws InputError unless `out_dir` holds no study or this one (same name and [base]; cases
+/// and grid values may have been added). Call before spec.toml is overwritten.
+void check_same_study(const SweepSpec& spec, const std::filesystem::path& out_dir);
+
+/// Throws InputError naming the case ids that appear more than once in results.csv.
+void check_no_duplicate_rows(const std::filesystem::path& csv, const ExistingResults& existing);
+
 /// Exclusive lock on <out_dir>/.sweep.lock for the writer's lifetime (one sweep per directory).
 class DirectoryLock {
  public:

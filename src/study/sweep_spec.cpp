@@ -260,6 +260,18 @@ void validate_spec(const SweepSpec& spec,
   }
 }
 
+// A grid is a product: a few keys make millions of runs. Refuse more than [study] max_runs before
+// anything is expanded (the count in double: it may not fit an integer).
+void check_run_count(const SweepSpec& spec, const SpecError& error) {
+  double count = spec.cases.empty() ? 1.0 : static_cast<double>(spec.cases.size());
+  for (const auto& [key, values] : spec.grid) count *= static_cast<double>(values.size());
+  if (count > static_cast<double>(spec.max_runs)) {
+    error.fail("", fmt::format("expands to {:.0f} runs, more than [study] max_runs = {} (default "
+                               "{}); set max_runs = {:.0f} in [study] to run them all",
+                               count, spec.max_runs, kDefaultMaxRuns, count));
+  }
+}
+
 }  // namespace
 
 void apply_settings(fem::ImpactConfig& config, const Settings& settings) {
@@ -341,6 +353,7 @@ std::string SweepSpec::to_toml() const {
   out << "[study]\nname = " << toml::value<std::string>(name) << "\n";
   if (!description.empty())
     out << "description = " << toml::value<std::string>(description) << "\n";
+  if (max_runs != kDefaultMaxRuns) out << "max_runs = " << max_runs << "\n";
   out << "\n[base]\n";
   for (const auto& [k, v] : base) out << quoted_key(k) << " = " << value(v) << "\n";
   if (!grid.empty()) {
@@ -389,10 +402,16 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
   for (const auto& [key, node] : *study) {
     const std::string_view k = key.str();
     const std::string where = fmt::format("study.{}", k);
-    if (k != "name" && k != "description") {
-      error.fail(where, "unknown key (expected name, description)");
+    if (k != "name" && k != "description" && k != "max_runs") {
+      error.fail(where, "unknown key (expected name, description, max_runs)");
     }
-    if (!node.is_string()) error.fail(where, "must be a string");
+    if (k == "max_runs") {
+      const auto* n = node.as_integer();
+      if (n == nullptr || n->get() < 1) error.fail(where, "must be an integer >= 1");
+      spec.max_runs = static_cast<std::size_t>(n->get());
+    } else if (!node.is_string()) {
+      error.fail(where, "must be a string");
+    }
   }
   spec.name = (*study)["name"].value_or(std::string());
   spec.description = (*study)["description"].value_or(std::string());
@@ -451,6 +470,7 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
     }
   }
 
+  check_run_count(spec, error);
   validate_spec(spec, error, case_where, base_where);
   return spec;
 }

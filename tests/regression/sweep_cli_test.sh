@@ -14,7 +14,7 @@ rc=$?
 cat "$work/bad.err"
 [ $rc -eq 2 ] || fail "bad spec: exit $rc, expected 2"
 [ "$(wc -l < "$work/bad.err")" -eq 1 ] || fail "bad spec: expected one error line"
-grep -q "^corlab: error: invalid spec .*grid.\"impact.velocity\"\[2\] = -1: must be > 0 \[m/s\]$" \
+grep -q "^corlab: error: invalid spec .*grid.\"impact.velocity\"\[2\] = -1: must be in (0, 1000\] \[m/s\] .*$" \
   "$work/bad.err" || fail "bad spec: unexpected message"
 [ ! -s "$work/bad.out" ] && [ ! -e "$work/bad" ] || fail "bad spec: something was written"
 

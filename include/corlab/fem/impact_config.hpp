@@ -4,15 +4,8 @@
 /// 5 m/s: steel sphere R = 35 mm (E = 210 GPa, nu = 0.3, rho = 7850) on a 70 mm x 70 mm steel
 /// substrate with sigma_y = 500 MPa, gap 0.1 mm, smallest element 0.25 mm at the contact.
 ///
-/// Text keys (TOML tables / `--set key=value`), all SI:
-///   sphere.radius, sphere.material, sphere.E, sphere.nu, sphere.rho, sphere.sigma_y
-///   substrate.radius, substrate.depth, substrate.material, substrate.E, substrate.nu,
-///   substrate.rho, substrate.sigma_y, substrate.hardening
-///   impact.velocity, impact.gap
-///   mesh.h_min, mesh.growth, mesh.h_max, mesh.refine_factor, mesh.contact_elements, mesh.file
-///   solver.safety_factor, solver.hourglass, solver.bulk_viscosity_linear,
-///   solver.bulk_viscosity_quadratic, solver.penalty_scale, solver.t_max
-///   output.times, output.history_every
+/// Text keys (TOML tables / `--set key=value`), all SI: the table in config_keys.hpp (key, unit,
+/// range, default, doc); `corlab simulate --help` prints it.
 
 #include <filesystem>
 #include <string>
@@ -71,7 +64,8 @@ struct SolverConfig {
   /// estimate (independent of safety_factor) [-]
   double penalty_scale = 0.28;
   double t_max = 0.0;  ///< hard stop [s]; 0 = 20 x the Hertz contact time
-  /// Step budget: a run needing more steps ends with status step_budget_exceeded [-].
+  /// Step budget [-]: validate() refuses a run whose estimated step count (estimate_run()) is
+  /// larger; the solver stops a run that reaches it (status step_budget_exceeded).
   long long max_steps = 20'000'000;
 };
 
@@ -90,10 +84,20 @@ struct ImpactConfig {
 };
 
 /// Throws InputError naming the first invalid field (e.g. "invalid impact.velocity = 0: ...").
+/// Checks each key's range (config_keys.hpp), then the limits that join keys (config_limits.hpp:
+/// gap, substrate size, contact radius, stability, estimated step count).
 void validate(const ImpactConfig& config);
 
 /// Sets one key (see file comment) from text; throws InputError for an unknown key or bad value.
 void apply_setting(ImpactConfig& config, std::string_view key, std::string_view value);
+
+/// Applies key=value settings in one go: the `*.material` keys first (so an explicit property such
+/// as `sphere.rho` overrides the preset it modifies), then the others in order. A key given twice
+/// is an error (ambiguous), as is an item without '='. `origin` names the source in messages
+/// (e.g. "--set").
+void apply_settings(ImpactConfig& config,
+                    const std::vector<std::string>& key_value_items,
+                    std::string_view origin);
 
 /// Reads a TOML file of the keys above over the defaults; throws InputError on any problem.
 ImpactConfig load_impact_config(const std::filesystem::path& file);

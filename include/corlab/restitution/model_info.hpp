@@ -3,6 +3,7 @@
 /// Descriptive metadata of an analytic coefficient-of-restitution (CoR) model: citation,
 /// equation, validity range and verification status.
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -24,6 +25,15 @@ enum class Status {
 /// "verified-paper", "verified-second-source" or "unverified".
 std::string_view to_string(Status status);
 
+/// Calibration range of a model in the dimensionless groups of Ma et al. 2023:
+/// k1 = E*/(rho v^2) [-] and k2 = sigma_y/E* [-]. Outside it the model extrapolates.
+struct DimensionlessBox {
+  double k1_min = 0.0;
+  double k1_max = 0.0;
+  double k2_min = 0.0;
+  double k2_max = 0.0;
+};
+
 /// Metadata of one registered model (see registry.hpp).
 struct ModelInfo {
   std::string name;                     ///< registry key, e.g. "ma2023"
@@ -34,6 +44,8 @@ struct ModelInfo {
   Status status = Status::kUnverified;  ///< verification status (see Status)
   std::string status_note;  ///< the reference's wording of the status and what is unconfirmed
   bool clamped_by_default = true;  ///< whether e is clamped to [0, 1] unless told otherwise
+  /// Where the model was calibrated, when known numerically (`corlab predict` warns outside).
+  std::optional<DimensionlessBox> calibrated = std::nullopt;
 };
 
 }  // namespace corlab::restitution

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 namespace corlab::study {
@@ -19,6 +20,11 @@ std::string format_duration(double seconds);
 
 /// One progress text, e.g. "[#####.....] 12/24  50%  elapsed 3m05s  ETA 3m05s  (1 failed)".
 std::string progress_text(int done, int total, double elapsed_s, double eta_s, int failed);
+
+/// Progress of one run as a callback taking the fraction done (0..1): on a terminal one line
+/// redrawn with carriage returns (at most every 0.5 s); otherwise (a log file, a pipe) plain lines
+/// "<label>: 42.0 %" at most every 10 s, so that logs hold no control characters.
+std::function<void(double)> fraction_progress(std::FILE* out, std::string label);
 
 class ProgressBar {
  public:

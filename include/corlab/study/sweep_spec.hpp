@@ -6,6 +6,8 @@
 ///   [study]
 ///   name = "table2"                      # required, [A-Za-z0-9_-]
 ///   description = "..."
+///   max_runs = 20000                     # optional; more runs than this (default 10,000) is
+///                                        # refused before anything is expanded
 ///   [base]                               # impact-config keys over the defaults
 ///   "mesh.h_min" = 0.5e-3
 ///   [grid]                               # cartesian product; each value a non-empty array
@@ -47,12 +49,16 @@ struct SweepCase {
   fem::ImpactConfig config;  ///< defaults + settings
 };
 
+/// Largest number of runs a spec may expand to unless its [study] max_runs says more.
+inline constexpr std::size_t kDefaultMaxRuns = 10'000;
+
 /// A parsed and validated sweep specification.
 struct SweepSpec {
-  std::string name;             ///< [study] name, [A-Za-z0-9_-]+
-  std::string description;      ///< [study] description (may be empty)
-  Settings base;                ///< [base]
-  std::vector<Settings> cases;  ///< [[cases]]; empty = one case with no extra settings
+  std::string name;                        ///< [study] name, [A-Za-z0-9_-]+
+  std::string description;                 ///< [study] description (may be empty)
+  std::size_t max_runs = kDefaultMaxRuns;  ///< [study] max_runs
+  Settings base;                           ///< [base]
+  std::vector<Settings> cases;             ///< [[cases]]; empty = one case with no extra settings
   std::vector<std::pair<std::string, std::vector<std::string>>> grid;  ///< [grid], document order
   std::string origin;     ///< where it came from (file name), used in messages
   std::string toml_text;  ///< the source text (copied to <out>/spec.toml); empty = regenerate

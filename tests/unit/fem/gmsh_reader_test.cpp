@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -115,6 +116,56 @@ TEST(GmshReader, RejectsTriangles) {
 
 TEST(GmshReader, MissingFile) {
   EXPECT_THROW(read_gmsh(kMeshDir / "does_not_exist.msh"), InputError);
+}
+
+}  // namespace
+}  // namespace corlab::fem
+
+namespace corlab::fem {
+namespace {
+
+// Found by fuzzing (tests/fuzz): on this damaged file the gmsh API throws a std::string, which
+// escaped read_gmsh and terminated the process.
+TEST(GmshReader, DamagedFileFoundByFuzzingIsAnInputError) {
+  if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
+  try {
+    (void)read_gmsh(CORLAB_SOURCE_DIR "/tests/fuzz/regressions/gmsh_string_exception.msh");
+    ADD_FAILURE() << "the damaged mesh was accepted";
+  } catch (const InputError& err) {
+    const std::string message = err.what();
+    EXPECT_NE(message.find("gmsh could not read it"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+// Found by fuzzing: gmsh 4.8's own reader segfaults on this file; read_gmsh probes it in a child
+// process and refuses it.
+TEST(GmshReader, FileThatCrashesGmshIsAnInputError) {
+  if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
+  try {
+    (void)read_gmsh(CORLAB_SOURCE_DIR "/tests/fuzz/regressions/gmsh_reader_segfault.msh");
+    ADD_FAILURE() << "the damaged mesh was accepted";
+  } catch (const InputError& err) {
+    const std::string message = err.what();
+    EXPECT_NE(message.find("gmsh could not read it"), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+// Found by fuzzing: a damaged node count (999999432) keeps gmsh 4.8 reading for ~40 s; the
+// probe's time limit (here 2 s) turns it into an InputError.
+TEST(GmshReader, FileThatHangsGmshIsAnInputError) {
+  if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
+  ::setenv("CORLAB_GMSH_TIMEOUT_S", "2", 1);
+  try {
+    (void)read_gmsh(CORLAB_SOURCE_DIR "/tests/fuzz/regressions/gmsh_reader_hang.msh");
+    ADD_FAILURE() << "the damaged mesh was accepted";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("could not read it within 2 s"), std::string::npos)
+        << err.what();
+  }
+  ::unsetenv("CORLAB_GMSH_TIMEOUT_S");
+  EXPECT_NO_THROW((void)read_gmsh(kMeshDir / "example_impact.msh"));
 }
 
 }  // namespace

@@ -249,3 +249,22 @@ TEST(MaterialSpec, BadSpecMessages) {
 
 }  // namespace
 }  // namespace corlab
+
+namespace corlab {
+namespace {
+
+// Found by fuzzing (tests/fuzz): a line break inside a material spec was echoed raw, so the
+// error spanned two lines. Control characters are now shown escaped.
+TEST(MaterialSpec, LineBreakInSpecGivesOneLineError) {
+  try {
+    (void)parse_material_spec("al\nina_ma2023,sy=1e9,rho=3925", "sphere");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& err) {
+    EXPECT_EQ(
+        std::string(err.what()).rfind("invalid sphere = 'al\\nina_ma2023': must be one of", 0), 0u)
+        << err.what();
+  }
+}
+
+}  // namespace
+}  // namespace corlab

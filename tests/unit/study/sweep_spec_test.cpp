@@ -166,7 +166,8 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
   const std::string head = "[study]\nname = \"t\"\n";
   const std::vector<BadSpec> cases{
       {"negative velocity", head + "[grid]\n\"impact.velocity\" = [1.0, 5.0, -1]\n",
-       "invalid spec t.toml grid.\"impact.velocity\"[2] = -1: must be > 0 [m/s]"},
+       "invalid spec t.toml grid.\"impact.velocity\"[2] = -1: must be in (0, 1000] [m/s] (no "
+       "equation of state for hypervelocity impact)"},
       {"empty grid", head + "[grid]\n\"impact.velocity\" = []\n",
        "invalid spec t.toml grid.\"impact.velocity\" = []: must be a non-empty array of values"},
       {"grid scalar", head + "[grid]\n\"impact.velocity\" = 5.0\n",
@@ -178,7 +179,7 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
        "invalid spec t.toml: unknown table or key 'gird' (expected [study], [base], [grid], "
        "[[cases]])"},
       {"unknown study key", head + "author = \"me\"\n",
-       "invalid spec t.toml study.author: unknown key (expected name, description)"},
+       "invalid spec t.toml study.author: unknown key (expected name, description, max_runs)"},
       {"missing study", "[grid]\n\"impact.velocity\" = [1.0]\n",
        "invalid spec t.toml: missing [study] table with name = \"...\""},
       {"missing name", "[study]\ndescription = \"x\"\n",
@@ -193,9 +194,10 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
        "invalid spec t.toml base.\"mesh.h_min\": must be a number, a string or a boolean"},
       {"unknown material", head + "[[cases]]\n\"sphere.material\" = \"unobtainium\"\n", ""},
       {"base range", head + "[base]\n\"sphere.radius\" = 0\n",
-       "invalid spec t.toml base.\"sphere.radius\" = 0: must be > 0 [m]"},
+       "invalid spec t.toml base.\"sphere.radius\" = 0: must be in [1e-06, 1] [m]"},
       {"case range", head + "[[cases]]\n\"sphere.rho\" = -5\n",
-       "invalid spec t.toml cases[0].\"sphere.rho\" = -5: must be > 0 [kg/m^3]"},
+       "invalid spec t.toml cases[0].\"sphere.rho\" = -5: must be in [1, 100000] [kg/m^3] (from "
+       "foams to 4 x osmium)"},
       {"combination", head + "[base]\n\"mesh.h_max\" = 1e-3\n[grid]\n\"mesh.h_min\" = [2e-3]\n",
        "invalid spec t.toml grid.\"mesh.h_min\"[0] = 0.002: invalid mesh.h_max = 0.001: must be "
        ">= mesh.h_min = 0.002 [m]"},
@@ -232,6 +234,39 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
 
 TEST(SweepSpec, MissingFileIsAnInputError) {
   EXPECT_THROW(load_sweep_spec("/nonexistent/spec.toml"), InputError);
+}
+
+}  // namespace
+}  // namespace corlab::study
+
+namespace corlab::study {
+namespace {
+
+// "[a, b, ...]" of n distinct values start, start + step, ...
+std::string values(int n, double start, double step) {
+  std::string out = "[";
+  for (int i = 0; i < n; ++i) out += (i ? ", " : "") + std::to_string(start + i * step);
+  return out + "]";
+}
+
+TEST(SweepSpec, HugeGridIsRefusedBeforeExpansionUnlessMaxRunsSaysSo) {
+  const std::string grid = "[grid]\n\"impact.velocity\" = " + values(100, 1.0, 0.1) +
+                           "\n\"substrate.sigma_y\" = " + values(100, 300e6, 1e6) +
+                           "\n\"sphere.rho\" = " + values(100, 3000.0, 10.0) + "\n";
+  try {
+    (void)parse_sweep_spec("[study]\nname = \"big\"\n" + grid, "big.toml");
+    ADD_FAILURE() << "a 10^6-run grid was accepted";
+  } catch (const InputError& err) {
+    EXPECT_EQ(std::string(err.what()),
+              "invalid spec big.toml: expands to 1000000 runs, more than [study] max_runs = 10000 "
+              "(default 10000); set max_runs = 1000000 in [study] to run them all");
+  }
+  const std::string small = "[grid]\n\"impact.velocity\" = " + values(3, 1.0, 1.0) + "\n";
+  EXPECT_THROW((void)parse_sweep_spec("[study]\nname = \"s\"\nmax_runs = 2\n" + small, "s.toml"),
+               InputError);
+  const auto spec = parse_sweep_spec("[study]\nname = \"s\"\nmax_runs = 3\n" + small, "s.toml");
+  EXPECT_EQ(spec.expand().size(), 3u);
+  EXPECT_NE(spec.to_toml().find("max_runs = 3"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,22 @@
+// Fuzz target: the impact-config readers, a TOML file (load_impact_config) and the same text as
+// `--set key=value` lines (apply_settings + validate).
+#include <sstream>
+#include <vector>
+
+#include "corlab/fem/impact_config.hpp"
+#include "fuzz_target.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace corlab;
+  const auto file = fuzz::scratch_file(".toml", data, size);
+  fuzz::expect_clean("config_toml", [&] { (void)fem::load_impact_config(file); });
+  std::vector<std::string> items;
+  std::istringstream lines(std::string(reinterpret_cast<const char*>(data), size));
+  for (std::string line; std::getline(lines, line);) items.push_back(line);
+  fuzz::expect_clean("config_set", [&] {
+    fem::ImpactConfig config;
+    fem::apply_settings(config, items, "--set");
+    fem::validate(config);
+  });
+  return 0;
+}
