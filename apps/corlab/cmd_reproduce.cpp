@@ -6,12 +6,11 @@
 //   corlab reproduce --preset quick --out out/report            # ~10 min on 2 cores
 //   corlab reproduce --preset full --out out/full --jobs 16     # the paper's grids (hours)
 //   corlab reproduce --preset quick --out out/r --only table2 --no-report
-// Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 130 interrupted.
+// Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 128 + signal when
+// interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP).
 #include <fmt/core.h>
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,19 +20,13 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/interrupt.hpp"
 #include "corlab/study/reproduce.hpp"
 
 namespace corlab::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<bool> g_cancel{false};
-
-void on_interrupt(int /*signal*/) {
-  g_cancel.store(true);
-  std::signal(SIGINT, SIG_DFL);
-}
 
 struct ReproduceArgs {
   std::string preset = "quick";
@@ -122,14 +115,14 @@ int run(const ReproduceArgs& args) {
   options.only = args.only;
   options.studies_dir = args.studies;
   options.progress = !args.quiet;
-  options.cancel = &g_cancel;
+  const InterruptScope interrupt;  // Ctrl-C, SIGTERM, SIGHUP: stop after the running cases
+  options.cancel = interrupt.flag();
   options.command_line = own_command_line();
-  std::signal(SIGINT, on_interrupt);
   const nlohmann::json result = study::reproduce(options);
-  std::signal(SIGINT, SIG_DFL);
-  if (g_cancel.load()) {
-    std::fprintf(stderr, "corlab: interrupted; rerun the same command to continue\n");
-    return 130;
+  if (interrupt.requested()) {
+    std::fprintf(stderr, "corlab: interrupted (%s); rerun the same command to continue\n",
+                 interrupt.signal_name());
+    return interrupt.exit_code();
   }
   int failed = 0;
   for (const auto& [name, s] : result["studies"].items()) failed += s.value("failed", 0);

@@ -1,9 +1,7 @@
 // `corlab simulate`: one explicit FE impact; writes summary.json, history.csv, fields_<t>.vtu.
 #include <fmt/core.h>
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -11,6 +9,7 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/interrupt.hpp"
 #include "corlab/fem/impact_config.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/simulate.hpp"
@@ -18,10 +17,6 @@
 
 namespace corlab::cli {
 namespace {
-
-std::atomic<bool> g_cancel{false};  // set by SIGINT; the solver polls it
-
-extern "C" void on_sigint(int /*signal*/) { g_cancel.store(true); }
 
 struct SimulateOptions {
   std::string config_file;
@@ -45,8 +40,8 @@ int run_simulate(const SimulateOptions& opt) {
   if (ec) throw_invalid("--out", opt.out_dir, "a writable directory");
 
   fem::SimulationControl control;
-  g_cancel.store(false);
-  control.cancel = &g_cancel;
+  const InterruptScope interrupt;  // Ctrl-C, SIGTERM, SIGHUP: the solver polls the flag
+  control.cancel = interrupt.flag();
   auto last = std::chrono::steady_clock::now();
   if (!opt.quiet) {
     control.progress = [&last](double fraction) {
@@ -63,19 +58,17 @@ int run_simulate(const SimulateOptions& opt) {
     fem::write_vtu(file, snapshot);
     written.push_back(file.string());
   };
-  const auto previous = std::signal(SIGINT, on_sigint);
   fem::ImpactResult result;
   try {
     result = fem::simulate(config, control);
   } catch (const std::runtime_error& err) {
-    std::signal(SIGINT, previous);
-    if (g_cancel.load()) {
-      fmt::print(stderr, "\ncorlab simulate: interrupted, nothing written\n");
-      return 130;
+    if (interrupt.requested()) {
+      fmt::print(stderr, "\ncorlab simulate: interrupted ({}), nothing written\n",
+                 interrupt.signal_name());
+      return interrupt.exit_code();
     }
     throw;
   }
-  std::signal(SIGINT, previous);
   fem::write_summary_json(result, config, out / "summary.json");
   fem::write_history_csv(result.history, out / "history.csv");
   if (!result.separated) {

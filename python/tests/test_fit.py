@@ -145,7 +145,7 @@ def paper_rows():
 
 
 def test_fit_lists_every_excluded_row_with_its_reason(tmp_path):
-    """issue 12 item 3: rows with e = nan / inf / negative, failed or elastic are named, not lost."""
+    """issue 12 item 3: rows with e = nan / inf / < 0, failed or elastic are named, not lost."""
     rows = paper_rows()
     bad = {"bad_nan": "nan", "bad_inf": "inf", "bad_negative": "-0.5"}
     for case_id, e in bad.items():
@@ -160,7 +160,8 @@ def test_fit_lists_every_excluded_row_with_its_reason(tmp_path):
     assert reasons["bad_failed"] == "status = failed"
     assert reasons["bad_elastic"].startswith("sigma_y = nan")
     clamped = [r for r in rows if r["case_id"].startswith("c") and r["e"] >= 1 - 1e-3]
-    assert clamped and all(reasons[r["case_id"]].endswith(": elastic (>= 1 - 0.001)") for r in clamped)
+    assert clamped
+    assert all(reasons[r["case_id"]].endswith(": elastic (>= 1 - 0.001)") for r in clamped)
     assert fit["rows"] == len(rows)
     assert fit["rows_excluded"] == len(reasons) == len(rows) - fit["restitution_law"]["points_used"]
     assert fit["restitution_law"]["slope"]["value"] == pytest.approx(0.056, abs=1e-10)

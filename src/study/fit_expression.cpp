@@ -15,16 +15,13 @@
 #include <set>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/text.hpp"
 
 namespace corlab::study {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
+/// `text` without blanks at either end, as a string.
+std::string trimmed(std::string_view text) { return std::string(trim(text)); }
 
 bool is_identifier(const std::string& name) {
   if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
@@ -177,8 +174,8 @@ std::pair<std::string, std::string> split_formula(const std::string& formula) {
   if (pos == std::string::npos) {
     throw_invalid("form", formula, "of the form 'response ~ model'");
   }
-  std::string response = trim(formula.substr(0, pos));
-  std::string model = trim(formula.substr(pos + 1));
+  std::string response = trimmed(formula.substr(0, pos));
+  std::string model = trimmed(formula.substr(pos + 1));
   if (!is_identifier(response)) {
     throw_invalid("form response", response, "a column name");
   }
@@ -192,14 +189,14 @@ std::vector<ParameterStart> parse_parameter_starts(const std::vector<std::string
     std::size_t begin = 0;
     while (begin <= item.size()) {
       const auto end = std::min(item.find(',', begin), item.size());
-      const std::string token = trim(item.substr(begin, end - begin));
+      const std::string token = trimmed(item.substr(begin, end - begin));
       begin = end + 1;
       if (token.empty()) continue;
       const auto eq = token.find('=');
       if (eq == std::string::npos) throw_invalid("parameter", token, "of the form name=start");
-      ParameterStart p{trim(token.substr(0, eq)), 0.0};
+      ParameterStart p{trimmed(token.substr(0, eq)), 0.0};
       if (!is_identifier(p.name)) throw_invalid("parameter name", p.name, "an identifier");
-      const std::string value = trim(token.substr(eq + 1));
+      const std::string value = trimmed(token.substr(eq + 1));
       try {
         std::size_t used = 0;
         p.start = std::stod(value, &used);
@@ -252,7 +249,7 @@ NonlinearFit fit_expression(const std::string& formula,
   for (const auto& p : params) start.push_back(p.start);
   {
     std::unique_ptr<BoundExpression> filter;
-    if (!trim(options.where).empty()) {
+    if (!trimmed(options.where).empty()) {
       filter = std::make_unique<BoundExpression>(options.where, std::vector<std::string>{}, data,
                                                  "where");
     }
