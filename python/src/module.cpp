@@ -10,12 +10,12 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = std::string(corlab::kVersion);
   // corlab::InputError (bad input) becomes ValueError with the same one-line message and, as
   // data, the attributes field, value and constraint ("" when not about one field).
-  pybind11::register_exception_translator([](std::exception_ptr p) {
+  pybind11::register_exception_translator([](const std::exception_ptr& p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const corlab::InputError& e) {
       namespace py = pybind11;
-      py::object error =
+      auto error =
           py::reinterpret_steal<py::object>(PyObject_CallFunction(PyExc_ValueError, "s", e.what()));
       if (!error) return;  // the Python error of the failed call stays set
       error.attr("field") = e.field();

@@ -415,7 +415,7 @@ ResultsTable ResultsTable::where(std::string_view column, std::string_view value
     for (const auto& c : cells_) row.push_back(c[r]);
     rows.push_back(std::move(row));
   }
-  return ResultsTable(columns_, std::move(rows));
+  return {columns_, std::move(rows)};
 }
 
 ResultsTable ResultsTable::sorted_by(std::string_view column) const {
@@ -430,7 +430,7 @@ ResultsTable ResultsTable::sorted_by(std::string_view column) const {
     for (const auto& c : cells_) row.push_back(c[r]);
     rows.push_back(std::move(row));
   }
-  return ResultsTable(columns_, std::move(rows));
+  return {columns_, std::move(rows)};
 }
 
 ResultsTable read_results(const std::filesystem::path& csv) {
