@@ -1,6 +1,8 @@
 // The compiled part of the Python package `corlab` (corlab._core).
 #include <pybind11/pybind11.h>
 
+#include <utility>
+
 #include "bindings.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/version.hpp"
@@ -10,9 +12,9 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = std::string(corlab::kVersion);
   // corlab::InputError (bad input) becomes ValueError with the same one-line message and, as
   // data, the attributes field, value and constraint ("" when not about one field).
-  pybind11::register_exception_translator([](const std::exception_ptr& p) {
+  pybind11::register_exception_translator([](std::exception_ptr p) {
     try {
-      if (p) std::rethrow_exception(p);
+      if (p) std::rethrow_exception(std::move(p));
     } catch (const corlab::InputError& e) {
       namespace py = pybind11;
       auto error =
