@@ -12,9 +12,10 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   libeigen3-dev libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev \
   libgtest-dev libgmock-dev libbenchmark-dev pybind11-dev python3-dev python3-numpy \
   python3-matplotlib python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
-  libgsl-dev libmuparser-dev
+  libgsl-dev libmuparser-dev \
+  clang-tidy python3-flake8
 
-.PHONY: deps configure build run test test-cpp test-python bench format clean
+.PHONY: deps configure build run test test-cpp test-python lint lint-cpp lint-python bench format clean
 
 deps:
 	@missing=$$(for p in $(DEBIAN_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null \
@@ -36,7 +37,7 @@ build: configure
 run: build
 	./$(BUILD_DIR)/bin/corlab reproduce --preset $(REPORT_PRESET) --out $(REPORT_DIR)
 
-test: build test-cpp test-python
+test: build test-cpp test-python lint
 
 test-cpp:
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
@@ -44,6 +45,16 @@ test-cpp:
 test-python:
 	PYTHONPATH=$(CURDIR)/$(BUILD_DIR)/python CORLAB_BIN=$(CURDIR)/$(BUILD_DIR)/bin/corlab \
 	  /usr/bin/python3 -m pytest -q python/tests
+
+# Static analysis: clang-tidy (.clang-tidy; scripts/lint/clang_tidy.sh lists what it leaves out)
+# and flake8 (.flake8) on the Python sources. Both fail on any finding.
+lint: lint-python lint-cpp
+
+lint-cpp: build
+	scripts/lint/clang_tidy.sh $(BUILD_DIR) $(JOBS)
+
+lint-python:
+	/usr/bin/python3 -m flake8 python scripts tests
 
 bench: build
 	for b in $(BUILD_DIR)/bin/*_benchmark; do $$b; done

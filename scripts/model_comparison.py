@@ -49,7 +49,8 @@ def main():
     args = parser.parse_args()
     binary = args.binary or os.environ.get("CORLAB_BIN") or "./build/bin/corlab"
     if not os.path.exists(binary):
-        sys.exit(f"model_comparison: corlab CLI not found at '{binary}' (pass it or set CORLAB_BIN)")
+        sys.exit(f"model_comparison: corlab CLI not found at '{binary}' "
+                 "(pass it or set CORLAB_BIN)")
     os.makedirs(args.out, exist_ok=True)
 
     rows = []

@@ -6,12 +6,11 @@
 //   corlab reproduce --out out/report                 # the paper's mesh and grids (make run)
 //   corlab reproduce --preset coarse --out out/demo   # a coarse demo, not the reproduction
 //   corlab reproduce --out out/r --only table2 --no-report
-// Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 130 interrupted.
+// Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 128 + signal when
+// interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP).
 #include <fmt/core.h>
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,19 +20,13 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/interrupt.hpp"
 #include "corlab/study/reproduce.hpp"
 
 namespace corlab::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<bool> g_cancel{false};
-
-void on_interrupt(int /*signal*/) {
-  g_cancel.store(true);
-  std::signal(SIGINT, SIG_DFL);
-}
 
 struct ReproduceArgs {
   std::string preset = "paper";
@@ -124,14 +117,14 @@ int run(const ReproduceArgs& args) {
   options.only = args.only;
   options.studies_dir = args.studies;
   options.progress = !args.quiet;
-  options.cancel = &g_cancel;
+  const InterruptScope interrupt;  // Ctrl-C, SIGTERM, SIGHUP: stop after the running cases
+  options.cancel = interrupt.flag();
   options.command_line = own_command_line();
-  std::signal(SIGINT, on_interrupt);
   const nlohmann::json result = study::reproduce(options);
-  std::signal(SIGINT, SIG_DFL);
-  if (g_cancel.load()) {
-    std::fprintf(stderr, "corlab: interrupted; rerun the same command to continue\n");
-    return 130;
+  if (interrupt.requested()) {
+    std::fprintf(stderr, "corlab: interrupted (%s); rerun the same command to continue\n",
+                 interrupt.signal_name());
+    return interrupt.exit_code();
   }
   int failed = 0;
   for (const auto& [name, s] : result["studies"].items()) failed += s.value("failed", 0);

@@ -1,10 +1,8 @@
 // `corlab simulate`: one explicit FE impact; writes summary.json, history.csv, fields_<t>.vtu.
 #include <fmt/core.h>
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -12,8 +10,9 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
-#include "corlab/fem/discretisation_error.hpp"
+#include "corlab/core/interrupt.hpp"
 #include "corlab/fem/config_keys.hpp"
+#include "corlab/fem/discretisation_error.hpp"
 #include "corlab/fem/impact_config.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/simulate.hpp"
@@ -22,10 +21,6 @@
 
 namespace corlab::cli {
 namespace {
-
-std::atomic<bool> g_cancel{false};  // set by SIGINT; the solver polls it
-
-extern "C" void on_sigint(int /*signal*/) { g_cancel.store(true); }
 
 struct SimulateOptions {
   std::string config_file;
@@ -46,8 +41,8 @@ int run_simulate(const SimulateOptions& opt) {
   if (ec) throw_invalid("--out", opt.out_dir, "a writable directory");
 
   fem::SimulationControl control;
-  g_cancel.store(false);
-  control.cancel = &g_cancel;
+  const InterruptScope interrupt;  // Ctrl-C, SIGTERM, SIGHUP: the solver polls the flag
+  control.cancel = interrupt.flag();
   if (!opt.quiet) control.progress = study::fraction_progress(stderr, "corlab simulate");
   std::vector<std::string> written;
   control.on_fields = [&out, &written](double time, const fem::FieldSnapshot& snapshot) {
@@ -55,14 +50,13 @@ int run_simulate(const SimulateOptions& opt) {
     fem::write_vtu(file, snapshot);
     written.push_back(file.string());
   };
-  const auto previous = std::signal(SIGINT, on_sigint);
   const fem::ImpactResult result = opt.error_estimate
                                        ? fem::simulate_with_error_estimate(config, control)
                                        : fem::simulate(config, control);
-  std::signal(SIGINT, previous);
   if (result.status == fem::RunStatus::kCancelled) {
-    fmt::print(stderr, "\ncorlab simulate: interrupted, nothing written\n");
-    return 130;
+    fmt::print(stderr, "\ncorlab simulate: interrupted ({}), nothing written\n",
+               interrupt.signal_name());
+    return interrupt.exit_code();
   }
   fem::write_summary_json(result, config, out / "summary.json");
   fem::write_history_csv(result.history, out / "history.csv");

@@ -5,11 +5,10 @@
 //   corlab sweep studies/table2.toml --out out/table2           # all cores, progress bar
 //   corlab sweep studies/table2.toml --out out/table2 --dry-run # list the cases
 //   mpirun -n 8 corlab sweep studies/table2.toml --out out/table2
-// Exit status: 0 all cases finished without failure, 1 some failed, 2 bad input, 130 interrupted.
+// Exit status: 0 all cases finished without failure, 1 some failed, 2 bad input, 128 + signal when
+// interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP).
 #include <fmt/core.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +16,7 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/interrupt.hpp"
 #include "corlab/fem/discretisation_error.hpp"
 #include "corlab/study/progress.hpp"
 #include "corlab/study/sweep.hpp"
@@ -24,14 +24,6 @@
 
 namespace corlab::cli {
 namespace {
-
-std::atomic<bool> g_cancel{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-void on_interrupt(int /*signal*/) {
-  g_cancel.store(true);
-  std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C stops at once (finished rows are on disk)
-}
 
 struct SweepArgs {
   std::string spec;
@@ -84,16 +76,19 @@ int run(const SweepArgs& args) {
   study::SweepOptions options;
   options.jobs = args.jobs;
   options.progress = !args.quiet;
-  options.cancel = &g_cancel;
+  // Ctrl-C, SIGTERM or SIGHUP: stop after the running cases (their rows are written); a second
+  // signal stops at once (finished rows are on disk).
+  const InterruptScope interrupt;
+  options.cancel = interrupt.flag();
   if (args.error_estimate) {
     options.runner = [](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
       return fem::simulate_with_error_estimate(config, control);
     };
   }
-  std::signal(SIGINT, on_interrupt);
   const study::SweepSummary summary = study::run_sweep(spec, args.out, options);
-  std::signal(SIGINT, SIG_DFL);
-  if (summary.rank != 0) return summary.interrupted ? 130 : summary.failed > 0 ? 1 : 0;
+  const int interrupted_status = interrupt.requested() ? interrupt.exit_code() : 130;
+  if (summary.rank != 0)
+    return summary.interrupted ? interrupted_status : summary.failed > 0 ? 1 : 0;
 
   const std::string csv = (std::filesystem::path(args.out) / "results.csv").string();
   std::string where =
@@ -110,7 +105,7 @@ int run(const SweepArgs& args) {
                  "corlab: interrupted: %d of %d cases remain; run the same command again to "
                  "resume (finished rows are kept in %s)\n",
                  summary.remaining(), summary.total, csv.c_str());
-    return 130;
+    return interrupted_status;
   }
   if (summary.failed > 0) {
     std::fprintf(stderr,

@@ -1,6 +1,8 @@
 // The compiled part of the Python package `corlab` (corlab._core).
 #include <pybind11/pybind11.h>
 
+#include <utility>
+
 #include "bindings.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/version.hpp"
@@ -12,10 +14,10 @@ PYBIND11_MODULE(_core, m) {
   // data, the attributes field, value and constraint ("" when not about one field).
   pybind11::register_exception_translator([](std::exception_ptr p) {
     try {
-      if (p) std::rethrow_exception(p);
+      if (p) std::rethrow_exception(std::move(p));
     } catch (const corlab::InputError& e) {
       namespace py = pybind11;
-      py::object error =
+      auto error =
           py::reinterpret_steal<py::object>(PyObject_CallFunction(PyExc_ValueError, "s", e.what()));
       if (!error) return;  // the Python error of the failed call stays set
       error.attr("field") = e.field();

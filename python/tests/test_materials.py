@@ -42,7 +42,8 @@ def test_material_constructor_validates():
     ("E=1e9,nu=0.3", r"invalid material.rho = 0: must be > 0 \[kg/m\^3\]"),
     ("E=abc,nu=0.3,rho=1", r"invalid material.E = 'abc': must be a finite number"),
     ("E=1e9,nu=0.3,rho=1,foo=2", r"invalid material key = 'foo': must be one of E, nu, rho"),
-    ("E=1e9,nu=0.3,rho=1,sy=2e9", r"invalid material.sigma_y = 2000000000: must be in \(0, 0.1 E\) \[Pa\]"),
+    ("E=1e9,nu=0.3,rho=1,sy=2e9",
+     r"invalid material.sigma_y = 2000000000: must be in \(0, 0.1 E\) \[Pa\]"),
     ("steel_ma2023,oops", r"invalid material = 'oops': must be a key=value pair"),
 ])
 def test_bad_specs(spec, message):

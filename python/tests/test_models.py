@@ -1,4 +1,4 @@
-"""Tests of the analytic CoR model bindings (corlab.models, corlab.predict, corlab.yield_velocity)."""
+"""Tests of the analytic CoR model bindings: corlab.models, .predict, .yield_velocity."""
 import math
 import warnings
 

@@ -1,5 +1,4 @@
 """Sweeps from Python: load_spec, run_sweep (real solver, tiny case), read_results."""
-import os
 import pathlib
 
 import numpy as np
@@ -70,7 +69,8 @@ def test_read_results_of_a_hand_written_table(tmp_path):
 
 def test_docs_name_every_results_csv_column():
     page = (pathlib.Path(__file__).resolve().parents[2] / "docs" / "user" / "sweeps.md").read_text()
-    missing = [f["name"] for f in corlab.result_fields() if f["in_csv"] and f"`{f['name']}`" not in page]
+    missing = [f["name"] for f in corlab.result_fields()
+               if f["in_csv"] and f"`{f['name']}`" not in page]
     assert not missing, f"docs/user/sweeps.md does not name the results.csv columns {missing}"
 
 

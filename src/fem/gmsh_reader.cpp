@@ -3,11 +3,13 @@
 #include "corlab/core/error.hpp"
 
 #ifdef CORLAB_WITH_GMSH
+#include <fmt/format.h>
 #include <gmsh.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -103,11 +105,11 @@ std::vector<std::size_t> group_elements(
         std::vector<double> local;
         gmsh::model::mesh::getElementProperties(types[k], type_name, edim, order, num_nodes, local,
                                                 num_primary);
-        throw InputError(
-            "invalid mesh.file = " + file.string() + ": physical group \"" + name + "\" contains " +
-            type_name + " elements; only " +
-            (dim == 2 ? "4-node quadrilaterals (recombine the mesh)" : "2-node lines") +
-            " are supported");
+        throw InputError(fmt::format(
+            "invalid mesh.file = {}: physical group \"{}\" contains {} elements; only {} are "
+            "supported",
+            file.string(), name, type_name,
+            dim == 2 ? "4-node quadrilaterals (recombine the mesh)" : "2-node lines"));
       }
       nodes.insert(nodes.end(), node_tags[k].begin(), node_tags[k].end());
     }
@@ -162,6 +164,90 @@ std::vector<int> chain(const std::vector<std::size_t>& segments,
     throw InputError("invalid mesh.file = " + file.string() + ": physical group \"" + name +
                      "\" is not one connected curve");
   return order;
+}
+
+/// Every node of the model: coordinates (x, y, z per node) and position of each gmsh tag.
+struct NodeCoordinates {
+  std::vector<double> coord;
+  std::unordered_map<std::size_t, std::size_t> position;
+};
+
+NodeCoordinates node_coordinates() {
+  NodeCoordinates nodes;
+  std::vector<std::size_t> all_tags;
+  std::vector<double> parametric;
+  gmsh::model::mesh::getNodes(all_tags, nodes.coord, parametric, -1, -1, false, false);
+  for (std::size_t k = 0; k < all_tags.size(); ++k) nodes.position[all_tags[k]] = k;
+  return nodes;
+}
+
+/// Appends the quadrilaterals `connectivity` (4 gmsh node tags each) of one body to `mesh`,
+/// counter-clockwise in (r, z); `index` maps gmsh tags to mesh nodes of this body, `other` those
+/// of the other body (the bodies must not share nodes).
+void add_body(Mesh& mesh,
+              const std::vector<std::size_t>& connectivity,
+              const NodeCoordinates& nodes,
+              Body body,
+              std::unordered_map<std::size_t, int>& index,
+              const std::unordered_map<std::size_t, int>& other,
+              const std::filesystem::path& file) {
+  for (std::size_t k = 0; k < connectivity.size(); k += 4) {
+    std::array<int, 4> quad{};
+    for (std::size_t c = 0; c < 4; ++c) {
+      const std::size_t gtag = connectivity[k + c];
+      if (other.count(gtag) != 0)
+        throw InputError("invalid mesh.file = " + file.string() +
+                         R"(: the bodies "sphere" and "substrate" share nodes)");
+      auto [it, inserted] = index.try_emplace(gtag, mesh.num_nodes());
+      if (inserted) {
+        const std::size_t p = nodes.position.at(gtag);
+        mesh.r.push_back(nodes.coord[3 * p]);
+        mesh.z.push_back(nodes.coord[3 * p + 1]);
+        mesh.node_body.push_back(body);
+      }
+      quad[c] = it->second;
+    }
+    const auto a = static_cast<std::size_t>(quad[0]);
+    const auto b = static_cast<std::size_t>(quad[1]);
+    const auto c = static_cast<std::size_t>(quad[2]);
+    const auto d = static_cast<std::size_t>(quad[3]);
+    const double area2 = (mesh.r[c] - mesh.r[a]) * (mesh.z[d] - mesh.z[b]) -
+                         (mesh.z[c] - mesh.z[a]) * (mesh.r[d] - mesh.r[b]);
+    if (area2 < 0.0) std::swap(quad[1], quad[3]);
+    mesh.quads.push_back(quad);
+    mesh.element_body.push_back(body);
+  }
+}
+
+std::vector<std::size_t> physical_group_nodes(int tag) {
+  std::vector<std::size_t> tags;
+  std::vector<double> xyz;
+  gmsh::model::mesh::getNodesForPhysicalGroup(1, tag, tags, xyz);
+  return tags;
+}
+
+/// The axis nodes (of either body) and the base nodes (of the substrate), sorted.
+void add_boundary_nodes(Mesh& mesh,
+                        int axis_tag,
+                        int base_tag,
+                        const std::unordered_map<std::size_t, int>& sphere_index,
+                        const std::unordered_map<std::size_t, int>& substrate_index,
+                        const std::filesystem::path& file) {
+  for (const std::size_t t : physical_group_nodes(axis_tag)) {
+    if (const auto it = sphere_index.find(t); it != sphere_index.end())
+      mesh.axis_nodes.push_back(it->second);
+    else if (const auto jt = substrate_index.find(t); jt != substrate_index.end())
+      mesh.axis_nodes.push_back(jt->second);
+  }
+  std::sort(mesh.axis_nodes.begin(), mesh.axis_nodes.end());
+  for (const std::size_t t : physical_group_nodes(base_tag)) {
+    const auto it = substrate_index.find(t);
+    if (it == substrate_index.end())
+      throw InputError("invalid mesh.file = " + file.string() +
+                       R"(: physical group "base" has nodes outside "substrate")");
+    mesh.base_nodes.push_back(it->second);
+  }
+  std::sort(mesh.base_nodes.begin(), mesh.base_nodes.end());
 }
 
 }  // namespace
@@ -274,72 +360,15 @@ Mesh read_opened_gmsh(const std::filesystem::path& file) {
   const int sphere_contact_tag = require_group(groups1, "sphere_contact", 1, file);
   const int substrate_contact_tag = require_group(groups1, "substrate_contact", 1, file);
 
-  std::vector<std::size_t> all_tags;
-  std::vector<double> coord;
-  std::vector<double> parametric;
-  gmsh::model::mesh::getNodes(all_tags, coord, parametric, -1, -1, false, false);
-  std::unordered_map<std::size_t, std::size_t> position;
-  for (std::size_t k = 0; k < all_tags.size(); ++k) position[all_tags[k]] = k;
-
   Mesh mesh;
   std::unordered_map<std::size_t, int> sphere_index;
   std::unordered_map<std::size_t, int> substrate_index;
-  auto add_body = [&](int tag, const std::string& name, Body body,
-                      std::unordered_map<std::size_t, int>& index,
-                      const std::unordered_map<std::size_t, int>& other) {
-    const auto connectivity = group_elements(2, tag, kQuad4, name, file);
-    for (std::size_t k = 0; k < connectivity.size(); k += 4) {
-      std::array<int, 4> quad{};
-      for (std::size_t c = 0; c < 4; ++c) {
-        const std::size_t gtag = connectivity[k + c];
-        if (other.count(gtag) != 0)
-          throw InputError("invalid mesh.file = " + file.string() +
-                           ": the bodies \"sphere\" and \"substrate\" share nodes");
-        auto [it, inserted] = index.try_emplace(gtag, mesh.num_nodes());
-        if (inserted) {
-          const std::size_t p = position.at(gtag);
-          mesh.r.push_back(coord[3 * p]);
-          mesh.z.push_back(coord[3 * p + 1]);
-          mesh.node_body.push_back(body);
-        }
-        quad[c] = it->second;
-      }
-      // counter-clockwise in (r, z)
-      const auto a = static_cast<std::size_t>(quad[0]);
-      const auto b = static_cast<std::size_t>(quad[1]);
-      const auto c = static_cast<std::size_t>(quad[2]);
-      const auto d = static_cast<std::size_t>(quad[3]);
-      const double area2 = (mesh.r[c] - mesh.r[a]) * (mesh.z[d] - mesh.z[b]) -
-                           (mesh.z[c] - mesh.z[a]) * (mesh.r[d] - mesh.r[b]);
-      if (area2 < 0.0) std::swap(quad[1], quad[3]);
-      mesh.quads.push_back(quad);
-      mesh.element_body.push_back(body);
-    }
-  };
-  add_body(sphere_tag, "sphere", Body::kSphere, sphere_index, {});
-  add_body(substrate_tag, "substrate", Body::kSubstrate, substrate_index, sphere_index);
-
-  auto group_nodes = [&](int tag) {
-    std::vector<std::size_t> tags;
-    std::vector<double> xyz;
-    gmsh::model::mesh::getNodesForPhysicalGroup(1, tag, tags, xyz);
-    return tags;
-  };
-  for (const std::size_t t : group_nodes(axis_tag)) {
-    if (const auto it = sphere_index.find(t); it != sphere_index.end())
-      mesh.axis_nodes.push_back(it->second);
-    else if (const auto jt = substrate_index.find(t); jt != substrate_index.end())
-      mesh.axis_nodes.push_back(jt->second);
-  }
-  std::sort(mesh.axis_nodes.begin(), mesh.axis_nodes.end());
-  for (const std::size_t t : group_nodes(base_tag)) {
-    const auto it = substrate_index.find(t);
-    if (it == substrate_index.end())
-      throw InputError("invalid mesh.file = " + file.string() +
-                       ": physical group \"base\" has nodes outside \"substrate\"");
-    mesh.base_nodes.push_back(it->second);
-  }
-  std::sort(mesh.base_nodes.begin(), mesh.base_nodes.end());
+  const NodeCoordinates nodes = node_coordinates();
+  add_body(mesh, group_elements(2, sphere_tag, kQuad4, "sphere", file), nodes, Body::kSphere,
+           sphere_index, {}, file);
+  add_body(mesh, group_elements(2, substrate_tag, kQuad4, "substrate", file), nodes,
+           Body::kSubstrate, substrate_index, sphere_index, file);
+  add_boundary_nodes(mesh, axis_tag, base_tag, sphere_index, substrate_index, file);
 
   const auto sphere_segments =
       group_elements(1, sphere_contact_tag, kLine2, "sphere_contact", file);

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "corlab/core/atomic_file.hpp"
 #include "corlab/fem/result_fields.hpp"
 
 namespace corlab::fem {
@@ -85,9 +86,7 @@ nlohmann::json summary_to_json(const ImpactResult& r, const ImpactConfig& config
 void write_summary_json(const ImpactResult& result,
                         const ImpactConfig& config,
                         const std::filesystem::path& file) {
-  auto out = open_for_writing(file);
-  out << summary_to_json(result, config).dump(2) << '\n';
-  if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", file.string()));
+  write_file_atomically(file, summary_to_json(result, config).dump(2) + '\n');
 }
 
 void write_history_csv(const ImpactHistory& h, const std::filesystem::path& file) {

@@ -276,7 +276,7 @@ std::vector<std::string> model_names() {
 const ModelInfo& model_info(std::string_view name) { return model_catalog()[index_of(name)]; }
 
 Model::Model(const ModelInfo& info, Kernel kernel, bool clamped)
-    : info_(&info), kernel_(std::move(kernel)), clamped_(clamped) {}
+    : info_(&info), kernel_(kernel), clamped_(clamped) {}
 
 double Model::yield_velocity() const {
   return std::visit([](const auto& k) { return k.yield_velocity(); }, kernel_);
@@ -314,8 +314,7 @@ Model make_model(std::string_view name,
   require_positive("radius", options.radius, "[m]");
   const ImpactPair pair = make_impact_pair(sphere, substrate, info.name);
   const bool clamp = options.clamp.value_or(info.clamped_by_default);
-  Model::Kernel kernel = registry()[index_of(name)].factory(pair, clamp, options);
-  return Model(info, std::move(kernel), clamp);
+  return {info, registry()[index_of(name)].factory(pair, clamp, options), clamp};
 }
 
 }  // namespace corlab::restitution

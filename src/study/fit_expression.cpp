@@ -15,16 +15,13 @@
 #include <set>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/text.hpp"
 
 namespace corlab::study {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
+/// `text` without blanks at either end, as a string.
+std::string trimmed(std::string_view text) { return std::string(trim(text)); }
 
 bool is_identifier(const std::string& name) {
   if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) return false;
@@ -47,7 +44,7 @@ class BoundExpression {
       for (const auto& [name, column] : data) {
         if (is_identifier(name)) {
           parser_.DefineVar(name, &values_[k]);
-          columns_.push_back({&column, &values_[k]});
+          columns_.emplace_back(&column, &values_[k]);
         }
         ++k;
       }
@@ -99,6 +96,7 @@ struct Problem {
   std::vector<std::size_t> rows;
   std::vector<double> y;
   std::size_t p = 0;
+  std::vector<double> start;  ///< start values of the parameters
 };
 
 // residual r_i = model(row_i, b) - y_i; a non-finite model value becomes a huge residual, so the
@@ -177,8 +175,8 @@ std::pair<std::string, std::string> split_formula(const std::string& formula) {
   if (pos == std::string::npos) {
     throw_invalid("form", formula, "of the form 'response ~ model'");
   }
-  std::string response = trim(formula.substr(0, pos));
-  std::string model = trim(formula.substr(pos + 1));
+  std::string response = trimmed(formula.substr(0, pos));
+  std::string model = trimmed(formula.substr(pos + 1));
   if (!is_identifier(response)) {
     throw_invalid("form response", response, "a column name");
   }
@@ -192,14 +190,14 @@ std::vector<ParameterStart> parse_parameter_starts(const std::vector<std::string
     std::size_t begin = 0;
     while (begin <= item.size()) {
       const auto end = std::min(item.find(',', begin), item.size());
-      const std::string token = trim(item.substr(begin, end - begin));
+      const std::string token = trimmed(item.substr(begin, end - begin));
       begin = end + 1;
       if (token.empty()) continue;
       const auto eq = token.find('=');
       if (eq == std::string::npos) throw_invalid("parameter", token, "of the form name=start");
-      ParameterStart p{trim(token.substr(0, eq)), 0.0};
+      ParameterStart p{trimmed(token.substr(0, eq)), 0.0};
       if (!is_identifier(p.name)) throw_invalid("parameter name", p.name, "an identifier");
-      const std::string value = trim(token.substr(eq + 1));
+      const std::string value = trimmed(token.substr(eq + 1));
       try {
         std::size_t used = 0;
         p.start = std::stod(value, &used);
@@ -216,53 +214,47 @@ std::vector<ParameterStart> parse_parameter_starts(const std::vector<std::string
   return out;
 }
 
-NonlinearFit fit_expression(const std::string& formula,
-                            const std::vector<ParameterStart>& params,
-                            const DataColumns& data,
-                            const NonlinearFitOptions& options) {
+namespace {
+
+void require_options(const std::vector<ParameterStart>& params,
+                     const NonlinearFitOptions& options) {
   require_open_range("confidence", options.confidence, 0.0, 1.0);
   if (options.max_iterations < 1) {
     throw_invalid("max_iterations", static_cast<double>(options.max_iterations), ">= 1");
   }
   if (params.empty()) throw_invalid("parameters", 0.0, "at least one");
-  const auto [response, model_text] = split_formula(formula);
-  const auto ycol = data.find(response);
-  if (ycol == data.end()) throw_invalid("form response", response, "a data column");
-  const std::size_t rows = ycol->second.size();
+}
+
+/// Every column as long as the response (`rows`); every start value finite.
+void require_data(const std::vector<ParameterStart>& params,
+                  const DataColumns& data,
+                  std::size_t rows) {
   for (const auto& [name, column] : data) {
     if (column.size() != rows) {
       throw_invalid("column " + name, static_cast<double>(column.size()),
                     "of the same length as the others (" + std::to_string(rows) + ")");
     }
   }
-  std::vector<std::string> names;
   for (const auto& p : params) {
     if (!std::isfinite(p.start)) throw_invalid("parameter " + p.name, p.start, "finite");
-    names.push_back(p.name);
   }
+}
 
-  BoundExpression model(model_text, names, data, "form");
-  for (const auto& name : names) {
-    if (!model.uses(name)) throw_invalid("parameter", name, "used in the form");
+/// The rows the fit uses (finite response, passing the --where filter) into prob.rows / prob.y.
+void select_rows(const std::vector<double>& response,
+                 const DataColumns& data,
+                 const std::string& where,
+                 Problem& prob) {
+  std::unique_ptr<BoundExpression> filter;
+  if (!trimmed(where).empty()) {
+    filter = std::make_unique<BoundExpression>(where, std::vector<std::string>{}, data, "where");
   }
-  Problem prob;
-  prob.model = &model;
-  prob.p = names.size();
-  std::vector<double> start;
-  for (const auto& p : params) start.push_back(p.start);
-  {
-    std::unique_ptr<BoundExpression> filter;
-    if (!trim(options.where).empty()) {
-      filter = std::make_unique<BoundExpression>(options.where, std::vector<std::string>{}, data,
-                                                 "where");
-    }
-    for (std::size_t i = 0; i < rows; ++i) {
-      const double y = ycol->second[i];
-      if (!std::isfinite(y)) continue;
-      if (filter && filter->eval(i, nullptr) == 0.0) continue;
-      prob.rows.push_back(i);
-      prob.y.push_back(y);
-    }
+  for (std::size_t i = 0; i < response.size(); ++i) {
+    const double y = response[i];
+    if (!std::isfinite(y)) continue;
+    if (filter && filter->eval(i, nullptr) == 0.0) continue;
+    prob.rows.push_back(i);
+    prob.y.push_back(y);
   }
   const std::size_t n = prob.rows.size();
   if (n <= prob.p) {
@@ -270,12 +262,16 @@ NonlinearFit fit_expression(const std::string& formula,
                   "> the number of parameters (" + std::to_string(prob.p) + ") after filtering");
   }
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(model.eval(prob.rows[i], start.data()))) {
+    if (!std::isfinite(prob.model->eval(prob.rows[i], prob.start.data()))) {
       throw_invalid("start values", fmt::format("row {}", prob.rows[i]),
                     "giving a finite model value on every row");
     }
   }
+}
 
+/// Levenberg-Marquardt (GSL) from prob.start: fills coefficients, iterations, converged, message.
+void levenberg_marquardt(Problem& prob, const NonlinearFitOptions& options, NonlinearFit& fit) {
+  const std::size_t n = prob.rows.size();
   gsl_set_error_handler_off();
   gsl_multifit_nlinear_fdf fdf;
   fdf.f = residual_cb;
@@ -289,40 +285,35 @@ NonlinearFit fit_expression(const std::string& formula,
   std::unique_ptr<gsl_multifit_nlinear_workspace, GslWorkspaceDeleter> work(
       gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &fit_params, n, prob.p));
   std::unique_ptr<gsl_vector, GslVectorDeleter> x0(gsl_vector_alloc(prob.p));
-  for (std::size_t j = 0; j < prob.p; ++j) gsl_vector_set(x0.get(), j, start[j]);
+  for (std::size_t j = 0; j < prob.p; ++j) gsl_vector_set(x0.get(), j, prob.start[j]);
   gsl_multifit_nlinear_init(x0.get(), &fdf, work.get());
   int info = 0;
   const int status =
       gsl_multifit_nlinear_driver(static_cast<std::size_t>(options.max_iterations), options.xtol,
                                   options.gtol, options.ftol, nullptr, nullptr, &info, work.get());
-
-  NonlinearFit fit;
-  fit.response = response;
-  fit.model = model_text;
-  fit.names = names;
-  fit.start = start;
-  fit.observations = static_cast<int>(n);
-  fit.parameters = static_cast<int>(prob.p);
-  fit.dof = fit.observations - fit.parameters;
   fit.iterations = static_cast<int>(gsl_multifit_nlinear_niter(work.get()));
   fit.converged = status == GSL_SUCCESS;
   fit.message = fit.converged ? (info == 1   ? "converged: small step"
                                  : info == 2 ? "converged: small gradient"
                                              : "converged")
                               : std::string("not converged: ") + gsl_strerror(status);
-  fit.confidence = options.confidence;
   const gsl_vector* xs = gsl_multifit_nlinear_position(work.get());
+  fit.coefficients.reserve(prob.p);
   for (std::size_t j = 0; j < prob.p; ++j) fit.coefficients.push_back(gsl_vector_get(xs, j));
+}
 
-  Eigen::VectorXd observed(static_cast<Eigen::Index>(n));
-  Eigen::VectorXd fitted(static_cast<Eigen::Index>(n));
-  for (std::size_t i = 0; i < n; ++i) {
-    observed[static_cast<Eigen::Index>(i)] = prob.y[i];
-    fitted[static_cast<Eigen::Index>(i)] = model.eval(prob.rows[i], fit.coefficients.data());
+/// Goodness of fit, covariance s^2 (J^T J)^-1 (from the SVD of the column-equilibrated
+/// Jacobian), standard errors and confidence intervals.
+void add_inference(Problem& prob, const NonlinearFitOptions& options, NonlinearFit& fit) {
+  const auto n = static_cast<Eigen::Index>(prob.rows.size());
+  Eigen::VectorXd observed(n);
+  Eigen::VectorXd fitted(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto row = static_cast<std::size_t>(i);
+    observed[i] = prob.y[row];
+    fitted[i] = prob.model->eval(prob.rows[row], fit.coefficients.data());
   }
   fit.goodness = goodness_of_fit(observed, fitted, fit.parameters);
-
-  // covariance s^2 (J^T J)^-1 from the SVD of the column-equilibrated Jacobian
   const Eigen::MatrixXd jac = central_jacobian(prob, fit.coefficients);
   const auto p = static_cast<Eigen::Index>(prob.p);
   Eigen::VectorXd scale(p);
@@ -347,9 +338,45 @@ NonlinearFit fit_expression(const std::string& formula,
     fit.ci_lower.push_back(fit.coefficients[static_cast<std::size_t>(j)] - fit.t_quantile * se);
     fit.ci_upper.push_back(fit.coefficients[static_cast<std::size_t>(j)] + fit.t_quantile * se);
     std::vector<double> row;
+    row.reserve(static_cast<std::size_t>(p));
     for (Eigen::Index k = 0; k < p; ++k) row.push_back(cov(j, k));
     fit.covariance.push_back(row);
   }
+}
+
+}  // namespace
+
+NonlinearFit fit_expression(const std::string& formula,
+                            const std::vector<ParameterStart>& params,
+                            const DataColumns& data,
+                            const NonlinearFitOptions& options) {
+  require_options(params, options);
+  const auto [response, model_text] = split_formula(formula);
+  const auto ycol = data.find(response);
+  if (ycol == data.end()) throw_invalid("form response", response, "a data column");
+  require_data(params, data, ycol->second.size());
+  NonlinearFit fit;
+  for (const auto& p : params) {
+    fit.names.push_back(p.name);
+    fit.start.push_back(p.start);
+  }
+  BoundExpression model(model_text, fit.names, data, "form");
+  for (const auto& name : fit.names) {
+    if (!model.uses(name)) throw_invalid("parameter", name, "used in the form");
+  }
+  Problem prob;
+  prob.model = &model;
+  prob.p = fit.names.size();
+  prob.start = fit.start;
+  select_rows(ycol->second, data, options.where, prob);
+  fit.response = response;
+  fit.model = model_text;
+  fit.observations = static_cast<int>(prob.rows.size());
+  fit.parameters = static_cast<int>(prob.p);
+  fit.dof = fit.observations - fit.parameters;
+  fit.confidence = options.confidence;
+  levenberg_marquardt(prob, options, fit);
+  add_inference(prob, options, fit);
   return fit;
 }
 

@@ -25,7 +25,7 @@ GoodnessOfFit goodness_of_fit(const Eigen::VectorXd& observed,
   if (n == 0) return g;
   const Eigen::VectorXd residuals = observed - fitted;
   g.residual_sum_squares = residuals.squaredNorm();
-  const double dof = static_cast<double>(n - parameters);
+  const auto dof = static_cast<double>(n - parameters);
   g.residual_std_error = dof > 0 ? std::sqrt(g.residual_sum_squares / dof) : 0.0;
   const double mean = observed.mean();
   const double total = (observed.array() - mean).square().sum();

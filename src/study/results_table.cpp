@@ -16,6 +16,7 @@
 #include <optional>
 #include <sstream>
 
+#include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/fem/result_fields.hpp"
 #include "corlab/materials/material.hpp"
@@ -60,18 +61,6 @@ bool always_text(std::string_view column) {
   if (column == "case_id" || column == "status" || column == "error") return true;
   const fem::ResultField* field = fem::find_result_field(column);
   return field != nullptr && field->kind == fem::FieldKind::text;
-}
-
-void write_all(int fd, std::string_view data, const std::filesystem::path& file) {
-  while (!data.empty()) {
-    const ssize_t written = ::write(fd, data.data(), data.size());
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(
-          fmt::format("cannot write {}: {}", file.string(), std::strerror(errno)));
-    }
-    data.remove_prefix(static_cast<std::size_t>(written));
-  }
 }
 
 /// A data row with its line number in the file (1 = header).
@@ -189,17 +178,6 @@ std::string kept_rows(const std::filesystem::path& file,
     kept += '\n';
   }
   return kept;
-}
-
-/// Replaces `file` by `text`: temp file + fsync + rename, so a kill leaves the old or the new file.
-void rewrite_atomically(const std::filesystem::path& file, std::string_view text) {
-  const std::filesystem::path temp = file.string() + ".tmp";
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw std::runtime_error("cannot write " + temp.string());
-  write_all(fd, text, temp);
-  ::fsync(fd);
-  ::close(fd);
-  std::filesystem::rename(temp, file);
 }
 
 }  // namespace
@@ -370,7 +348,7 @@ ExistingResults prepare_resume(const std::filesystem::path& file,
         file.string()));
   }
   const std::string kept = kept_rows(file, lines, keep_status, existing);
-  if (changed || existing.rows + 1 != lines.size()) rewrite_atomically(file, kept);
+  if (changed || existing.rows + 1 != lines.size()) write_file_atomically(file, kept);
   return existing;
 }
 
@@ -443,7 +421,7 @@ ResultsTable ResultsTable::where(std::string_view column, std::string_view value
     for (const auto& c : cells_) row.push_back(c[r]);
     rows.push_back(std::move(row));
   }
-  return ResultsTable(columns_, std::move(rows));
+  return {columns_, std::move(rows)};
 }
 
 ResultsTable ResultsTable::sorted_by(std::string_view column) const {
@@ -458,7 +436,7 @@ ResultsTable ResultsTable::sorted_by(std::string_view column) const {
     for (const auto& c : cells_) row.push_back(c[r]);
     rows.push_back(std::move(row));
   }
-  return ResultsTable(columns_, std::move(rows));
+  return {columns_, std::move(rows)};
 }
 
 ResultsTable read_results(const std::filesystem::path& csv) {

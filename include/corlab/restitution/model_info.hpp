@@ -10,7 +10,7 @@
 namespace corlab::restitution {
 
 /// How far the implemented formula has been checked against public sources.
-/// Mapping of the statuses of docs/reference models.md:
+/// Mapping of the statuses of docs/reference/models.md:
 ///  - the seed paper's own text (Ma et al. 2023)            -> kVerifiedPaper
 ///  - "confirmed (two sources)", "confirmed (one source + derivation)"
 ///                                                         -> kVerifiedSecondSource

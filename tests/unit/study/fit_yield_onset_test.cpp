@@ -62,7 +62,7 @@ TEST(YieldOnset, ReusesCachedProbesAndReportsAnUnbracketedRange) {
 }
 
 TEST(YieldOnset, HertzOnsetMatchesTheReferenceGoldenValues) {
-  // models.md section 8: Johnson V_Y (constant 26) = 0.0561 m/s for alumina/Al;
+  // docs/reference/models.md section 8: Johnson V_Y (constant 26) = 0.0561 m/s for alumina/Al;
   // with the exact 25.5 the value is sqrt(25.5/26) x that
   const double v = hertz_yield_onset_velocity(3958.226, 63.7905e9, 0.38e9);
   // 5e-5: the rounding of the 3-digit golden value (the 25.5 vs 26 gap is 5.5e-4)
