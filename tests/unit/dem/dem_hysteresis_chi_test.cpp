@@ -17,7 +17,7 @@ double relation_residual(double chi, double e) {
 }
 
 TEST(DemHysteresisChi, ExactChiSatisfiesTheRelation) {
-  for (const double e : {0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999}) {
+  for (const double e : {0.05, 0.0999, 0.1, 0.3, 0.5, 0.7, 0.9, 0.95}) {
     const double chi = exact_chi(e);
     EXPECT_GT(chi, 0.0);
     EXPECT_LT(e * chi, 1.0);
@@ -29,10 +29,12 @@ TEST(DemHysteresisChi, ExactChiSatisfiesTheRelation) {
 }
 
 TEST(DemHysteresisChi, LambertWInvertsExactChi) {
-  for (const double e : {0.05, 0.2, 0.5, 0.8, 0.95, 0.999}) {
+  for (const double e : {0.02, 0.05, 0.2, 0.5, 0.8, 0.95, 0.999, 0.99999, 1.0 - 1e-9}) {
     EXPECT_NEAR(exact_restitution(exact_chi(e)), e, 1e-11) << "e = " << e;
   }
   EXPECT_EQ(exact_restitution(0.0), 1.0);
+  // Both sides of the switch between closed form (chi >= 0.05) and series (chi < 0.05) agree.
+  EXPECT_NEAR(exact_restitution(0.05 * (1.0 - 1e-12)), exact_restitution(0.05), 1e-13);
 }
 
 TEST(DemHysteresisChi, OdeCalibrationEqualsClosedForm) {
