@@ -142,6 +142,25 @@ CurveFit fit_thornton_pressure(double effective_modulus,
                            std::log(0.5 * effective_modulus));
 }
 
+CurveFit fit_liggghts_thornton_pressure(double effective_modulus,
+                                        double effective_radius,
+                                        double effective_mass,
+                                        std::span<const double> velocities,
+                                        const RestitutionCurve& target) {
+  require_positive("effective_modulus", effective_modulus, "[Pa]");
+  require_positive("effective_radius", effective_radius, "[m]");
+  require_positive("effective_mass", effective_mass, "[kg]");
+  const auto law_e = [&](double p_y, double v) {
+    const LiggghtsThorntonNingLaw law{{effective_modulus, effective_radius, p_y}};
+    const ForceLaw force = [&law](double d, double, const ContactHistory& h) {
+      return law.force(d, h);
+    };
+    return simulate_impact(force, effective_mass, v).restitution;
+  };
+  return fit_one_parameter(law_e, velocities, target, std::log(1e-5 * effective_modulus),
+                           std::log(0.5 * effective_modulus));
+}
+
 RestitutionCurve tabulated_curve(std::vector<double> v, std::vector<double> e) {
   if (v.size() != e.size())
     throw_invalid("table rows", static_cast<double>(e.size()), "equal to the number of velocities");

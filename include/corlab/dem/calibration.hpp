@@ -54,6 +54,14 @@ CurveFit fit_thornton_pressure(double effective_modulus,
                                std::span<const double> velocities,
                                const RestitutionCurve& target);
 
+/// Fits p_y [Pa] of LiggghtsThorntonNingLaw (E*, R*) to the target; LIGGGHTS's
+/// coefficientYieldRatio of the particle of radius r_i is then pi R* p_y / (2 E* r_i).
+CurveFit fit_liggghts_thornton_pressure(double effective_modulus,
+                                        double effective_radius,
+                                        double effective_mass,
+                                        std::span<const double> velocities,
+                                        const RestitutionCurve& target);
+
 /// e(v) of a (v, e) table, linear in v between points, end values outside (e.g. FE results).
 /// Throws InputError unless sizes match, n >= 2, v strictly increasing > 0, e in (0, 1].
 RestitutionCurve tabulated_curve(std::vector<double> velocities, std::vector<double> restitution);

@@ -102,4 +102,22 @@ struct ThorntonNingLaw {
   }
 };
 
+/// LIGGGHTS 3.8 `model thornton_ning` without adhesion (surfaceEnergy 0), as its source
+/// (normal_model_thornton_ning.h) evaluates it: Hertz loading until the contact radius reaches
+/// a_y = yieldRatio r_i, then F_y + pi R* p_y (delta - delta_y) with p_y = 2 E* a_y/(pi R*);
+/// unloading with the loading radius R* (dF = 2 E* sqrt(R* delta) d delta, unlike Thornton 1997),
+/// F = F_max - K (delta_max^1.5 - delta^1.5), clamped at 0.
+struct LiggghtsThorntonNingLaw {
+  restitution::ThorntonContact contact;  ///< E* [Pa], R* [m], p_y [Pa]
+  double force(double overlap, const ContactHistory& history) const {
+    if (overlap <= 0.0) return 0.0;
+    if (!history.unloading) return contact.loading_force(overlap);
+    const double k = 4.0 / 3.0 * contact.effective_modulus * std::sqrt(contact.radius);
+    const double d_max = history.max_overlap;
+    const double f = contact.loading_force(d_max) -
+                     k * (d_max * std::sqrt(d_max) - overlap * std::sqrt(overlap));
+    return f > 0.0 ? f : 0.0;
+  }
+};
+
 }  // namespace corlab::dem
