@@ -194,43 +194,78 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
 }
 
 std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
-  std::string out = header(spec, "YADE (2023.02a), Python");
+  std::string out = header(spec, "YADE (2023.02a), Python: exec() it in a YADE script");
   out +=
-      "# Not verified by running YADE in corlab's tests (see docs/user/dem.md).\n"
-      "# Hertz-Mindlin (Ip2_FrictMat_FrictMat_MindlinPhys) maps en to its damping exactly for "
-      "Hertz.\n"
-      "from yade import *\n";
+      "# Hertz-Mindlin: Ip2_FrictMat_FrictMat_MindlinPhys maps en to its damping exactly for\n"
+      "# Hertz (measured: en 0.3 -> 0.3002, 0.5 -> 0.49999). Use corlab_ip2 in the "
+      "InteractionLoop\n"
+      "# with Law2_ScGeom_MindlinPhys_Mindlin().\n"
+      "from yade import *\n"
+      "corlab_type_of_material = {}\n";
   for (std::size_t i = 0; i < spec.types.size(); ++i) {
     const auto& m = spec.types[i].material;
     out += fmt::format(
-        "corlab_mat{} = O.materials.append(FrictMat(young={:.10g}, poisson={:.6g}, density={:.8g}, "
-        "frictionAngle=0.0, label='{}'))\n",
+        "corlab_mat{0} = O.materials.append(FrictMat(young={1:.10g}, poisson={2:.6g}, "
+        "density={3:.8g}, frictionAngle=0.0, label='{4}'))\ncorlab_type_of_material[corlab_mat{0}] "
+        "= "
+        "{0}\n",
         i + 1, m.youngs_modulus, m.poisson_ratio, m.density, m.name);
   }
   if (spec.wall) {
     out += fmt::format(
         "corlab_wall_mat = O.materials.append(FrictMat(young={:.10g}, poisson={:.6g}, "
-        "density={:.8g}, "
-        "frictionAngle=0.0, label='{}'))\n",
+        "density={:.8g}, frictionAngle=0.0, label='{}'))\ncorlab_type_of_material[corlab_wall_mat] "
+        "= 0\n",
         spec.wall->youngs_modulus, spec.wall->poisson_ratio, spec.wall->density, spec.wall->name);
   }
   if (spec.restitution) {
-    out += fmt::format(
-        "corlab_en = {:.8g}\ncorlab_ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=corlab_en)\n",
-        *spec.restitution);
+    out += fmt::format("corlab_ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en={:.8g})\n",
+                       *spec.restitution);
     return out;
   }
   out +=
-      "# e(v) per pair (linear in v, end values outside): set en per contact from its impact "
-      "speed.\n";
-  out += "corlab_ev = {\n";
+      "# e(v): a per-contact hook. Add PyRunner(command='corlab_set_en()', iterPeriod=1) to\n"
+      "# O.engines just before the InteractionLoop: it sets corlab_ip2.en from the approach speed "
+      "of\n"
+      "# the contacts about to form (e(v) tables below, linear in v, end values outside). Exact "
+      "when\n"
+      "# the contacts that form in the same time step share one impact speed (else the last "
+      "wins).\n"
+      "corlab_ev = {\n";
   for (const auto& p : pairs) {
-    std::string row;
-    for (const double v : table_speeds(spec, 32))
-      row += fmt::format("({:.6g}, {:.6g}), ", v, p.curve(v));
-    out += fmt::format("    '{}': [{}],\n", pair_name(p), row);
+    std::string vs;
+    std::string es;
+    for (const double v : table_speeds(spec, 64)) {
+      vs += fmt::format("{:.8g}, ", v);
+      es += fmt::format("{:.8g}, ", p.curve(v));
+    }
+    out += fmt::format("    ({}, {}): ([{}], [{}]),\n", p.type_i, p.type_j, vs, es);
   }
-  out += "}\n";
+  out +=
+      "}\n"
+      "corlab_ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5)\n"
+      "def corlab_e_of_v(key, v):\n"
+      "    import numpy\n"
+      "    vs, es = corlab_ev[key]\n"
+      "    return float(numpy.interp(v, vs, es))\n"
+      "def corlab_set_en():\n"
+      "    for i in O.interactions.all():\n"
+      "        if i.isReal:\n"
+      "            continue\n"
+      "        b1, b2 = O.bodies[i.id1], O.bodies[i.id2]\n"
+      "        t1 = corlab_type_of_material.get(b1.material.id)\n"
+      "        t2 = corlab_type_of_material.get(b2.material.id)\n"
+      "        if t1 is None or t2 is None:\n"
+      "            continue\n"
+      "        dv = b1.state.vel - b2.state.vel\n"
+      "        if isinstance(b1.shape, Sphere) and isinstance(b2.shape, Sphere):\n"
+      "            n = b2.state.pos - b1.state.pos\n"
+      "            speed = dv.dot(n) / n.norm()\n"
+      "        else:\n"
+      "            speed = dv.norm()\n"
+      "        key = (max(t1, t2), 0) if min(t1, t2) == 0 else (min(t1, t2), max(t1, t2))\n"
+      "        if speed > 0 and key in corlab_ev:\n"
+      "            corlab_ip2.en = corlab_e_of_v(key, speed)\n";
   return out;
 }
 
