@@ -37,6 +37,18 @@ int main(void) {
            corlab_dem_chi(pair, v), -u / v);
     if (fabs(-u / v - target) > 2e-3) ++failures;
   }
+  /* A pair from an FE results table (v [m/s], e), E* [Pa], R* [m]: e(v) linear between rows. */
+  const double table_v[] = {0.5, 1.0, 4.0};
+  const double table_e[] = {0.8, 0.7, 0.55};
+  corlab_dem_pair* fe = corlab_dem_pair_from_table(table_v, table_e, 3, 1.15e11, 0.004, err,
+                                                   sizeof err);
+  if (fe == NULL || fabs(corlab_dem_restitution(fe, 2.5) - 0.625) > 1e-3) {
+    fprintf(stderr, "corlab: table pair failed: %s\n", fe == NULL ? err : "wrong e");
+    ++failures;
+  } else {
+    printf("table pair: e(2.5 m/s) = %.4f\n", corlab_dem_restitution(fe, 2.5));
+  }
+  corlab_dem_pair_free(fe);
   /* Bad input: a clear one-line error, no crash. */
   if (corlab_dem_pair_from_materials("alumina_ma2023", "nope", "thornton1997", radius, 0.1, 10.0,
                                      err, sizeof err) == NULL) {
