@@ -52,7 +52,9 @@ double golden_minimum(const std::function<double(double)>& f,
   double d = a + kInvPhi * (b - a);
   double fc = f(c);
   double fd = f(d);
-  while (std::abs(b - a) > rel_tol * (std::abs(c) + std::abs(d))) {
+  const double abs_tol = 1e-12 * std::abs(hi - lo);
+  for (int iter = 0;
+       iter < 500 && std::abs(b - a) > rel_tol * (std::abs(c) + std::abs(d)) + abs_tol; ++iter) {
     if (fc < fd) {
       b = d;
       d = c;

@@ -15,7 +15,7 @@ double brent_root(const std::function<double(double)>& f,
                   double rel_tol = 1e-14);
 
 /// Minimiser of f on [lo, hi] by golden-section search (robust for unimodal f) to |x| tolerance
-/// rel_tol |x|.
+/// rel_tol |x| + 1e-12 (hi - lo), at most 500 iterations.
 double golden_minimum(const std::function<double(double)>& f,
                       double lo,
                       double hi,
