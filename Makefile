@@ -17,7 +17,7 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
 # measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB disk).
 DEBIAN_PACKAGES += lammps liggghts yade
 
-.PHONY: deps configure build run test test-cpp test-python bench format clean dem-check
+.PHONY: deps configure build run test test-cpp test-python bench format clean dem-check install
 
 deps:
 	@missing=$$(for p in $(DEBIAN_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null \
@@ -51,6 +51,11 @@ test-python:
 # DEM exports checked by running Debian's LAMMPS and LIGGGHTS (ctest label dem; part of `make test`).
 dem-check: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -L dem $(CTEST_ARGS)
+
+# The DEM C library (libcorlab_dem, corlab_dem.h, CMake config, pkg-config) into PREFIX.
+PREFIX ?= /usr/local
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX) --component dem
 
 bench: build
 	for b in $(BUILD_DIR)/bin/*_benchmark; do $$b; done
