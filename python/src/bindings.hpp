@@ -8,4 +8,5 @@ void bind_models(pybind11::module_& m);
 void bind_simulate(pybind11::module_& m);
 void bind_study(pybind11::module_& m);
 void bind_fit(pybind11::module_& m);
+void bind_dem(pybind11::module_& m);
 }  // namespace corlab::python

@@ -31,4 +31,5 @@ PYBIND11_MODULE(_core, m) {
   corlab::python::bind_simulate(m);
   corlab::python::bind_study(m);
   corlab::python::bind_fit(m);
+  corlab::python::bind_dem(m);
 }

@@ -1,0 +1,144 @@
+// `corlab dem`: calibrate DEM contact laws to a constant e or an e(v) (model or FE table) and
+// write LAMMPS, LIGGGHTS and YADE fragments plus e(v)/chi tables (CSV, JSON).
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <numeric>
+
+#include "command.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/dem/dem_export.hpp"
+#include "corlab/materials/material_database.hpp"
+#include "corlab/study/results_table.hpp"
+
+namespace corlab::cli {
+namespace {
+
+struct DemArgs {
+  std::vector<std::string> types;  // MATERIAL:RADIUS
+  std::string wall;
+  std::optional<double> restitution;
+  std::string model;
+  std::string table;
+  double v_min = 0.1;
+  double v_max = 10.0;
+  int fit_points = 9;
+  int table_points = 64;
+  bool wall_only = false;
+  std::string out = "dem_export";
+};
+
+dem::ParticleType parse_type(const std::string& spec) {
+  const auto colon = spec.rfind(':');
+  if (colon == std::string::npos) throw_invalid("type", spec, "MATERIAL:RADIUS (radius in m)");
+  dem::ParticleType t;
+  t.material = parse_material_spec(spec.substr(0, colon), "type");
+  try {
+    t.radius = std::stod(spec.substr(colon + 1));
+  } catch (const std::exception&) {
+    throw_invalid("type radius", spec.substr(colon + 1), "a number [m]");
+  }
+  require_positive("type radius", t.radius, "[m]");
+  return t;
+}
+
+// e(v) from an FE results.csv (columns velocity, e; rows with status != ok are skipped).
+dem::RestitutionCurve read_table(const std::string& file) {
+  auto table = study::read_results(file);
+  if (table.has_column("status")) table = table.where("status", "ok");
+  const auto v = table.numbers("velocity");
+  const auto e = table.numbers("e");
+  std::vector<std::size_t> order(v.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return v[a] < v[b]; });
+  std::vector<double> vs;
+  std::vector<double> es;
+  for (const auto i : order) {
+    vs.push_back(v[i]);
+    es.push_back(e[i]);
+  }
+  return dem::tabulated_curve(vs, es);
+}
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out) throw_invalid("out", path.string(), "a writable directory");
+  out << text;
+}
+
+int run_dem(const DemArgs& args) {
+  dem::ExportSpec spec;
+  for (const auto& t : args.types) spec.types.push_back(parse_type(t));
+  if (!args.wall.empty()) {
+    spec.wall = parse_material_spec(args.wall, "wall");
+  }
+  spec.restitution = args.restitution;
+  spec.model = args.model;
+  if (!args.table.empty()) {
+    spec.table = read_table(args.table);
+    spec.table_source = args.table;
+  }
+  spec.v_min = args.v_min;
+  spec.v_max = args.v_max;
+  spec.fit_points = args.fit_points;
+  spec.wall_only = args.wall_only;
+  const auto pairs = dem::calibrate_pairs(spec);
+  const std::filesystem::path dir(args.out);
+  std::filesystem::create_directories(dir);
+  write_file(dir / "lammps.in", dem::write_lammps(spec, pairs));
+  write_file(dir / "liggghts.in", dem::write_liggghts(spec, pairs));
+  write_file(dir / "yade_fragment.py", dem::write_yade(spec, pairs));
+  write_file(dir / "restitution_table.csv", dem::write_table_csv(spec, pairs, args.table_points));
+  write_file(dir / "dem_export.json", dem::write_json(spec, pairs, args.table_points));
+  for (const auto& p : pairs) {
+    const std::string name =
+        p.type_j == 0 ? fmt::format("{}-wall", p.type_i) : fmt::format("{}-{}", p.type_i, p.type_j);
+    if (spec.restitution) {
+      fmt::print(
+          "{:<8} e = {:.4f}: chi = {:.6f}, tsuji alpha = {:.6f}, LAMMPS tsuji input {:.6f}\n", name,
+          *spec.restitution, p.chi, p.tsuji_alpha, p.lammps_tsuji_input);
+    } else {
+      fmt::print(
+          "{:<8} {}: LAMMPS viscoelastic eta = {:.6g} (max |de| {:.2e}), LIGGGHTS yield "
+          "ratio = {:.6g} (max |de| {:.2e})\n",
+          name, p.target, p.lammps_viscoelastic_eta(), p.viscoelastic->max_abs_error,
+          p.liggghts_yield_ratio(), p.liggghts->max_abs_error);
+    }
+  }
+  fmt::print(
+      "wrote {}/{{lammps.in, liggghts.in, yade_fragment.py, restitution_table.csv, "
+      "dem_export.json}}\n",
+      dir.string());
+  return 0;
+}
+
+const CommandRegistration kRegistration{Command{
+    "dem", "Calibrate DEM contact laws to e or e(v); write LAMMPS/LIGGGHTS/YADE inputs and tables",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto a = std::make_shared<DemArgs>();
+      sub.add_option("--type", a->types,
+                     "particle type MATERIAL:RADIUS[m] (repeat; type ids 1, 2...)")
+          ->required();
+      sub.add_option("--wall", a->wall, "material of a flat wall (one per type in LAMMPS)");
+      auto* e = sub.add_option("--restitution", a->restitution, "constant target e in (0, 1)");
+      auto* m =
+          sub.add_option("--model", a->model, "registered CoR model for e(v), e.g. thornton1997");
+      auto* t =
+          sub.add_option("--table", a->table, "FE results.csv (columns velocity, e) for e(v)");
+      e->excludes(m)->excludes(t);
+      m->excludes(t);
+      sub.add_option("--v-min", a->v_min, "lower end of the e(v) range [m/s]");
+      sub.add_option("--v-max", a->v_max, "upper end of the e(v) range [m/s]");
+      sub.add_option("--fit-points", a->fit_points, "speeds of the e(v) fits (log-uniform)");
+      sub.add_option("--table-points", a->table_points, "rows per pair of the output tables");
+      sub.add_option("--out", a->out, "output directory");
+      sub.add_flag("--wall-only", a->wall_only, "only type-wall contacts (no particle pairs)");
+      return [a] { return run_dem(*a); };
+    },
+    60}};
+
+}  // namespace
+}  // namespace corlab::cli

@@ -1,0 +1,162 @@
+// DEM hand-off (issue 11): corlab.dem.* - contact laws, exact chi(e), impact integration, exports.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "bindings.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/dem/calibration.hpp"
+#include "corlab/dem/contact_ode.hpp"
+#include "corlab/dem/dem_export.hpp"
+#include "corlab/dem/hysteresis_chi.hpp"
+#include "corlab/dem/lammps_mapping.hpp"
+#include "corlab/dem/law_info.hpp"
+#include "corlab/materials/material_database.hpp"
+
+namespace py = pybind11;
+
+namespace corlab::python {
+namespace {
+
+dem::ChiFormula formula_by_name(const std::string& name) {
+  for (const auto f : dem::kChiFormulas) {
+    if (dem::to_string(f) == name) return f;
+  }
+  throw_invalid("formula", name,
+                "one of [hunt_crossley, lankarani_nikravesh, flores, gonthier, hu_guo, "
+                "carvalho_martins]");
+}
+
+double param(const std::map<std::string, double>& p, const std::string& key) {
+  const auto it = p.find(key);
+  if (it == p.end()) throw_invalid("params", key, "present for this law");
+  return it->second;
+}
+
+// A ForceLaw from a law name and its parameters (SI units, see contact_laws.hpp).
+dem::ForceLaw make_law(const std::string& law, const std::map<std::string, double>& p) {
+  using dem::ContactHistory;
+  if (law == "hertz") {
+    const dem::HertzLaw l{param(p, "stiffness")};
+    return [l](double d, double, const ContactHistory&) { return l.force(d); };
+  }
+  if (law == "hysteresis") {
+    const dem::HysteresisLaw l{param(p, "stiffness"), param(p, "chi"), param(p, "impact_velocity"),
+                               p.count("exponent") ? p.at("exponent") : 1.5};
+    return [l](double d, double r, const ContactHistory&) { return l.force(d, r); };
+  }
+  if (law == "tsuji") {
+    const dem::TsujiLaw l{param(p, "stiffness"), param(p, "alpha"), param(p, "effective_mass")};
+    return [l](double d, double r, const ContactHistory&) { return l.force(d, r); };
+  }
+  if (law == "viscoelastic") {
+    const dem::ViscoelasticHertzLaw l{param(p, "stiffness"), param(p, "damping")};
+    return [l](double d, double r, const ContactHistory&) { return l.force(d, r); };
+  }
+  if (law == "linear") {
+    const dem::LinearSpringDashpotLaw l{param(p, "stiffness"), param(p, "damping")};
+    return [l](double d, double r, const ContactHistory&) { return l.force(d, r); };
+  }
+  const restitution::ThorntonContact c{param(p, "effective_modulus"), param(p, "radius"),
+                                       param(p, "limiting_pressure")};
+  if (law == "thornton") {
+    const dem::ThorntonNingLaw l{c};
+    return [l](double d, double, const ContactHistory& h) { return l.force(d, h); };
+  }
+  if (law == "liggghts_thornton_ning") {
+    const dem::LiggghtsThorntonNingLaw l{c};
+    return [l](double d, double, const ContactHistory& h) { return l.force(d, h); };
+  }
+  throw_invalid("law", law,
+                "one of [hertz, hysteresis, tsuji, viscoelastic, linear, thornton, "
+                "liggghts_thornton_ning]");
+}
+
+py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
+                    const std::string& wall,
+                    std::optional<double> restitution,
+                    const std::string& model,
+                    double v_min,
+                    double v_max,
+                    bool wall_only,
+                    int fit_points) {
+  dem::ExportSpec spec;
+  for (const auto& [material, radius] : types) {
+    spec.types.push_back({parse_material_spec(material, "type"), radius});
+  }
+  if (!wall.empty()) spec.wall = parse_material_spec(wall, "wall");
+  spec.restitution = restitution;
+  spec.model = model;
+  spec.v_min = v_min;
+  spec.v_max = v_max;
+  spec.wall_only = wall_only;
+  spec.fit_points = fit_points;
+  const auto pairs = dem::calibrate_pairs(spec);
+  py::dict out;
+  out["lammps"] = dem::write_lammps(spec, pairs);
+  out["liggghts"] = dem::write_liggghts(spec, pairs);
+  out["yade"] = dem::write_yade(spec, pairs);
+  out["csv"] = dem::write_table_csv(spec, pairs);
+  out["json"] = dem::write_json(spec, pairs);
+  return out;
+}
+
+}  // namespace
+
+void bind_dem(py::module_& m) {
+  auto d = m.def_submodule("dem", "DEM contact laws calibrated to e or e(v) (SI units)");
+  d.def("exact_chi", py::vectorize(&dem::exact_chi), py::arg("e"),
+        "Exact hysteresis chi: chi (1 + e) = ln[(1 + chi)/(1 - e chi)]");
+  d.def("exact_restitution", py::vectorize(&dem::exact_restitution), py::arg("chi"),
+        "Exact e delivered by chi (Lambert W)");
+  d.def(
+      "published_chi",
+      [](const std::string& formula, double e) {
+        return dem::published_chi(formula_by_name(formula), e);
+      },
+      py::arg("formula"), py::arg("e"), "Published chi(e) approximation by name");
+  d.def("chi_formulas", [] {
+    std::vector<std::string> names;
+    for (const auto f : dem::kChiFormulas) names.emplace_back(dem::to_string(f));
+    return names;
+  });
+  d.def("laws", [] {
+    py::list out;
+    for (const auto& info : dem::law_catalog()) {
+      py::dict i;
+      i["name"] = info.name;
+      i["citation"] = info.citation;
+      i["equation"] = info.equation;
+      i["status"] = std::string(restitution::to_string(info.status));
+      i["status_note"] = info.status_note;
+      out.append(i);
+    }
+    return out;
+  });
+  d.def("tsuji_alpha", &dem::calibrate_tsuji_alpha, py::arg("e"), "Exact alpha of TsujiLaw");
+  d.def("lammps_tsuji_input", &dem::lammps_tsuji_input, py::arg("e"),
+        "e_in for LAMMPS damping tsuji so that it delivers e");
+  d.def(
+      "simulate_impact",
+      [](const std::string& law, const std::map<std::string, double>& params, double mass,
+         double velocity) {
+        const auto out = dem::simulate_impact(make_law(law, params), mass, velocity);
+        py::dict r;
+        r["e"] = out.restitution;
+        r["contact_time"] = out.contact_time;
+        r["max_overlap"] = out.max_overlap;
+        return r;
+      },
+      py::arg("law"), py::arg("params"), py::arg("effective_mass"), py::arg("velocity"),
+      "Integrates one head-on impact (GSL ODE) and returns e, contact time [s], max overlap [m]");
+  d.def("export", &export_dem, py::arg("types"), py::arg("wall") = "",
+        py::arg("restitution") = std::nullopt, py::arg("model") = "", py::arg("v_min") = 0.1,
+        py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
+        "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables");
+}
+
+}  // namespace corlab::python

@@ -1,0 +1,79 @@
+"""Tests of the DEM bindings (corlab.dem): exact chi, impact integration, exports."""
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import corlab
+
+
+def test_exact_chi_relation_and_inverse_vectorised():
+    e = np.array([0.1, 0.3, 0.5, 0.7, 0.9])
+    chi = corlab.dem.exact_chi(e)
+    assert np.all(chi > 0) and np.all(e * chi < 1)
+    np.testing.assert_allclose(chi * (1 + e), np.log((1 + chi) / (1 - e * chi)), rtol=1e-10)
+    np.testing.assert_allclose(corlab.dem.exact_restitution(chi), e, atol=1e-11)
+
+
+def test_hysteresis_impact_delivers_exact_e():
+    chi = float(corlab.dem.exact_chi(0.4))
+    r = corlab.dem.simulate_impact("hysteresis", {"stiffness": 2e9, "chi": chi, "impact_velocity": 2.0},
+                                   0.01, 2.0)
+    assert r["e"] == pytest.approx(0.4, abs=1e-8)
+    assert r["contact_time"] > 0 and r["max_overlap"] > 0
+
+
+def test_published_formula_and_catalog():
+    assert corlab.dem.published_chi("hunt_crossley", 0.3) == pytest.approx(1.05)
+    assert "carvalho_martins" in corlab.dem.chi_formulas()
+    names = [law["name"] for law in corlab.dem.laws()]
+    assert "thornton_ning" in names and "hu_guo" in names
+
+
+def test_export_constant_e_writes_compensated_lammps_input():
+    out = corlab.dem.export([("steel_ma2023", 0.005)], wall="steel_ma2023", restitution=0.5)
+    data = json.loads(out["json"])
+    e_in = data["pairs"][0]["lammps_tsuji_input"]
+    assert 0.3 < e_in < 0.5
+    assert "damping tsuji" in out["lammps"] and "%.10g" % e_in in out["lammps"]
+    assert "coefficientRestitution" in out["liggghts"]
+
+
+def test_bad_input_is_value_error():
+    with pytest.raises(ValueError, match="restitution"):
+        corlab.dem.exact_chi(1.5)
+    with pytest.raises(ValueError, match="law"):
+        corlab.dem.simulate_impact("nope", {}, 1.0, 1.0)
+    with pytest.raises(ValueError, match="params"):
+        corlab.dem.simulate_impact("hertz", {}, 1.0, 1.0)
+
+
+@pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
+def test_cli_writes_all_files_and_reads_an_fe_table(tmp_path):
+    table = tmp_path / "results.csv"
+    table.write_text("case_id,status,velocity,e\na,ok,0.5,0.8\nb,ok,1,0.7\nc,failed,2,\nd,ok,4,0.55\n")
+    out = tmp_path / "x"
+    done = subprocess.run([os.environ["CORLAB_BIN"], "dem", "--type", "steel_ma2023:0.004", "--wall",
+                           "steel_ma2023", "--wall-only", "--table", str(table), "--v-min", "0.5",
+                           "--v-max", "4", "--fit-points", "4", "--out", str(out)],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    for name in ("lammps.in", "liggghts.in", "yade_fragment.py", "restitution_table.csv", "dem_export.json"):
+        assert (out / name).stat().st_size > 0
+    data = json.loads((out / "dem_export.json").read_text())
+    pair = data["pairs"][0]
+    assert pair["target"].startswith("table")
+    assert pair["table"][0]["e"] == pytest.approx(0.8)
+    fit = pair["thornton_limiting_pressure_Pa"]  # corlab's FE-calibrated plastic law
+    assert fit["parameter"] > 0 and fit["max_abs_error"] < 0.1
+
+
+@pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
+def test_cli_bad_input_is_one_line_and_nonzero(tmp_path):
+    done = subprocess.run([os.environ["CORLAB_BIN"], "dem", "--type", "steel_ma2023:0.004",
+                           "--restitution", "1.5", "--out", str(tmp_path)],
+                          capture_output=True, text=True, timeout=60)
+    assert done.returncode != 0
+    assert "restitution" in done.stderr and len(done.stderr.strip().splitlines()) == 1

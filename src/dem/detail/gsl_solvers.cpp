@@ -1,0 +1,75 @@
+#include "dem/detail/gsl_solvers.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace corlab::dem::detail {
+namespace {
+
+double call(double x, void* params) {
+  return (*static_cast<const std::function<double(double)>*>(params))(x);
+}
+
+}  // namespace
+
+double brent_root(
+    const std::function<double(double)>& f, double lo, double hi, double abs_tol, double rel_tol) {
+  const double flo = f(lo);
+  const double fhi = f(hi);
+  if (flo == 0.0) return lo;
+  if (fhi == 0.0) return hi;
+  if ((flo > 0.0) == (fhi > 0.0) || !std::isfinite(flo) || !std::isfinite(fhi)) {
+    throw std::runtime_error("brent_root: the interval does not bracket a root");
+  }
+  gsl_set_error_handler_off();
+  gsl_function fn{&call, const_cast<std::function<double(double)>*>(&f)};
+  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  gsl_root_fsolver_set(solver.get(), &fn, lo, hi);
+  for (int iter = 0; iter < 200; ++iter) {
+    gsl_root_fsolver_iterate(solver.get());
+    const double a = gsl_root_fsolver_x_lower(solver.get());
+    const double b = gsl_root_fsolver_x_upper(solver.get());
+    if (gsl_root_test_interval(a, b, abs_tol, rel_tol) == GSL_SUCCESS || a == b) {
+      return gsl_root_fsolver_root(solver.get());
+    }
+  }
+  throw std::runtime_error("brent_root: no convergence in 200 iterations");
+}
+
+double golden_minimum(const std::function<double(double)>& f,
+                      double lo,
+                      double hi,
+                      double rel_tol) {
+  constexpr double kInvPhi = 0.6180339887498949;
+  double a = lo;
+  double b = hi;
+  double c = b - kInvPhi * (b - a);
+  double d = a + kInvPhi * (b - a);
+  double fc = f(c);
+  double fd = f(d);
+  const double abs_tol = 1e-12 * std::abs(hi - lo);
+  for (int iter = 0;
+       iter < 500 && std::abs(b - a) > rel_tol * (std::abs(c) + std::abs(d)) + abs_tol; ++iter) {
+    if (fc < fd) {
+      b = d;
+      d = c;
+      fd = fc;
+      c = b - kInvPhi * (b - a);
+      fc = f(c);
+    } else {
+      a = c;
+      c = d;
+      fc = fd;
+      d = a + kInvPhi * (b - a);
+      fd = f(d);
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+}  // namespace corlab::dem::detail
