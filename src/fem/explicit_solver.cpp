@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -166,6 +167,114 @@ std::string status_detail(RunStatus status,
   return {};
 }
 
+/// The time loop of one run: steps the state until a status ends it, keeping the energy
+/// balance, the history, field snapshots, progress and cancel polling.
+class TimeLoop {
+ public:
+  TimeLoop(const ImpactConfig& config,
+           const Mesh& mesh,
+           const SimulationControl& control,
+           const ImpactModel& m,
+           ImpactState& s,
+           ImpactHistory& history)
+      : mesh_(mesh),
+        control_(control),
+        m_(m),
+        s_(s),
+        history_(history),
+        rule_(m.t_wave, m.velocity),
+        field_times_(config.output.field_times),
+        every_(config.output.history_every),
+        v_com_prev_(s.sphere_velocity) {
+    std::sort(field_times_.begin(), field_times_.end());
+  }
+
+  /// Runs to the end; returns the status.
+  RunStatus run() {
+    // A run cancelled before it starts does no work (the loop polls only every kPollEvery steps).
+    if (cancelled()) return RunStatus::kCancelled;
+    while (true) {
+      if (auto end = kinematic_half()) return *end;
+      if (auto end = force_half()) return *end;
+      if (auto end = after_step()) return *end;
+    }
+  }
+
+  const SeparationRule& rule() const { return rule_; }
+  const ForceReport& last_forces() const { return rep_; }
+  double balance_max() const { return balance_max_; }
+
+ private:
+  bool cancelled() const {
+    return control_.cancel != nullptr && control_.cancel->load(std::memory_order_relaxed);
+  }
+
+  /// Velocities and positions, then the energy balance at t^n (kinetic energy in product form,
+  /// exact for the scheme) and the history row.
+  std::optional<RunStatus> kinematic_half() {
+    const double dt_avg = 0.5 * (s_.dt_prev + s_.dt);
+    const NodeSums ns = solver::move_nodes(m_, s_);
+    const double v_half_mean = 0.5 * (s_.sphere_velocity + v_com_prev_);
+    v_com_prev_ = s_.sphere_velocity;
+    const double total =
+        ns.ke + s_.energy.internal + s_.energy.hourglass + s_.energy.viscous + s_.energy.contact;
+    const double balance = (total - m_.energy_initial) / m_.energy_initial;
+    if (!std::isfinite(balance)) {
+      balance_max_ = kNaN;
+      return RunStatus::kNonFinite;
+    }
+    balance_max_ = std::max(balance_max_, std::abs(balance));
+    if (s_.step % every_ == 0) record_history(s_, ns.ke, v_half_mean, balance, history_);
+    rule_.accumulate(ns.ke_sphere, dt_avg);
+    return std::nullopt;
+  }
+
+  /// Element and contact forces, then the stop rule.
+  std::optional<RunStatus> force_half() {
+    rep_ = solver::compute_forces(m_, s_);
+    if (rep_.inverted_element >= 0) return RunStatus::kElementInverted;
+    if (!(s_.dt > kMinStepFraction * m_.dt_initial)) return RunStatus::kStepCollapsed;
+    const auto decision = rule_.update(s_.t, s_.dt_prev, rep_.penetrating, s_.sphere_velocity);
+    if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
+    if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
+    if (control_.stop_at_max_compression && rule_.touched() && s_.sphere_velocity >= 0.0) {
+      return RunStatus::kMaxCompression;
+    }
+    return std::nullopt;
+  }
+
+  /// Field snapshots, the time and step limits, cancel and progress.
+  std::optional<RunStatus> after_step() {
+    while (next_field_ < field_times_.size() && s_.t >= field_times_[next_field_]) {
+      if (control_.on_fields) control_.on_fields(s_.t, snapshot(m_, mesh_, s_, s_.t));
+      ++next_field_;
+    }
+    if (s_.t >= m_.t_max) return RunStatus::kNotSeparated;
+    if (s_.step >= m_.max_steps) return RunStatus::kStepBudgetExceeded;
+    if ((s_.step & (kPollEvery - 1)) == 0) {
+      if (cancelled()) return RunStatus::kCancelled;
+      if (control_.progress) {
+        control_.progress(
+            std::clamp((s_.t - m_.t_start) / (m_.t_expected - m_.t_start), 0.0, 0.99));
+      }
+    }
+    return std::nullopt;
+  }
+
+  const Mesh& mesh_;
+  const SimulationControl& control_;
+  const ImpactModel& m_;
+  ImpactState& s_;
+  ImpactHistory& history_;
+  SeparationRule rule_;
+  std::vector<double> field_times_;
+  std::size_t next_field_ = 0;
+  int every_;
+  double v_com_prev_;
+  double balance_max_ = 0.0;
+  ForceReport rep_;
+};
+
 }  // namespace
 
 ImpactResult run_impact(const ImpactConfig& config,
@@ -174,14 +283,7 @@ ImpactResult run_impact(const ImpactConfig& config,
   const auto wall_start = std::chrono::steady_clock::now();
   const ImpactModel m = solver::make_impact_model(config, mesh);
   ImpactState s = solver::make_initial_state(m);
-  SeparationRule rule(m.t_wave, m.velocity);
   const double z_axis_surface = s.z[m.masters[0]];
-  std::vector<double> field_times = config.output.field_times;
-  std::sort(field_times.begin(), field_times.end());
-  std::size_t next_field = 0;
-  const int every = config.output.history_every;
-  const auto* cancel = control.cancel;
-
   ImpactResult res;
   res.elements = m.n_elements;
   res.nodes = m.n_nodes;
@@ -190,74 +292,11 @@ ImpactResult run_impact(const ImpactConfig& config,
       std::hypot(s.r[m.masters[1]] - s.r[m.masters[0]], s.z[m.masters[1]] - s.z[m.masters[0]]);
   res.energy_initial = m.energy_initial;
 
-  RunStatus status = RunStatus::kNotSeparated;
-  double balance_max = 0.0;
-  double v_com_prev = s.sphere_velocity;
-  ForceReport rep;
-  // A run cancelled before it starts does no work (the loop polls only every kPollEvery steps).
-  const bool cancelled_at_start = cancel != nullptr && cancel->load(std::memory_order_relaxed);
-  if (cancelled_at_start) status = RunStatus::kCancelled;
-  while (!cancelled_at_start) {
-    // Kinematic half, then the energy balance at t^n (kinetic energy in product form, exact for
-    // the scheme) and the history row.
-    const double dt_avg = 0.5 * (s.dt_prev + s.dt);
-    const NodeSums ns = solver::move_nodes(m, s);
-    const double v_half_mean = 0.5 * (s.sphere_velocity + v_com_prev);
-    v_com_prev = s.sphere_velocity;
-    const double total =
-        ns.ke + s.energy.internal + s.energy.hourglass + s.energy.viscous + s.energy.contact;
-    const double balance = (total - m.energy_initial) / m.energy_initial;
-    if (!std::isfinite(balance)) {
-      status = RunStatus::kNonFinite;
-      balance_max = kNaN;
-      break;
-    }
-    balance_max = std::max(balance_max, std::abs(balance));
-    if (s.step % every == 0) record_history(s, ns.ke, v_half_mean, balance, res.history);
-    rule.accumulate(ns.ke_sphere, dt_avg);
-
-    // Force half, then the stop rule.
-    rep = solver::compute_forces(m, s);
-    if (rep.inverted_element >= 0) {
-      status = RunStatus::kElementInverted;
-      break;
-    }
-    if (!(s.dt > kMinStepFraction * m.dt_initial)) {
-      status = RunStatus::kStepCollapsed;
-      break;
-    }
-    const auto decision = rule.update(s.t, s.dt_prev, rep.penetrating, s.sphere_velocity);
-    if (decision == SeparationRule::Decision::kRebound) {
-      status = RunStatus::kSeparated;
-      break;
-    }
-    if (decision == SeparationRule::Decision::kNoRebound) break;
-    if (control.stop_at_max_compression && rule.touched() && s.sphere_velocity >= 0.0) {
-      status = RunStatus::kMaxCompression;
-      break;
-    }
-    while (next_field < field_times.size() && s.t >= field_times[next_field]) {
-      if (control.on_fields) control.on_fields(s.t, snapshot(m, mesh, s, s.t));
-      ++next_field;
-    }
-    if (s.t >= m.t_max) break;
-    if (s.step >= m.max_steps) {
-      status = RunStatus::kStepBudgetExceeded;
-      break;
-    }
-    if ((s.step & (kPollEvery - 1)) == 0) {
-      if (cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
-        status = RunStatus::kCancelled;
-        break;
-      }
-      if (control.progress) {
-        control.progress(std::clamp((s.t - m.t_start) / (m.t_expected - m.t_start), 0.0, 0.99));
-      }
-    }
-  }
-  res = finish(m, s, rule, status, balance_max, z_axis_surface, std::move(res));
+  TimeLoop loop(config, mesh, control, m, s, res.history);
+  const RunStatus status = loop.run();
+  res = finish(m, s, loop.rule(), status, loop.balance_max(), z_axis_surface, std::move(res));
   if (res.status != RunStatus::kSeparated && res.status_detail.empty()) {
-    res.status_detail = status_detail(res.status, m, s, rep, s.sphere_velocity);
+    res.status_detail = status_detail(res.status, m, s, loop.last_forces(), s.sphere_velocity);
   }
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   res.element_steps_per_s =

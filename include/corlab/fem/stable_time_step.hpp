@@ -18,7 +18,7 @@ inline double characteristic_length(const Quad4Geometry& g) {
   double s = quad4_gradient_norm2(g);
   const double inv = 1.0 / g.omega;
 #pragma GCC unroll 4
-  for (int i = 0; i < 4; ++i) s += g.hoop[i] * g.hoop[i] * inv * inv;
+  for (const double h : g.hoop) s += h * h * inv * inv;
   return 1.0 / std::sqrt(s);
 }
 
