@@ -212,6 +212,11 @@ std::vector<std::string> results_header(const std::vector<std::string>& swept_ke
   return header;
 }
 
+std::string_view row_status(const fem::ImpactResult* result) {
+  if (result == nullptr) return kStatusFailed;
+  return result->separated ? kStatusOk : kStatusNotSeparated;
+}
+
 std::string format_number(double value) { return fem::field_text(value); }
 
 std::vector<std::string> result_row(std::string_view case_id,
@@ -220,10 +225,7 @@ std::vector<std::string> result_row(std::string_view case_id,
                                     const fem::ImpactResult* result,
                                     std::string_view error,
                                     double wall_s) {
-  std::vector<std::string> row{std::string(case_id),
-                               std::string(result == nullptr   ? kStatusFailed
-                                           : result->separated ? kStatusOk
-                                                               : kStatusNotSeparated)};
+  std::vector<std::string> row{std::string(case_id), std::string(row_status(result))};
   row.insert(row.end(), swept_values.begin(), swept_values.end());
   const fem::FieldInput in{result, &config, wall_s};
   for (const auto& f : fem::result_fields()) {
