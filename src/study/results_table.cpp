@@ -212,6 +212,11 @@ std::vector<std::string> results_header(const std::vector<std::string>& swept_ke
   return header;
 }
 
+std::string_view row_status(const fem::ImpactResult* result) {
+  if (result == nullptr) return kStatusFailed;
+  return result->separated ? kStatusOk : kStatusNotSeparated;
+}
+
 std::string format_number(double value) { return fem::field_text(value); }
 
 namespace {

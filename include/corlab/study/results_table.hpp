@@ -37,6 +37,10 @@ inline constexpr std::string_view kStatusOk = "ok";
 inline constexpr std::string_view kStatusFailed = "failed";
 inline constexpr std::string_view kStatusNotSeparated = "not_separated";
 
+/// The `status` column of a row: failed (no result: the run threw), ok or not_separated. This is
+/// the one place a run's outcome becomes the CSV status (the result fields table holds the rest).
+std::string_view row_status(const fem::ImpactResult* result);
+
 /// The fields of one row (same order as results_header()). `result` is null for a failed case,
 /// whose `error` holds the message; `wall_s` is used when the result carries no timing.
 std::vector<std::string> result_row(std::string_view case_id,

@@ -66,6 +66,18 @@ TEST(ResultFields, CsvColumnsAndFailedRowsFollowTheTable) {
   EXPECT_TRUE(std::isfinite(table.numbers("k1")[0]));
 }
 
+TEST(ResultFields, CsvFieldsDoNotCollideWithTheStructuralColumns) {
+  // results.csv has case_id, status (study::row_status), the swept keys and error around the
+  // fields: a field written to the CSV must not reuse those names (the reader refuses a column
+  // named twice).
+  for (const ResultField& f : result_fields()) {
+    if ((f.outputs & kCsv) == 0) continue;
+    EXPECT_NE(f.name, "case_id");
+    EXPECT_NE(f.name, "status") << "a run status goes to the summary; the CSV's is row_status()";
+    EXPECT_NE(f.name, "error");
+  }
+}
+
 TEST(ResultFields, TimingColumnsAreTheMachineDependentOnes) {
   for (const auto& name : study::timing_columns()) {
     const ResultField* f = find_result_field(name);
