@@ -26,22 +26,30 @@ import numpy as np  # noqa: E402
 import corlab  # noqa: E402
 
 MAX_REBOUNDS = 12
-LABELS = {"hunt_crossley": "Hunt-Crossley 1975", "lankarani_nikravesh": "Lankarani-Nikravesh 1990",
-          "flores": "Flores et al. 2011", "gonthier": "Gonthier et al. 2004", "hu_guo": "Hu-Guo 2015",
-          "carvalho_martins": "Carvalho-Martins 2019"}
+LABELS = {"hunt_crossley": "Hunt-Crossley 1975",
+          "lankarani_nikravesh": "Lankarani-Nikravesh 1990",
+          "flores": "Flores et al. 2011", "gonthier": "Gonthier et al. 2004",
+          "hu_guo": "Hu-Guo 2015", "carvalho_martins": "Carvalho-Martins 2019"}
+
+
+def delivered_e(name, e):
+    """e delivered by the published chi(e) formula `name` at target e."""
+    return float(corlab.dem.exact_restitution(corlab.dem.published_chi(name, e)))
 
 
 def exactness(out):
     e = np.linspace(0.05, 0.99, 189)
-    rows = ["| formula | delivered e at 0.1 / 0.3 / 0.5 / 0.7 / 0.9 | max abs error of e over [0.05, 0.99] (at e) |",
+    rows = ["| formula | delivered e at 0.1 / 0.3 / 0.5 / 0.7 / 0.9 "
+            "| max abs error of e over [0.05, 0.99] (at e) |",
             "|---|---|---|"]
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
     for name in corlab.dem.chi_formulas():
-        delivered = np.array([float(corlab.dem.exact_restitution(corlab.dem.published_chi(name, x))) for x in e])
+        delivered = np.array([delivered_e(name, x) for x in e])
         err = delivered - e
         i = int(np.argmax(np.abs(err)))
-        at = [float(corlab.dem.exact_restitution(corlab.dem.published_chi(name, x))) for x in (0.1, 0.3, 0.5, 0.7, 0.9)]
-        rows.append("| %s | %s | %.3f (e = %.2f) |" % (LABELS[name], " / ".join("%.3f" % a for a in at), abs(err[i]), e[i]))
+        at = [delivered_e(name, x) for x in (0.1, 0.3, 0.5, 0.7, 0.9)]
+        rows.append("| %s | %s | %.3f (e = %.2f) |"
+                    % (LABELS[name], " / ".join("%.3f" % a for a in at), abs(err[i]), e[i]))
         ax.plot(e, err, label=LABELS[name])
     ax.axhline(0.0, color="k", lw=0.8)
     ax.set_xlabel("target e")
@@ -57,14 +65,17 @@ def exactness(out):
 
 
 def lammps_bounce(lmp, fragment, radius, density, h0, t_end, dt, work, tag):
-    lines = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f", "comm_modify vel yes",
+    lines = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+             "comm_modify vel yes",
              "region box block -0.05 0.05 -0.05 0.05 -0.001 %g" % (h0 + 0.05), "create_box 1 box",
              "create_atoms 1 single 0 0 %.12g" % (h0 + radius),
              "set atom 1 diameter %.12g density %.12g" % (2 * radius, density),
-             "include %s" % fragment, "fix g all gravity 9.81 vector 0 0 -1", "fix nve all nve/sphere",
+             "include %s" % fragment, "fix g all gravity 9.81 vector 0 0 -1",
+             "fix nve all nve/sphere",
              "timestep %g" % dt, "variable t equal time", "variable z equal z[1]-%.12g" % radius,
              "variable vz equal vz[1]",
-             "fix p all print 200 \"${t} ${z} ${vz}\" file %s screen no" % os.path.join(work, tag + ".txt"),
+             "fix p all print 200 \"${t} ${z} ${vz}\" file %s screen no"
+             % os.path.join(work, tag + ".txt"),
              "thermo 0", "run %d" % int(t_end / dt)]
     path = os.path.join(work, "in." + tag)
     with open(path, "w") as f:
@@ -78,18 +89,21 @@ def liggghts_bounce(liggghts, fragment, radius, density, h0, t_end, dt, work, ta
     lines = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
              "communicate single vel yes", "units si", "hard_particles yes",
              "region reg block -0.05 0.05 -0.05 0.05 -0.00001 %g units box" % (h0 + 0.05),
-             "create_box 2 reg", "neighbor 0.001 bin", "neigh_modify delay 0", "include %s" % fragment,
+             "create_box 2 reg", "neighbor 0.001 bin", "neigh_modify delay 0",
+             "include %s" % fragment,
              "create_atoms 1 single 0 0 %.12g units box" % (h0 + radius),
              "set atom 1 diameter %.12g density %.12g" % (2 * radius, density),
              "fix g all gravity 9.81 vector 0 0 -1", "fix nve all nve/sphere", "timestep %g" % dt,
-             "variable t equal time", "variable z equal z[1]-%.12g" % radius, "variable vz equal vz[1]",
-             "fix p all print 200 \"${t} ${z} ${vz}\" file %s screen no" % os.path.join(work, tag + ".txt"),
+             "variable t equal time", "variable z equal z[1]-%.12g" % radius,
+             "variable vz equal vz[1]",
+             "fix p all print 200 \"${t} ${z} ${vz}\" file %s screen no"
+             % os.path.join(work, tag + ".txt"),
              "thermo 1000000", "run %d" % int(t_end / dt)]
     path = os.path.join(work, "in." + tag)
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
-    subprocess.run([liggghts, "-in", path, "-log", "none", "-echo", "none"], check=True, capture_output=True,
-                   cwd=work)
+    subprocess.run([liggghts, "-in", path, "-log", "none", "-echo", "none"], check=True,
+                   capture_output=True, cwd=work)
     data = np.loadtxt(os.path.join(work, tag + ".txt"), comments="#")
     return data[:, 0], data[:, 1], data[:, 2]
 
@@ -104,15 +118,17 @@ def bounce(corlab_bin, lmp, liggghts, out):
     radius, h0 = 0.005, 0.2
     v0 = math.sqrt(2 * 9.81 * h0)
     work = tempfile.mkdtemp(prefix="corlab_bounce_")
-    subprocess.run([corlab_bin, "dem", "--type", "alumina_ma2023:%g" % radius, "--wall", "aluminium_ma2023",
-                    "--wall-only", "--model", "thornton1997", "--v-min", "0.2", "--v-max", "%.3f" % v0,
+    subprocess.run([corlab_bin, "dem", "--type", "alumina_ma2023:%g" % radius,
+                    "--wall", "aluminium_ma2023", "--wall-only", "--model", "thornton1997",
+                    "--v-min", "0.2", "--v-max", "%.3f" % v0,
                     "--out", os.path.join(work, "ev")], check=True, capture_output=True)
     with open(os.path.join(work, "ev", "dem_export.json")) as f:
         pair = json.load(f)["pairs"][0]
     density = pair["effective_mass_kg"] / (4.0 / 3.0 * math.pi * radius ** 3)
     e_first = float(corlab.predict("thornton1997", "alumina_ma2023", "aluminium_ma2023", v0))
-    subprocess.run([corlab_bin, "dem", "--type", "alumina_ma2023:%g" % radius, "--wall", "aluminium_ma2023",
-                    "--wall-only", "--restitution", "%.6f" % e_first, "--out", os.path.join(work, "const")],
+    subprocess.run([corlab_bin, "dem", "--type", "alumina_ma2023:%g" % radius,
+                    "--wall", "aluminium_ma2023", "--wall-only", "--restitution", "%.6f" % e_first,
+                    "--out", os.path.join(work, "const")],
                    check=True, capture_output=True)
     frag_const = os.path.join(work, "const", "lammps.in")
     # wall-only fragments have no pair_style; a single ball needs none.
@@ -122,8 +138,8 @@ def bounce(corlab_bin, lmp, liggghts, out):
         t, z, vz = lammps_bounce(lmp, frag, radius, density, h0, t_end, dt, work, tag)
         res[tag] = (t, z, apexes(t, z, vz))
     if liggghts:
-        t, z, vz = liggghts_bounce(liggghts, os.path.join(work, "ev", "liggghts.in"), radius, density, h0,
-                                   t_end, dt, work, "lig")
+        t, z, vz = liggghts_bounce(liggghts, os.path.join(work, "ev", "liggghts.in"), radius,
+                                   density, h0, t_end, dt, work, "lig")
         res["lig"] = (t, z, apexes(t, z, vz))
     # corlab's own e(v) sequence: h_{n+1} = h_n e(v_n)^2, v_n = sqrt(2 g h_n)
     h, seq = h0, []
@@ -132,24 +148,30 @@ def bounce(corlab_bin, lmp, liggghts, out):
         h = h * float(corlab.predict("thornton1997", "alumina_ma2023", "aluminium_ma2023", v)) ** 2
         seq.append(h)
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    a1.plot(res["const"][0], res["const"][1] * 1e3, lw=0.8, label="LAMMPS, constant e = %.3f" % e_first)
-    a1.plot(res["ev"][0], res["ev"][1] * 1e3, lw=0.8, label="LAMMPS, corlab e(v) (viscoelastic fit)")
+    a1.plot(res["const"][0], res["const"][1] * 1e3, lw=0.8,
+            label="LAMMPS, constant e = %.3f" % e_first)
+    a1.plot(res["ev"][0], res["ev"][1] * 1e3, lw=0.8,
+            label="LAMMPS, corlab e(v) (viscoelastic fit)")
     a1.set_xlabel("time [s]")
     a1.set_ylabel("ball bottom height [mm]")
     if "lig" in res:
-        a1.plot(res["lig"][0], res["lig"][1] * 1e3, lw=0.8, label="LIGGGHTS, corlab e(v) (thornton_ning fit)")
+        a1.plot(res["lig"][0], res["lig"][1] * 1e3, lw=0.8,
+                label="LIGGGHTS, corlab e(v) (thornton_ning fit)")
     a1.legend(fontsize=8)
-    for tag, lab, mk in (("const", "LAMMPS constant e", "o"), ("ev", "LAMMPS corlab e(v) (viscoelastic)", "s"),
+    for tag, lab, mk in (("const", "LAMMPS constant e", "o"),
+                         ("ev", "LAMMPS corlab e(v) (viscoelastic)", "s"),
                          ("lig", "LIGGGHTS corlab e(v) (thornton_ning)", "^")):
         if tag not in res:
             continue
         a2.semilogy(np.arange(1, len(res[tag][2]) + 1), res[tag][2] * 1e3, mk, label=lab)
-    a2.semilogy(np.arange(1, len(seq) + 1), np.array(seq) * 1e3, "k--", label="thornton1997 e(v) (exact sequence)")
+    a2.semilogy(np.arange(1, len(seq) + 1), np.array(seq) * 1e3, "k--",
+                label="thornton1997 e(v) (exact sequence)")
     a2.set_xlabel("rebound number")
     a2.set_ylabel("apex height [mm]")
     a2.legend(fontsize=8)
     a2.grid(alpha=0.3, which="both")
-    fig.suptitle("Alumina ball (R = 5 mm) dropped from %.0f mm on aluminium: constant e vs corlab e(v)" % (h0 * 1e3))
+    fig.suptitle("Alumina ball (R = 5 mm) dropped from %.0f mm on aluminium: "
+                 "constant e vs corlab e(v)" % (h0 * 1e3))
     fig.tight_layout()
     path = os.path.join(out, "dem_bouncing_ball.png")
     fig.savefig(path, dpi=130)
@@ -160,7 +182,8 @@ def bounce(corlab_bin, lmp, liggghts, out):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = argparse.ArgumentParser(description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("what", choices=["exactness", "bounce"])
     p.add_argument("--out", default="docs/img")
     p.add_argument("--corlab", default="build/bin/corlab")

@@ -22,7 +22,11 @@
 #ifndef CORLAB_DEM_H
 #define CORLAB_DEM_H
 
+#ifdef __cplusplus
+#include <cstddef>
+#else
 #include <stddef.h>
+#endif
 
 #if defined(_WIN32)
 #define CORLAB_DEM_API __declspec(dllexport)
@@ -35,13 +39,19 @@ extern "C" {
 #endif
 
 /** Opaque pair of a sphere and a substrate (or a table). */
-typedef struct corlab_dem_pair corlab_dem_pair;
+struct corlab_dem_pair;
 
 /** Per-contact memory; zero-initialise at first touch. */
-typedef struct corlab_dem_state {
+struct corlab_dem_state {
   double impact_velocity; /**< approach speed at first touch [m/s]; 0 = not yet set */
   double max_overlap;     /**< largest overlap so far [m] */
-} corlab_dem_state;
+};
+
+/* C needs the typedefs to use the bare names; in C++ the struct names are already type names. */
+#ifndef __cplusplus
+typedef struct corlab_dem_pair corlab_dem_pair;
+typedef struct corlab_dem_state corlab_dem_state;
+#endif
 
 /** Version string of the library, e.g. "0.1.0". */
 CORLAB_DEM_API const char* corlab_dem_version(void);

@@ -121,6 +121,7 @@ void bind_dem(py::module_& m) {
       py::arg("formula"), py::arg("e"), "Published chi(e) approximation by name");
   d.def("chi_formulas", [] {
     std::vector<std::string> names;
+    names.reserve(dem::kChiFormulas.size());
     for (const auto f : dem::kChiFormulas) names.emplace_back(dem::to_string(f));
     return names;
   });

@@ -19,8 +19,8 @@ def test_exact_chi_relation_and_inverse_vectorised():
 
 def test_hysteresis_impact_delivers_exact_e():
     chi = float(corlab.dem.exact_chi(0.4))
-    r = corlab.dem.simulate_impact("hysteresis", {"stiffness": 2e9, "chi": chi, "impact_velocity": 2.0},
-                                   0.01, 2.0)
+    params = {"stiffness": 2e9, "chi": chi, "impact_velocity": 2.0}
+    r = corlab.dem.simulate_impact("hysteresis", params, 0.01, 2.0)
     assert r["e"] == pytest.approx(0.4, abs=1e-8)
     assert r["contact_time"] > 0 and r["max_overlap"] > 0
 
@@ -53,14 +53,17 @@ def test_bad_input_is_value_error():
 @pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
 def test_cli_writes_all_files_and_reads_an_fe_table(tmp_path):
     table = tmp_path / "results.csv"
-    table.write_text("case_id,status,velocity,e\na,ok,0.5,0.8\nb,ok,1,0.7\nc,failed,2,\nd,ok,4,0.55\n")
+    table.write_text("case_id,status,velocity,e\n"
+                     "a,ok,0.5,0.8\nb,ok,1,0.7\nc,failed,2,\nd,ok,4,0.55\n")
     out = tmp_path / "x"
-    done = subprocess.run([os.environ["CORLAB_BIN"], "dem", "--type", "steel_ma2023:0.004", "--wall",
-                           "steel_ma2023", "--wall-only", "--table", str(table), "--v-min", "0.5",
-                           "--v-max", "4", "--fit-points", "4", "--out", str(out)],
+    done = subprocess.run([os.environ["CORLAB_BIN"], "dem", "--type", "steel_ma2023:0.004",
+                           "--wall", "steel_ma2023", "--wall-only", "--table", str(table),
+                           "--v-min", "0.5", "--v-max", "4", "--fit-points", "4",
+                           "--out", str(out)],
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
-    for name in ("lammps.in", "liggghts.in", "yade_fragment.py", "restitution_table.csv", "dem_export.json"):
+    for name in ("lammps.in", "liggghts.in", "yade_fragment.py", "restitution_table.csv",
+                 "dem_export.json"):
         assert (out / name).stat().st_size > 0
     data = json.loads((out / "dem_export.json").read_text())
     pair = data["pairs"][0]

@@ -20,7 +20,7 @@ UniformTable tabulate(const std::function<double(double)>& f, double x_min, doub
   std::vector<double> values(static_cast<std::size_t>(n));
   const double step = (x_max - x_min) / (n - 1);
   for (int i = 0; i < n; ++i) values[static_cast<std::size_t>(i)] = f(x_min + i * step);
-  return UniformTable(x_min, x_max, std::move(values));
+  return {x_min, x_max, std::move(values)};
 }
 
 double max_interpolation_error(const UniformTable& table, const std::function<double(double)>& f) {

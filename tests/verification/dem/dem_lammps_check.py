@@ -15,7 +15,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dem_check_common import STEPS_PER_CONTACT, check_cases, contact_time, finish, parse_e, run  # noqa: E402
+from dem_check_common import (  # noqa: E402
+    STEPS_PER_CONTACT, check_cases, contact_time, finish, parse_e, run)
 
 
 def lammps_input(fragment, pair, radius, density, v, geometry):

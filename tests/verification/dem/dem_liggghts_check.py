@@ -11,7 +11,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dem_check_common import STEPS_PER_CONTACT, check_cases, contact_time, finish, parse_e, run  # noqa: E402
+from dem_check_common import (  # noqa: E402
+    STEPS_PER_CONTACT, check_cases, contact_time, finish, parse_e, run)
 
 
 def liggghts_input(fragment, pair, radius, density, v, geometry):
@@ -23,16 +24,19 @@ def liggghts_input(fragment, pair, radius, density, v, geometry):
     ntypes = 2 if "corlab_wall" in text else 1
     lines = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
              "communicate single vel yes", "units si", "hard_particles yes",
-             "region reg block -%g %g -%g %g -%g %g units box" % ((8 * radius,) * 4 + (0.001 * radius, 8 * radius)),
-             "create_box %d reg" % ntypes, "neighbor %g bin" % (0.2 * radius), "neigh_modify delay 0",
-             "include %s" % fragment]
+             "region reg block -%g %g -%g %g -%g %g units box"
+             % ((8 * radius,) * 4 + (0.001 * radius, 8 * radius)),
+             "create_box %d reg" % ntypes, "neighbor %g bin" % (0.2 * radius),
+             "neigh_modify delay 0", "include %s" % fragment]
     if geometry == "wall":
         lines += ["create_atoms 1 single 0 0 %.12g units box" % (radius + gap)]
     else:
         if ntypes == 2:
             lines += ["unfix corlab_wall"]
-        lines += ["create_atoms 1 single %.12g 0 %.12g units box" % (-(radius + gap / 2), 4 * radius),
-                  "create_atoms 1 single %.12g 0 %.12g units box" % (radius + gap / 2, 4 * radius)]
+        lines += ["create_atoms 1 single %.12g 0 %.12g units box"
+                  % (-(radius + gap / 2), 4 * radius),
+                  "create_atoms 1 single %.12g 0 %.12g units box"
+                  % (radius + gap / 2, 4 * radius)]
     lines += ["set atom * diameter %.12g density %.12g" % (2 * radius, density)]
     if geometry == "wall":
         lines += ["velocity all set 0 0 %.12g units box" % (-v)]
@@ -54,8 +58,10 @@ def main():
     def simulate(out, pair, density, v, geometry):
         path = os.path.join(out, "in.%s_%g" % (geometry, v))
         with open(path, "w") as f:
-            f.write(liggghts_input(os.path.join(out, "liggghts.in"), pair, 0.005, density, v, geometry))
-        return parse_e(run([liggghts, "-in", path, "-log", "none", "-echo", "none"], cwd=out).stdout)
+            f.write(liggghts_input(os.path.join(out, "liggghts.in"), pair, 0.005, density, v,
+                                   geometry))
+        return parse_e(run([liggghts, "-in", path, "-log", "none", "-echo", "none"],
+                           cwd=out).stdout)
 
     rows, failures = check_cases(simulate, corlab, work, "liggghts_thornton_ning_pressure_Pa")
     return finish("dem_liggghts_check", rows, failures, report)
