@@ -77,7 +77,7 @@ std::vector<std::pair<std::string, OnsetProbe>> read_onset_probes(const fs::path
   if (!fs::exists(file)) return out;
   const ResultsTable t = read_results(file);
   if (t.size() == 0) return out;
-  const auto& ids = t.text("case_id");
+  const auto& ids = t.text("onset_case");
   const auto& kinds = t.text("kind");
   const auto vs = t.numbers("velocity");
   const auto ps = t.numbers("plastic_strain_max");
@@ -222,7 +222,8 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
   const auto cases = spec.expand();
   const ScaledOnsetOptions options = onset_options(opt.preset);
   const fs::path probes_file = dir / "probes.csv";
-  const std::vector<std::string> header{"case_id",       "kind", "velocity", "plastic_strain_max",
+  // "onset_case", not "case_id": a case has several probe rows (read_results keeps a case_id once).
+  const std::vector<std::string> header{"onset_case",    "kind", "velocity", "plastic_strain_max",
                                         "von_mises_max", "e",    "wall_s"};
   std::map<std::tuple<std::string, std::string, std::string>, OnsetProbe> cache;
   for (const auto& p : read_onset_probes(probes_file)) {

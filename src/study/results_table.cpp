@@ -212,21 +212,12 @@ std::vector<std::string> results_header(const std::vector<std::string>& swept_ke
   return header;
 }
 
-std::string_view row_status(const fem::ImpactResult* result) {
-  if (result == nullptr) return kStatusFailed;
-  return result->separated ? kStatusOk : kStatusNotSeparated;
-}
-
 std::string format_number(double value) { return fem::field_text(value); }
 
-namespace {
-/// The status column: "ok" for a clean rebound, the run status's name otherwise, "failed" for
-/// a run that threw.
 std::string_view row_status(const fem::ImpactResult* result) {
   if (result == nullptr) return kStatusFailed;
   return result->status == fem::RunStatus::kSeparated ? kStatusOk : fem::to_string(result->status);
 }
-}  // namespace
 
 std::vector<std::string> result_row(std::string_view case_id,
                                     const std::vector<std::string>& swept_values,

@@ -37,7 +37,8 @@ inline constexpr std::string_view kStatusOk = "ok";
 inline constexpr std::string_view kStatusFailed = "failed";
 inline constexpr std::string_view kStatusNotSeparated = "not_separated";
 
-/// The `status` column of a row: failed (no result: the run threw), ok or not_separated. This is
+/// The `status` column of a row: failed (no result: the run threw), ok (a clean rebound) or the
+/// run status (fem::to_string(RunStatus), e.g. not_separated, element_inverted). This is
 /// the one place a run's outcome becomes the CSV status (the result fields table holds the rest).
 std::string_view row_status(const fem::ImpactResult* result);
 
