@@ -14,7 +14,7 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   python3-matplotlib python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
   libgsl-dev libmuparser-dev
 
-.PHONY: deps configure build run test test-cpp test-python bench format clean
+.PHONY: deps configure build run test test-cpp test-python test-asan bench format clean
 
 deps:
 	@missing=$$(for p in $(DEBIAN_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null \
@@ -36,7 +36,7 @@ build: configure
 run: build
 	./$(BUILD_DIR)/bin/corlab reproduce --preset $(REPORT_PRESET) --out $(REPORT_DIR)
 
-test: build test-cpp test-python
+test: build test-cpp test-python test-asan
 
 test-cpp:
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
@@ -45,6 +45,19 @@ test-python:
 	PYTHONPATH=$(CURDIR)/$(BUILD_DIR)/python CORLAB_BIN=$(CURDIR)/$(BUILD_DIR)/bin/corlab \
 	  /usr/bin/python3 -m pytest -q python/tests
 
+# AddressSanitizer + UndefinedBehaviorSanitizer (preset asan, build dir build-asan): the unit
+# tests, the fuzz targets (fewer mutants) and the CLI input reproducers, then the verification
+# cases that take < 2 s in a release build. Any sanitizer report fails the test.
+ASAN_FAST_VERIFICATION := ^(Velocities/HertzElastic.MatchesHertz/2|PaperCase[.](SeparatesWithThePaperRestitution|EnergyBalanceHoldsThroughout|HourglassEnergyIsSmall|PenaltyPenetrationIsSmall))$$
+test-asan: deps
+	cmake --preset asan
+	cmake --build build-asan -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --output-on-failure -j $(JOBS) -L 'unit|fuzz' && \
+	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --output-on-failure -j $(JOBS) -R '$(ASAN_FAST_VERIFICATION)|^regression_input_cli$$'
+
 bench: build
 	for b in $(BUILD_DIR)/bin/*_benchmark; do $$b; done
 
@@ -52,4 +65,4 @@ format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
 
 clean:
-	rm -rf $(BUILD_DIR)
+	rm -rf $(BUILD_DIR) build-asan
