@@ -47,14 +47,16 @@ test-python:
 
 # AddressSanitizer + UndefinedBehaviorSanitizer (preset asan, build dir build-asan): the unit
 # tests, the fuzz targets (fewer mutants) and the CLI input reproducers, then the verification
-# cases that take < 2 s in a release build. Any sanitizer report fails the test.
+# cases that take < 2 s in a release build. Any sanitizer report fails the test. fuzz_gmsh is left
+# out here (gmsh itself is not instrumented and its fork probe times out under ASan; the release
+# build runs it).
 ASAN_FAST_VERIFICATION := ^(Velocities/HertzElastic.MatchesHertz/2|PaperCase[.](SeparatesWithThePaperRestitution|EnergyBalanceHoldsThroughout|HourglassEnergyIsSmall|PenaltyPenetrationIsSmall))$$
 test-asan: deps
 	cmake --preset asan
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --output-on-failure -j $(JOBS) -L 'unit|fuzz' && \
+	  ctest --output-on-failure -j $(JOBS) -L 'unit|fuzz' -E '^fuzz_gmsh$$' && \
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --output-on-failure -j $(JOBS) -R '$(ASAN_FAST_VERIFICATION)|^regression_input_cli$$'
 
