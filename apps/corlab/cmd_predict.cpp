@@ -17,6 +17,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/registry.hpp"
+#include "corlab/restitution/validity.hpp"
 
 namespace corlab::cli {
 namespace {
@@ -76,41 +77,14 @@ std::vector<double> parse_velocities(const std::string& text, const std::string&
   return v;
 }
 
-// Largest impact speed any of the models (quasi-static contact mechanics) can speak for [m/s].
-constexpr double kMaxModelVelocity = 1000.0;
-
-// One stderr warning per model whose calibration box (k1, k2) the request leaves, and one for
-// speeds beyond any model; the numbers are still printed (extrapolation is the user's call).
+// One stderr warning per model asked outside its validity (validity.hpp).
 void warn_outside_validity(const std::vector<restitution::Model>& models,
                            const std::vector<double>& velocities,
-                           double e_star,
-                           double rho,
-                           double sy) {
-  const double v_max = *std::max_element(velocities.begin(), velocities.end());
-  if (v_max > kMaxModelVelocity) {
-    std::fprintf(stderr,
-                 "corlab: warning: velocity %g m/s is beyond %g m/s, outside every model "
-                 "(hypervelocity impact: no equation of state, no quasi-static contact)\n",
-                 v_max, kMaxModelVelocity);
-  }
-  const double k2_value = k2(sy, e_star);
+                           const Material& sphere,
+                           const Material& substrate) {
   for (const auto& m : models) {
-    const auto& box = m.info().calibrated;
-    if (!box) continue;
-    std::size_t outside = 0;
-    for (double v : velocities) {
-      const double k1_value = k1(e_star, rho, v);
-      if (k1_value < box->k1_min || k1_value > box->k1_max) ++outside;
-    }
-    const bool k2_out = k2_value < box->k2_min || k2_value > box->k2_max;
-    if (outside == 0 && !k2_out) continue;
-    std::fprintf(stderr,
-                 "corlab: warning: model '%s' extrapolates: %zu of %zu velocities give k1 = "
-                 "E*/(rho v^2) outside its calibration [%.3g, %.3g], k2 = sigma_y/E* = %.3g %s "
-                 "[%.3g, %.3g] (%s)\n",
-                 m.info().name.c_str(), outside, velocities.size(), box->k1_min, box->k1_max,
-                 k2_value, k2_out ? "outside" : "inside", box->k2_min, box->k2_max,
-                 m.info().validity.c_str());
+    for (const auto& w : restitution::validity_warnings(m.info(), velocities, sphere, substrate))
+      std::fprintf(stderr, "corlab: warning: %s\n", w.c_str());
   }
 }
 
@@ -140,7 +114,7 @@ int run_predict(const PredictOptions& o) {
   }
   const double e_star = effective_modulus(sphere, substrate);
   const double sy = *substrate.yield_stress;
-  warn_outside_validity(models, velocities, e_star, sphere.density, sy);
+  warn_outside_validity(models, velocities, sphere, substrate);
   std::vector<double> e(velocities.size());
   if (o.format == "json") {
     nlohmann::json out;

@@ -2,12 +2,14 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <span>
 #include <string>
 #include <variant>
 
 #include "bindings.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/registry.hpp"
+#include "corlab/restitution/validity.hpp"
 
 namespace py = pybind11;
 
@@ -28,6 +30,18 @@ void warn_if_unverified(const restitution::Model& bound) {
   if (info.status != restitution::Status::kUnverified) return;
   const std::string message = "corlab model '" + info.name + "' is UNVERIFIED: " + info.status_note;
   if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+// UserWarnings for velocities outside the model's validity (validity.hpp).
+void warn_if_outside(const restitution::Model& bound,
+                     const MaterialArg& sphere,
+                     const MaterialArg& substrate,
+                     std::span<const double> velocities) {
+  for (const auto& w :
+       restitution::validity_warnings(bound.info(), velocities, to_material(sphere, "sphere"),
+                                      to_material(substrate, "substrate"))) {
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  }
 }
 
 restitution::Model bind_model(const std::string& model,
@@ -74,8 +88,12 @@ void bind_models(py::module_& m) {
   m.def(
       "predict",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
-         double v, std::optional<bool> clamp,
-         double radius) { return bind_model(model, sphere, substrate, clamp, radius).cor(v); },
+         double v, std::optional<bool> clamp, double radius) {
+        const auto bound = bind_model(model, sphere, substrate, clamp, radius);
+        const double e = bound.cor(v);
+        warn_if_outside(bound, sphere, substrate, std::span<const double>(&v, 1));
+        return e;
+      },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
       py::arg("clamp") = py::none(), py::arg("radius") = 1.0,
       "CoR e [-] of `model` for a sphere hitting a substrate at speed v [m/s]. sphere and "
@@ -96,6 +114,7 @@ void bind_models(py::module_& m) {
           py::gil_scoped_release release;
           bound.cor(in, res);
         }
+        warn_if_outside(bound, sphere, substrate, in);
         return out;
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),

@@ -1,5 +1,6 @@
 """Issue 12 reproducers through the Python module: bad input is a one-line ValueError naming the
 field (never a crash of the interpreter, a hang or a NaN)."""
+import numpy as np
 import pytest
 
 import corlab
@@ -50,3 +51,17 @@ def test_good_groups_unchanged():
 def test_list_is_accepted_for_a_list_key():
     with pytest.raises(ValueError, match=r"^invalid output\.times = -1"):
         corlab.simulate({"output.times": [1e-5, -1.0]})
+
+
+def test_predict_outside_the_calibration_warns():
+    with pytest.warns(UserWarning, match=r"beyond 1000 m/s, outside every model"):
+        corlab.predict("ma2023", "steel_ma2023", "steel_ma2023", 1e6)
+    with pytest.warns(UserWarning, match=r"model 'ma2023' extrapolates: 1 of 2 velocities"):
+        corlab.predict("ma2023", "steel_ma2023", "steel_ma2023", np.array([5.0, 500.0]))
+
+
+def test_predict_inside_the_calibration_is_silent():
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert 0.0 < corlab.predict("ma2023", "steel_ma2023", "steel_ma2023", 5.0) < 1.0

@@ -383,8 +383,9 @@ std::string config_keys_help() {
   std::string out = "Config keys (--set key=value, TOML [table] key = value; SI units):\n";
   for (const auto& e : key_table()) {
     const std::string range = e.info.range ? e.info.range->text(e.info.unit) : std::string("text");
+    const std::string value = config_value_text(defaults, e.info.key);
     out += fmt::format("  {:<32} {} (default {})\n      {}\n", e.info.key, e.info.doc,
-                       config_value_text(defaults, e.info.key), range);
+                       value.empty() ? "none" : value, range);
   }
   return out;
 }

@@ -75,7 +75,7 @@ if grep -q $'\r' "$work/ok.err"; then fail "carriage return in progress written 
 # predict outside a model's calibration: a warning on stderr, the numbers on stdout, exit 0.
 "$corlab" predict --model ma2023 --sphere steel_ma2023 --substrate steel_ma2023 --velocity 1e6 \
   > "$work/p.out" 2> "$work/p.err" || fail "predict failed"
-grep -q "warning: velocity 1e+06 m/s is beyond 1000 m/s" "$work/p.err" || fail "no speed warning"
+grep -q "warning: model 'ma2023': velocity 1e+06 m/s is beyond 1000 m/s" "$work/p.err" || fail "no speed warning"
 grep -q "warning: model 'ma2023' extrapolates" "$work/p.err" || fail "no calibration warning"
 "$corlab" predict --model ma2023 --sphere steel_ma2023 --substrate steel_ma2023 --velocity 5 \
   > "$work/p.out" 2> "$work/p.err" || fail "predict failed"

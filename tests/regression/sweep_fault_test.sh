@@ -11,8 +11,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 
+t0=$(date +%s%N)
 "$corlab" sweep "$spec" --out "$work/ref" --jobs 2 --quiet 2> "$work/ref.err" ||
   fail "reference sweep: $(cat "$work/ref.err")"
+ref_ms=$((($(date +%s%N) - t0) / 1000000))  # kill times are fractions of this (load-independent)
 total=$(($(wc -l < "$work/ref/results.csv") - 1))
 [ "$total" -ge 6 ] || fail "reference has $total rows"
 
@@ -29,31 +31,43 @@ assert all(len(r) == len(rows[0]) for r in rows), "field counts differ"
 PY
 }
 
-# interrupt SIGNAL EXPECTED_RC DIR: start, wait a random 0.05-0.6 s, send SIGNAL; repeat until a
-# run finishes on its own (at most 25 tries), then resume once more and compare with the reference.
+# interrupt SIGNAL EXPECTED_RC DIR: start, wait a random 5-60 % of the reference run's time, send
+# SIGNAL; repeat until a run finishes on its own (at most 25 tries), then finish, and compare with
+# the reference.
 interrupt() {
-  local sig=$1 expected=$2 dir=$3 kills=0 rc=0 tries
+  local sig=$1 expected=$2 dir=$3 kills=0 rc=0 tries rows=0
   for tries in $(seq 1 25); do
     "$corlab" sweep "$spec" --out "$dir" --jobs 2 --quiet 2>> "$dir.err" &
     local pid=$!
-    sleep "$(printf '0.%02d' $((5 + RANDOM % 55)))"
+    local ms=$((ref_ms * (5 + RANDOM % 56) / 100))
+    sleep "$(printf '%d.%03d' $((ms / 1000)) $((ms % 1000)))"
     kill "-$sig" "$pid" 2> /dev/null && kills=$((kills + 1))
     wait "$pid"
     rc=$?
     [ $rc -eq 0 ] && break
     [ $rc -eq "$expected" ] || fail "$sig: exit $rc, expected $expected or 0: $(tail -2 "$dir.err")"
-    [ -f "$dir/results.csv" ] && every_line_whole "$dir/results.csv"
+    [ -f "$dir/results.csv" ] && every_line_whole "$dir/results.csv" &&
+      rows=$(($(wc -l < "$dir/results.csv") - 1))
   done
+  [ "$rows" -ge 1 ] || fail "$sig: no interrupted run had finished a row (kills too early)"
+  # Finish without interruption (whatever the kills left), then a rerun must find nothing to do.
   "$corlab" sweep "$spec" --out "$dir" --jobs 2 --quiet 2>> "$dir.err" ||
     fail "$sig: final resume failed: $(tail -2 "$dir.err")"
-  grep -q "0 ran (0 failed, 0 not separated), $total already done" "$dir.err" ||
-    fail "$sig: the final resume had work left"
+  "$corlab" sweep "$spec" --out "$dir" --jobs 2 --quiet 2> "$dir.last" ||
+    fail "$sig: rerun failed: $(cat "$dir.last")"
+  grep -q "0 ran (0 failed, 0 not separated), $total already done" "$dir.last" ||
+    fail "$sig: a rerun after completion had work left: $(cat "$dir.last")"
   python3 "$here/sweep_compare.py" "$dir/results.csv" "$work/ref/results.csv" "$total" ||
     fail "$sig: $kills interruptions + resume differ from an uninterrupted run"
-  echo "$sig: $kills interruptions in $tries starts, results identical to the uninterrupted run"
+  echo "$sig: $kills interruptions in $tries starts ($rows rows kept before the last resume), results" \
+    "identical to the uninterrupted run (reference ${ref_ms} ms)"
 }
+# Job control on: without it bash starts background jobs with SIGINT ignored, and a Ctrl-C that
+# lands before corlab installs its handler would be lost (a terminal's Ctrl-C is not).
+set -m
 interrupt KILL 137 "$work/kill"
 interrupt INT 130 "$work/int"
+set +m
 
 # Two sweeps on one directory: the second is refused while the first runs.
 rm -rf "$work/busy"

@@ -1,0 +1,42 @@
+// Validity warnings of the CoR models (validity.hpp).
+#include "corlab/restitution/validity.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace corlab::restitution {
+
+std::vector<std::string> validity_warnings(const ModelInfo& info,
+                                           std::span<const double> velocities,
+                                           const Material& sphere,
+                                           const Material& substrate) {
+  std::vector<std::string> out;
+  if (velocities.empty()) return out;
+  const double v_max = *std::max_element(velocities.begin(), velocities.end());
+  if (v_max > kMaxModelVelocity) {
+    out.push_back(fmt::format(
+        "model '{}': velocity {:g} m/s is beyond {:g} m/s, outside every model (hypervelocity "
+        "impact: no equation of state, no quasi-static contact)",
+        info.name, v_max, kMaxModelVelocity));
+  }
+  if (!info.calibrated || !substrate.yield_stress) return out;
+  const DimensionlessBox& box = *info.calibrated;
+  const double e_star = effective_modulus(sphere, substrate);
+  std::size_t outside = 0;
+  for (const double v : velocities) {
+    const double k1_value = k1(e_star, sphere.density, v);
+    if (k1_value < box.k1_min || k1_value > box.k1_max) ++outside;
+  }
+  const double k2_value = k2(*substrate.yield_stress, e_star);
+  const bool k2_outside = k2_value < box.k2_min || k2_value > box.k2_max;
+  if (outside == 0 && !k2_outside) return out;
+  out.push_back(
+      fmt::format("model '{}' extrapolates: {} of {} velocities give k1 = E*/(rho v^2) outside its "
+                  "calibration [{:.3g}, {:.3g}], k2 = sigma_y/E* = {:.3g} {} [{:.3g}, {:.3g}] ({})",
+                  info.name, outside, velocities.size(), box.k1_min, box.k1_max, k2_value,
+                  k2_outside ? "outside" : "inside", box.k2_min, box.k2_max, info.validity));
+  return out;
+}
+
+}  // namespace corlab::restitution

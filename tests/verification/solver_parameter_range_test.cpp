@@ -1,0 +1,66 @@
+// The accepted ranges of the solver parameters (config_keys.cpp) are ranges where the paper case
+// still verifies: at each end of each range, e stays within 1 % of the default run's, the energy
+// balance within 1e-4, the hourglass energy below 0.1 % of the initial energy (the README's
+// criterion) and the contact penetration below 2 % of the indentation. The ends are read from the
+// key table, so widening a range makes this test check the new end.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "corlab/fem/config_keys.hpp"
+#include "corlab/fem/simulate.hpp"
+
+namespace corlab::fem {
+namespace {
+
+const ImpactResult& default_run() {
+  static const ImpactResult r = simulate(ImpactConfig{});
+  return r;
+}
+
+struct RangeEnd {
+  std::string key;
+  bool upper = false;
+};
+
+class SolverParameterRange : public ::testing::TestWithParam<RangeEnd> {};
+
+TEST_P(SolverParameterRange, PaperCaseStillVerifies) {
+  const RangeEnd& end = GetParam();
+  const ConfigKeyInfo* info = find_config_key(end.key);
+  ASSERT_NE(info, nullptr);
+  ASSERT_TRUE(info->range.has_value());
+  const double value = end.upper ? info->range->hi : info->range->lo;
+  ImpactConfig config;
+  set_config_key(config, end.key, std::to_string(value));
+  if (end.key == "solver.penalty_scale" && end.upper) {
+    set_config_key(config, "solver.safety_factor", "0.8");  // <= 1/sqrt(1.5), the joint limit
+  }
+  ASSERT_NO_THROW(validate(config)) << end.key << " = " << value;
+  const ImpactResult r = simulate(config);
+  const ImpactResult& ref = default_run();
+  EXPECT_TRUE(r.separated);
+  EXPECT_NEAR(r.e, ref.e, 0.01 * ref.e) << end.key << " = " << value;
+  EXPECT_LT(r.energy_balance_error, 1e-4);
+  EXPECT_LT(r.energy_hourglass, 1e-3 * r.energy_initial);
+  EXPECT_LT(r.penetration_max, 0.02 * r.indentation_max);
+}
+
+INSTANTIATE_TEST_SUITE_P(RangeEnds,
+                         SolverParameterRange,
+                         ::testing::Values(RangeEnd{"solver.hourglass", true},
+                                           RangeEnd{"solver.hourglass", false},
+                                           RangeEnd{"solver.bulk_viscosity_linear", true},
+                                           RangeEnd{"solver.bulk_viscosity_linear", false},
+                                           RangeEnd{"solver.bulk_viscosity_quadratic", true},
+                                           RangeEnd{"solver.penalty_scale", true},
+                                           RangeEnd{"solver.penalty_scale", false}),
+                         [](const auto& param_info) {
+                           std::string name = param_info.param.key.substr(7) +
+                                              (param_info.param.upper ? "_max" : "_min");
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace corlab::fem
