@@ -53,8 +53,8 @@ void check_same_study(const SweepSpec& spec, const std::filesystem::path& out_di
   // change.
   if (sorted(previous.base) != sorted(spec.base)) {
     std::vector<std::string> was, now;
-    for (const auto& [k, v] : sorted(previous.base)) was.push_back(k + "=" + v);
-    for (const auto& [k, v] : sorted(spec.base)) now.push_back(k + "=" + v);
+    for (const auto& [k, v] : sorted(previous.base)) was.push_back(fmt::format("{}={}", k, v));
+    for (const auto& [k, v] : sorted(spec.base)) now.push_back(fmt::format("{}={}", k, v));
     throw InputError(fmt::format(
         "{}: holds study '{}' with another [base] ({} there, {} here; its rows would mix with "
         "these in results.csv); use another --out",
