@@ -17,6 +17,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/fem/discretisation_error.hpp"
 #include "corlab/fem/impact_output.hpp"
+#include "corlab/fem/run_cost.hpp"
 #include "corlab/fem/simulate.hpp"
 #include "corlab/fem/vtu_writer.hpp"
 #include "corlab/materials/material.hpp"
@@ -213,6 +214,32 @@ json run_sweep_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
           {"wall_s", s.wall_s}, {"workers", s.workers}, {"interrupted", s.interrupted}};
 }
 
+/// The onset cases, most expensive first: each costs about three loading-half runs near its
+/// Hertz onset velocity, and a low yield stress (a tiny, finely meshed, slow contact) costs up to
+/// ten times more than a high one; started last on two workers, it would run alone at the end.
+std::vector<std::size_t> onset_cases_longest_first(const std::vector<SweepCase>& cases) {
+  std::vector<double> cost(cases.size(), 0.0);
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    try {
+      fem::ImpactConfig probe = cases[i].config;
+      const auto& substrate = probe.substrate.material;
+      if (substrate.yield_stress) {
+        probe.impact.velocity = hertz_yield_onset_velocity(
+            probe.sphere.material.density, effective_modulus(probe.sphere.material, substrate),
+            *substrate.yield_stress);
+      }
+      cost[i] = fem::estimate_run_cost(probe).element_steps();
+    } catch (const std::exception&) {
+      cost[i] = 0.0;  // an invalid case fails at once when it runs: last
+    }
+  }
+  std::vector<std::size_t> order(cases.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&cost](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+  return order;
+}
+
 /// Yield onset per case by elastic scaling + a confirming bracket (find_yield_onset_scaled);
 /// every probe goes to probes.csv (resume).
 json run_onset_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
@@ -234,8 +261,9 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
   std::mutex mutex;
   std::atomic<int> ran{0};
   std::atomic<int> failed{0};
+  const std::vector<std::size_t> order = onset_cases_longest_first(cases);
   parallel_for(static_cast<int>(cases.size()), worker_count(opt.jobs), [&](int i) {
-    const auto& c = cases[static_cast<std::size_t>(i)];
+    const auto& c = cases[order[static_cast<std::size_t>(i)]];
     if (opt.cancel && opt.cancel->load()) return;
     try {
       KindProbeCache lookup = [&](bool elastic, double v) -> std::optional<OnsetProbe> {
