@@ -10,6 +10,7 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
 #include "corlab/dem/dem_export.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/study/results_table.hpp"
@@ -36,11 +37,7 @@ dem::ParticleType parse_type(const std::string& spec) {
   if (colon == std::string::npos) throw_invalid("type", spec, "MATERIAL:RADIUS (radius in m)");
   dem::ParticleType t;
   t.material = parse_material_spec(spec.substr(0, colon), "type");
-  try {
-    t.radius = std::stod(spec.substr(colon + 1));
-  } catch (const std::exception&) {
-    throw_invalid("type radius", spec.substr(colon + 1), "a number [m]");
-  }
+  t.radius = parse_finite("type radius", std::string_view(spec).substr(colon + 1));
   require_positive("type radius", t.radius, "[m]");
   return t;
 }

@@ -4,7 +4,8 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <charconv>
+#include <limits>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -15,12 +16,15 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/registry.hpp"
 #include "corlab/restitution/validity.hpp"
 
 namespace corlab::cli {
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct PredictOptions {
   std::string model;
@@ -36,12 +40,6 @@ struct PredictOptions {
 constexpr const char* kRangeSyntax =
     "V or START:STOP:N with 0 < START <= STOP and an integer N >= 1 [m/s]";
 
-bool parse_double(std::string_view text, double& out) {
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, out);
-  return ec == std::errc() && ptr == end && !text.empty();
-}
-
 // "V" or "START:STOP:N" -> velocities (lin or log spacing); one-line InputError otherwise.
 std::vector<double> parse_velocities(const std::string& text, const std::string& spacing) {
   std::vector<std::string_view> parts;
@@ -53,16 +51,16 @@ std::vector<double> parse_velocities(const std::string& text, const std::string&
     rest.remove_prefix(colon + 1);
   }
   if (parts.size() == 1) {
-    double v = 0.0;
-    if (!parse_double(parts[0], v)) throw_invalid("velocity", text, kRangeSyntax);
-    restitution::require_velocity(v);
-    return {v};
+    const std::optional<double> v = parse_double(parts[0]);
+    if (!v) throw_invalid("velocity", text, kRangeSyntax);
+    restitution::require_velocity(*v);
+    return {*v};
   }
-  double start = 0.0;
-  double stop = 0.0;
-  double count = 0.0;
-  if (parts.size() != 3 || !parse_double(parts[0], start) || !parse_double(parts[1], stop) ||
-      !parse_double(parts[2], count) || !(std::isfinite(start) && std::isfinite(stop)) ||
+  if (parts.size() != 3) throw_invalid("velocity", text, kRangeSyntax);
+  const double start = parse_double(parts[0]).value_or(kNaN);
+  const double stop = parse_double(parts[1]).value_or(kNaN);
+  const double count = parse_double(parts[2]).value_or(kNaN);
+  if (!(std::isfinite(start) && std::isfinite(stop)) ||
       !(start > 0.0) || !(stop >= start) || !(count >= 1.0) || count != std::floor(count) ||
       count > 1e8) {
     throw_invalid("velocity", text, kRangeSyntax);

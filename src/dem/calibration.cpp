@@ -123,16 +123,20 @@ CurveFit fit_viscoelastic_damping(double stiffness,
                            std::log(10.0 * c_unit));
 }
 
-CurveFit fit_thornton_pressure(double effective_modulus,
-                               double effective_radius,
-                               double effective_mass,
-                               std::span<const double> velocities,
-                               const RestitutionCurve& target) {
+namespace {
+
+/// The yield pressure p_y [Pa] of a Thornton-Ning-type `Law` whose e(v) follows `target`.
+template <typename Law>
+CurveFit fit_yield_pressure(double effective_modulus,
+                            double effective_radius,
+                            double effective_mass,
+                            std::span<const double> velocities,
+                            const RestitutionCurve& target) {
   require_positive("effective_modulus", effective_modulus, "[Pa]");
   require_positive("effective_radius", effective_radius, "[m]");
   require_positive("effective_mass", effective_mass, "[kg]");
   const auto law_e = [&](double p_y, double v) {
-    const ThorntonNingLaw law{{effective_modulus, effective_radius, p_y}};
+    const Law law{{effective_modulus, effective_radius, p_y}};
     const ForceLaw force = [&law](double d, double, const ContactHistory& h) {
       return law.force(d, h);
     };
@@ -142,23 +146,24 @@ CurveFit fit_thornton_pressure(double effective_modulus,
                            std::log(0.5 * effective_modulus));
 }
 
+}  // namespace
+
+CurveFit fit_thornton_pressure(double effective_modulus,
+                               double effective_radius,
+                               double effective_mass,
+                               std::span<const double> velocities,
+                               const RestitutionCurve& target) {
+  return fit_yield_pressure<ThorntonNingLaw>(effective_modulus, effective_radius, effective_mass,
+                                             velocities, target);
+}
+
 CurveFit fit_liggghts_thornton_pressure(double effective_modulus,
                                         double effective_radius,
                                         double effective_mass,
                                         std::span<const double> velocities,
                                         const RestitutionCurve& target) {
-  require_positive("effective_modulus", effective_modulus, "[Pa]");
-  require_positive("effective_radius", effective_radius, "[m]");
-  require_positive("effective_mass", effective_mass, "[kg]");
-  const auto law_e = [&](double p_y, double v) {
-    const LiggghtsThorntonNingLaw law{{effective_modulus, effective_radius, p_y}};
-    const ForceLaw force = [&law](double d, double, const ContactHistory& h) {
-      return law.force(d, h);
-    };
-    return simulate_impact(force, effective_mass, v).restitution;
-  };
-  return fit_one_parameter(law_e, velocities, target, std::log(1e-5 * effective_modulus),
-                           std::log(0.5 * effective_modulus));
+  return fit_yield_pressure<LiggghtsThorntonNingLaw>(effective_modulus, effective_radius,
+                                                     effective_mass, velocities, target);
 }
 
 RestitutionCurve tabulated_curve(std::vector<double> v, std::vector<double> e) {

@@ -7,13 +7,14 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <type_traits>
 #include <variant>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
+#include "corlab/core/text.hpp"
 #include "corlab/materials/material_database.hpp"
 
 namespace corlab::fem {
@@ -199,30 +200,11 @@ const KeyEntry* find_entry(std::string_view key) {
   return it == t.end() ? nullptr : &*it;
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
-double parse_double(std::string_view key, std::string_view text) {
+long long parse_integer_value(std::string_view key, std::string_view text) {
   text = trim(text);
-  double value = 0.0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
-    throw_invalid(key, text, "a finite number");
-  }
-  return value;
-}
-
-long long parse_integer(std::string_view key, std::string_view text) {
-  text = trim(text);
-  long long value = 0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end) throw_invalid(key, text, "an integer");
-  return value;
+  const std::optional<long long> value = parse_integer(text);
+  if (!value) throw_invalid(key, text, "an integer");
+  return *value;
 }
 
 std::vector<double> parse_list(std::string_view key, std::string_view text) {
@@ -234,7 +216,7 @@ std::vector<double> parse_list(std::string_view key, std::string_view text) {
   if (text.empty()) return out;
   while (true) {
     const auto comma = text.find(',');
-    out.push_back(parse_double(key, text.substr(0, comma)));
+    out.push_back(parse_finite(key, text.substr(0, comma)));
     if (comma == std::string_view::npos) break;
     text.remove_prefix(comma + 1);
   }
@@ -247,7 +229,7 @@ std::optional<double> parse_yield(std::string_view key, std::string_view text) {
   const auto t = trim(text);
   if (t == "none") return std::nullopt;
   if (t.empty()) throw_invalid(key, t, "a finite number, or `none` for an elastic body");
-  return parse_double(key, t);
+  return parse_finite(key, t);
 }
 
 // Reads `text` into the value `e` gives access to.
@@ -258,11 +240,11 @@ void set_value(const KeyEntry& e, ImpactConfig& c, std::string_view text) {
         auto* target = get(c);
         using T = std::remove_pointer_t<decltype(target)>;
         if constexpr (std::is_same_v<T, double>) {
-          *target = parse_double(key, text);
+          *target = parse_finite(key, text);
         } else if constexpr (std::is_same_v<T, long long>) {
-          *target = parse_integer(key, text);
+          *target = parse_integer_value(key, text);
         } else if constexpr (std::is_same_v<T, int>) {
-          const long long v = parse_integer(key, text);
+          const long long v = parse_integer_value(key, text);
           if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max()) {
             throw_invalid(key, text, "an integer that fits 32 bits");
           }

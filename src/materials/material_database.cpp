@@ -4,32 +4,17 @@
 #include <fmt/ranges.h>
 #include <toml++/toml.h>
 
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <set>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
+#include "corlab/core/text.hpp"
 
 namespace corlab {
 
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
-double parse_number(std::string_view text, const std::string& field) {
-  double value = 0.0;
-  const auto* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
-    throw_invalid(field, text, "a finite number");
-  }
-  return value;
-}
 
 // Sets one field of `m` from key=value; returns false for an unknown key.
 bool set_field(Material& m, std::string_view key, double value) {
@@ -144,7 +129,7 @@ Material parse_material_spec(std::string_view spec,
         throw_invalid(f + "." + std::string(key), trim(token.substr(eq + 1)),
                       "given once (the key is set twice in the material spec)");
       }
-      const double value = parse_number(trim(token.substr(eq + 1)), f + "." + std::string(key));
+      const double value = parse_finite(f + "." + std::string(key), token.substr(eq + 1));
       if (!set_field(m, key, value)) {
         throw_invalid(f + " key", key, "one of E, nu, rho, sy, sigma_y, H");
       }

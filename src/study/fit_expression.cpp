@@ -12,9 +12,11 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
 #include "corlab/core/text.hpp"
 
 namespace corlab::study {
@@ -198,13 +200,11 @@ std::vector<ParameterStart> parse_parameter_starts(const std::vector<std::string
       ParameterStart p{trimmed(token.substr(0, eq)), 0.0};
       if (!is_identifier(p.name)) throw_invalid("parameter name", p.name, "an identifier");
       const std::string value = trimmed(token.substr(eq + 1));
-      try {
-        std::size_t used = 0;
-        p.start = std::stod(value, &used);
-        if (used != value.size()) throw std::invalid_argument("trailing");
-      } catch (const std::exception&) {
-        throw_invalid("parameter " + p.name, value, "a number (start value)");
+      const std::optional<double> start = parse_double(value);
+      if (!start || !std::isfinite(*start)) {
+        throw_invalid("parameter " + p.name, value, "a finite number (start value)");
       }
+      p.start = *start;
       for (const auto& q : out) {
         if (q.name == p.name) throw_invalid("parameter", p.name, "given once");
       }

@@ -14,7 +14,9 @@
 #include <set>
 #include <thread>
 
+#include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/thread_pool.hpp"
 #include "corlab/fem/discretisation_error.hpp"
 #include "corlab/fem/impact_output.hpp"
 #include "corlab/fem/run_cost.hpp"
@@ -96,34 +98,6 @@ std::vector<std::pair<std::string, OnsetProbe>> read_onset_probes(const fs::path
   return out;
 }
 
-void write_text_atomic(const fs::path& file, const std::string& text) {
-  const fs::path tmp = file.string() + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, file);
-}
-
-/// Runs `count` jobs on `workers` threads; job(i) must be thread-safe.
-void parallel_for(int count, int workers, const std::function<void(int)>& job) {
-  std::atomic<int> next{0};
-  std::vector<std::thread> threads;
-  const int n = std::max(1, std::min(workers, count));
-  for (int t = 0; t < n; ++t) {
-    threads.emplace_back([&] {
-      for (int i = next++; i < count; i = next++) job(i);
-    });
-  }
-  for (auto& th : threads) th.join();
-}
-
-int worker_count(int jobs) {
-  if (jobs > 0) return jobs;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
 std::string setting_value(const Settings& settings, const std::string& key) {
   std::string value;
   for (const auto& [k, v] : settings) {
@@ -138,7 +112,7 @@ std::string setting_value(const Settings& settings, const std::string& key) {
 json run_history_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
   const double t0 = now_s();
   fs::create_directories(dir / "runs");
-  write_text_atomic(dir / "spec.toml", spec.to_toml());
+  write_file_atomically(dir / "spec.toml", spec.to_toml());
   const auto cases = spec.expand();
   const auto keys = spec.swept_keys();
   {
@@ -150,7 +124,7 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
       for (const auto& k : keys) row.push_back(setting_value(c.settings, k));
       text += csv_line(row) + "\n";
     }
-    write_text_atomic(dir / "cases.csv", text);
+    write_file_atomically(dir / "cases.csv", text);
   }
   std::vector<int> todo;
   for (int i = 0; i < static_cast<int>(cases.size()); ++i) {
@@ -161,8 +135,8 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
   std::atomic<int> failed{0};
   std::atomic<int> ran{0};
   std::mutex log;
-  parallel_for(static_cast<int>(todo.size()), worker_count(opt.jobs), [&](int k) {
-    const auto& c = cases[static_cast<std::size_t>(todo[static_cast<std::size_t>(k)])];
+  parallel_for(todo.size(), worker_count(opt.jobs), [&](std::size_t k) {
+    const auto& c = cases[static_cast<std::size_t>(todo[k])];
     if (opt.cancel && opt.cancel->load()) return;
     const fs::path run_dir = dir / "runs" / c.id;
     try {
@@ -245,7 +219,7 @@ std::vector<std::size_t> onset_cases_longest_first(const std::vector<SweepCase>&
 json run_onset_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
   const double t0 = now_s();
   fs::create_directories(dir);
-  write_text_atomic(dir / "spec.toml", spec.to_toml());
+  write_file_atomically(dir / "spec.toml", spec.to_toml());
   const auto cases = spec.expand();
   const ScaledOnsetOptions options = onset_options(opt.preset);
   const fs::path probes_file = dir / "probes.csv";
@@ -262,8 +236,8 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
   std::atomic<int> ran{0};
   std::atomic<int> failed{0};
   const std::vector<std::size_t> order = onset_cases_longest_first(cases);
-  parallel_for(static_cast<int>(cases.size()), worker_count(opt.jobs), [&](int i) {
-    const auto& c = cases[order[static_cast<std::size_t>(i)]];
+  parallel_for(cases.size(), worker_count(opt.jobs), [&](std::size_t i) {
+    const auto& c = cases[order[i]];
     if (opt.cancel && opt.cancel->load()) return;
     try {
       KindProbeCache lookup = [&](bool elastic, double v) -> std::optional<OnsetProbe> {
@@ -704,7 +678,7 @@ json reproduce(const ReproduceOptions& opt) {
                   {"K", PaperConstants::kCombined},  {"sigma0", PaperConstants::kSigma0},
                   {"E0", PaperConstants::kE0},       {"energy_loss_5ms_J", 12.61},
                   {"hysteresis_area_5ms_J", 12.63},  {"hourglass_fraction", 0.000693}};
-  write_text_atomic(opt.out_dir / "fit.json", out.dump(1));
+  write_file_atomically(opt.out_dir / "fit.json", out.dump(1));
   return out;
 }
 

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -18,6 +17,7 @@
 
 #include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
 #include "corlab/fem/result_fields.hpp"
 #include "corlab/materials/material.hpp"
 
@@ -46,15 +46,6 @@ std::vector<std::string_view> complete_lines(std::string_view text, std::string_
   }
   partial = text.substr(start);
   return lines;
-}
-
-bool parse_double(std::string_view text, double& value) {
-  if (text.empty()) return false;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  if (*first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  return ec == std::errc() && ptr == last;
 }
 
 bool always_text(std::string_view column) {
@@ -381,8 +372,7 @@ bool ResultsTable::is_numeric(std::string_view name) const {
   bool any = false;
   for (const auto& cell : cells) {
     if (cell.empty()) continue;
-    double value = 0.0;
-    if (!parse_double(cell, value)) return false;
+    if (!parse_double(cell)) return false;
     any = true;
   }
   return any;
@@ -393,9 +383,11 @@ std::vector<double> ResultsTable::numbers(std::string_view name) const {
   std::vector<double> values(cells.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     if (cells[i].empty()) continue;
-    if (!parse_double(cells[i], values[i])) {
+    const std::optional<double> value = parse_double(cells[i]);
+    if (!value) {
       throw_invalid(fmt::format("results column {} row {}", name, i + 1), cells[i], "a number");
     }
+    values[i] = *value;
   }
   return values;
 }

@@ -6,13 +6,15 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <charconv>
+#include <limits>
+#include <optional>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <set>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
 #include "corlab/fem/run_cost.hpp"
 #include "sweep_internal.hpp"
 
@@ -22,10 +24,9 @@ namespace {
 int env_int(const char* name) {
   const char* text = std::getenv(name);
   if (text == nullptr) return -1;
-  int value = -1;
-  const std::string_view view(text);
-  const auto [ptr, ec] = std::from_chars(view.data(), view.data() + view.size(), value);
-  return ec == std::errc() && ptr == view.data() + view.size() ? value : -1;
+  const std::optional<long long> value = parse_integer(text);
+  return value && *value > 0 && *value <= std::numeric_limits<int>::max() ? static_cast<int>(*value)
+                                                                          : -1;
 }
 
 using Clock = std::chrono::steady_clock;
@@ -116,9 +117,12 @@ Outcome deserialize(std::string_view message) {
     field = message.substr(0, tab);
     message.remove_prefix(tab + 1);
   }
-  std::from_chars(fields[0].data(), fields[0].data() + fields[0].size(), outcome.index);
+  const std::optional<long long> index = parse_integer(fields[0]);
+  const std::optional<double> wall_s = parse_double(fields[2]);
+  if (!index || *index < 0 || !wall_s) throw std::runtime_error("malformed sweep message");
+  outcome.index = static_cast<std::size_t>(*index);
   outcome.status = std::string(fields[1]);
-  std::from_chars(fields[2].data(), fields[2].data() + fields[2].size(), outcome.wall_s);
+  outcome.wall_s = *wall_s;
   outcome.line = std::string(message);
   return outcome;
 }

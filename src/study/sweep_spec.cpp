@@ -4,7 +4,6 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <fstream>
 #include <map>
@@ -12,6 +11,7 @@
 #include <sstream>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
 
 namespace corlab::study {
 namespace {
@@ -25,18 +25,9 @@ std::string one_line(std::string text) {
   return text;
 }
 
-bool parses_as_number(std::string_view text) {
-  if (text.empty()) return false;
-  double value = 0.0;
-  const char* first = text.data();
-  if (*first == '+') ++first;
-  const auto [ptr, ec] = std::from_chars(first, text.data() + text.size(), value);
-  return ec == std::errc() && ptr == text.data() + text.size();
-}
-
 /// How a value appears in messages: numbers as they are, strings in quotes.
 std::string shown(std::string_view value) {
-  return parses_as_number(value) ? std::string(value) : fmt::format("'{}'", value);
+  return parse_double(value) ? std::string(value) : fmt::format("'{}'", value);
 }
 
 class SpecError {
@@ -344,7 +335,7 @@ std::vector<std::string> SweepSpec::swept_keys() const {
 std::string SweepSpec::to_toml() const {
   if (!toml_text.empty()) return toml_text;
   auto value = [](const std::string& v) {
-    if (parses_as_number(v)) return v;
+    if (parse_double(v)) return v;
     std::ostringstream quoted;
     quoted << toml::value<std::string>(v);
     return quoted.str();
