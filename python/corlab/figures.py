@@ -415,7 +415,8 @@ def fig9_rho_vy2(out_dir, fit):
             ax.plot([v / 1e6 for v in ss], [b_of[es] * (v / SIGMA0) ** n for v in ss], "-",
                     color=color, lw=1)
         ax.plot([v / 1e6 for v in ss],
-                [PAPER["c"] * (es * 1e9 / E0) ** PAPER["m"] * (v / SIGMA0) ** PAPER["n"] for v in ss],
+                [PAPER["c"] * (es * 1e9 / E0) ** PAPER["m"] * (v / SIGMA0) ** PAPER["n"]
+                 for v in ss],
                 ":", color=color, lw=1)
     ax.set_yscale("log")
     ax.set_xlabel("substrate yield stress sigma_y [MPa]")
@@ -523,8 +524,9 @@ def fig_onset(out_dir, fit):
     for i, o in enumerate(onset):
         probes = sorted((p for p in o["probes"] if p.get("kind", "probe") == "probe"),
                         key=lambda p: p["velocity"])
-        ax.plot([p["velocity"] for p in probes], [max(p["plastic_strain_max"], 1e-12) for p in probes],
-                "o-", color=f"C{i}", label=o["group"])
+        ax.plot([p["velocity"] for p in probes],
+                [max(p["plastic_strain_max"], 1e-12) for p in probes], "o-", color=f"C{i}",
+                label=o["group"])
         for key, style in (("v_hertz_onset", ":"), ("v_y_paper_eq18", "--"), ("v_scaled", "-.")):
             if o.get(key):
                 ax.axvline(o[key], color=f"C{i}", ls=style, lw=1)

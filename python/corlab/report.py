@@ -26,7 +26,8 @@ COARSE_OMITS = [
     "full preset: 11 velocities 0.1-70 m/s).",
     "Yield velocity: all 60 (rho, E*, sigma_y) cases, but only two velocities {2, 10} m/s per "
     "case (paper preset: {1, 3, 10, 30} m/s).",
-    "Yield onset: two cases (rho 7850, E* 63.8 GPa, sigma_y 300 and 600 MPa) (paper preset: 7 cases).",
+    "Yield onset: two cases (rho 7850, E* 63.8 GPa, sigma_y 300 and 600 MPa) "
+    "(paper preset: 7 cases).",
     "Table 3 pairs: velocities {0.5, 1, 2, 4, 6, 20} m/s (paper preset: 12 velocities 0.2-70 m/s).",
     "Table 4 cases: velocities {1, 2, 5, 10, 20} m/s (paper preset: 1-50 m/s).",
 ]
@@ -84,7 +85,6 @@ def coef_row(label, c, form):
 def coefficient_table(fits):
     law = fits.get("restitution_law", {})
     yv = fits.get("yield_velocity_fe", {})
-    eq12 = fits.get("yield_velocity_eq12", {})
     rows = []
     if "error" not in law:
         rows.append(coef_row("s (slope of ln k1)", law.get("slope"), "(i) Table 2, eq. 9"))
@@ -274,7 +274,8 @@ def versus(name, c, paper, digits=4):
         return f"{name}: no value"
     where = "inside" if lo <= paper <= hi else "outside"
     return (f"{name} = {fmt(v, digits)} [{fmt(lo, digits)}, {fmt(hi, digits)}] against the "
-            f"paper's {paper:g} ({pct(v / paper - 1, 1)}; the paper's value is {where} our 95 % CI)")
+            f"paper's {paper:g} ({pct(v / paper - 1, 1)}; "
+            f"the paper's value is {where} our 95 % CI)")
 
 
 def error_bar_item(fits):
@@ -363,7 +364,8 @@ def discussion(fit, out_dir):
     ye = fits.get("yield_velocity_eq12", {})
     if ye and "error" not in ye:
         items.append(
-            f"The same back-calculation from our refitted eq. 12 gives n = {fmt(ye['n']['value'], 4)},"
+            "The same back-calculation from our refitted eq. 12 gives "
+            f"n = {fmt(ye['n']['value'], 4)},"
             f" m = {fmt(ye['m']['value'], 4)}, K = {fmt(ye['K']['value'], 4)} (K with fixed "
             f"exponents {fmt(ye.get('K_fixed_exponents', {}).get('value'), 4)}); n = beta/s is "
             "sensitive to small changes of beta and s.")

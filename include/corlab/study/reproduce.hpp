@@ -9,7 +9,7 @@
 /// Layout of <out>:
 ///   verification_mesh/, verification_hertz/   runs/<case_id>/{history.csv,summary.json}, cases.csv
 ///   table2/, yield_velocity/, alumina/, table4/   results.csv + spec.toml (run_sweep)
-///   yield_onset/probes.csv                        every bisection run
+///   yield_onset/probes.csv                        every onset probe (elastic reference, bracket)
 ///   models/<study>.csv                            analytic model curves per case
 ///   fit.json                                      everything the report needs
 
