@@ -83,7 +83,7 @@ install: build
 # cases that take < 2 s in a release build. Any sanitizer report fails the test. fuzz_gmsh is left
 # out here (gmsh itself is not instrumented and its fork probe times out under ASan; the release
 # build runs it).
-ASAN_FAST_VERIFICATION := ^(Velocities/HertzElastic.MatchesHertz/2|PaperCase[.](SeparatesWithThePaperRestitution|EnergyBalanceHoldsThroughout|HourglassEnergyIsSmall|PenaltyPenetrationIsSmall))$$
+ASAN_FAST_VERIFICATION := ^(Velocities/HertzElastic.MatchesHertz/1|PaperCase[.](SeparatesWithThePaperRestitution|EnergyBalanceHoldsThroughout|HourglassEnergyIsSmall|PenaltyPenetrationIsSmall))$$
 test-asan: deps
 	cmake --preset asan
 	cmake --build build-asan -j $(JOBS)
@@ -91,7 +91,7 @@ test-asan: deps
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --output-on-failure -j $(JOBS) -L 'unit|fuzz' -E '^fuzz_gmsh$$' && \
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --output-on-failure -j $(JOBS) -R '$(ASAN_FAST_VERIFICATION)|^regression_input_cli$$'
+	  ctest --output-on-failure --no-tests=error -j $(JOBS) -R '$(ASAN_FAST_VERIFICATION)|^regression_input_cli$$'
 
 bench: build
 	for b in $(BUILD_DIR)/bin/*_benchmark; do $$b; done

@@ -31,6 +31,7 @@ struct FitArgs {
   double confidence = 0.95;
   double plastic_tolerance = 1e-3;
   bool json = false;
+  bool include_suspect = false;
 };
 
 std::string num(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "-"; }
@@ -56,12 +57,13 @@ int fit_paper(const FitArgs& args, const study::ResultsTable& table) {
   study::PaperFitOptions options;
   options.confidence = args.confidence;
   options.plastic_tolerance = args.plastic_tolerance;
+  options.include_suspect = args.include_suspect;
   if (args.json) {
     fmt::print("{}\n", study::fit_paper_forms(table, options).dump(2));
     return 0;
   }
   std::vector<study::ExcludedRow> excluded;
-  const auto samples = study::restitution_samples(table, &excluded);
+  const auto samples = study::restitution_samples(table, &excluded, args.include_suspect);
   const study::RestitutionLawFit law = study::fit_restitution_law(samples, options);
   excluded.insert(excluded.end(), law.excluded.begin(), law.excluded.end());
   fmt::print(
@@ -90,11 +92,12 @@ int fit_form(const FitArgs& args, const study::ResultsTable& table) {
   options.confidence = args.confidence;
   options.where = args.where;
   const auto params = study::parse_parameter_starts(args.params);
-  // only the rows that finished (when the table has a status column)
-  const study::ResultsTable rows = table.has_column("status") ? table.where("status", "ok") : table;
+  // only the rows that finished cleanly (status ok, not suspect unless --include-suspect)
+  const study::ResultsTable rows = study::usable_rows(table, args.include_suspect);
   const study::NonlinearFit fit =
       study::fit_expression(args.form, params, study::numeric_columns(rows), options);
-  const auto excluded = study::form_exclusions(table, study::split_formula(args.form).first);
+  const auto excluded =
+      study::form_exclusions(table, study::split_formula(args.form).first, args.include_suspect);
   const auto by_where = table.size() - excluded.size() - static_cast<std::size_t>(fit.observations);
   if (args.json) {
     nlohmann::json out = study::to_json(fit);
@@ -133,6 +136,8 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--plastic-tolerance", args->plastic_tolerance,
                      "paper forms: use points with e < 1 - tol");
       sub.add_flag("--json", args->json, "print JSON instead of a table");
+      sub.add_flag("--include-suspect", args->include_suspect,
+                   "also fit runs flagged suspect (left out by default, listed as excluded)");
       return [args] {
         const study::ResultsTable table = study::read_results(args->results);
         for (const auto& note : table.notes()) fmt::print(stderr, "corlab: warning: {}\n", note);

@@ -66,10 +66,12 @@ ci_upper, start), covariance, goodness, iterations, converged, message.)doc");
 
   m.def(
       "fit_paper",
-      [](const std::string& results_csv, double confidence, double plastic_tolerance) {
+      [](const std::string& results_csv, double confidence, double plastic_tolerance,
+         bool include_suspect) {
         study::PaperFitOptions options;
         options.confidence = confidence;
         options.plastic_tolerance = plastic_tolerance;
+        options.include_suspect = include_suspect;
         const study::ResultsTable table = study::read_results(results_csv);
         for (const auto& note : table.notes()) {
           py::module_::import("warnings").attr("warn")(note);
@@ -77,13 +79,15 @@ ci_upper, start), covariance, goodness, iterations, converged, message.)doc");
         return to_python(study::fit_paper_forms(table, options));
       },
       py::arg("results_csv"), py::arg("confidence") = 0.95, py::arg("plastic_tolerance") = 1e-3,
+      py::arg("include_suspect") = false,
       R"doc(The model forms of Ma et al. (2023) fitted to a sweep's results.csv.
 
 Returns {"restitution_law": forms (i) e = a_i + s ln k1 and (ii) a = alpha + beta ln k2,
  "yield_velocity": forms (iii) rho v_y^2 = b sigma_bar^n and (iv) b = c E_bar^m on the
  per-case e = 1 crossings, or None when the table has < 3 E* values or < 2 yield stresses}.
 Each coefficient has value, standard_error, ci_lower, ci_upper and the paper's value.
-"excluded" lists every row left out ({case_id, reason}); what the reader repaired (a cut
+"excluded" lists every row left out ({case_id, reason}): failed runs, and runs flagged suspect
+unless include_suspect=True; what the reader repaired (a cut
 last line, a repeated row) is also issued as a UserWarning.)doc");
 }
 

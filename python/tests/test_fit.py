@@ -91,13 +91,14 @@ def test_fit_expression_bad_form_is_a_value_error():
         corlab.fit_expression("y ~ a*z", {"a": 1.0}, {"x": [1.0, 2, 3], "y": [1.0, 2, 3]})
 
 
-def write_results(path, rows):
+def write_results(path, rows, extra=()):
     cols = ["case_id", "status", "e", "velocity", "sphere_rho", "E_star", "sigma_y", "k1", "k2"]
+    cols += list(extra)
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(cols)
         for r in rows:
-            w.writerow([r[c] for c in cols])
+            w.writerow([r.get(c, "") for c in cols])
 
 
 def paper_rows():
@@ -161,6 +162,34 @@ def test_fit_lists_every_excluded_row_with_its_reason(tmp_path):
                              capture_output=True, text=True, check=True).stdout
         assert f"excluded rows ({len(reasons)}):" in out
         assert "  bad_inf: e = inf\n" in out and "  bad_failed: status = failed\n" in out
+
+
+def test_fit_leaves_out_suspect_runs_unless_asked_and_says_which(tmp_path):
+    """issue 12 item 1: a run flagged suspect (quality guards) is not fitted by default."""
+    rows = paper_rows()
+    write_results(tmp_path / "clean.csv", rows, extra=["suspect"])
+    clean = corlab.fit_paper(str(tmp_path / "clean.csv"))["restitution_law"]
+    reason = "energy balance error 0.12 > 0.01"
+    rows.append(dict(rows[10], case_id="bad_suspect", e=0.1, suspect=reason))
+    write_results(tmp_path / "results.csv", rows, extra=["suspect"])
+    fit = corlab.fit_paper(str(tmp_path / "results.csv"))
+    reasons = {r["case_id"]: r["reason"] for r in fit["excluded"]}
+    assert reasons["bad_suspect"] == f"suspect ({reason})"
+    assert fit["restitution_law"]["points_used"] == clean["points_used"]
+    assert fit["restitution_law"]["slope"]["value"] == pytest.approx(0.056, abs=1e-10)
+    kept = corlab.fit_paper(str(tmp_path / "results.csv"), include_suspect=True)
+    assert "bad_suspect" not in {r["case_id"] for r in kept["excluded"]}
+    assert kept["restitution_law"]["points_used"] == clean["points_used"] + 1
+    if os.environ.get("CORLAB_BIN"):
+        cli = [os.environ["CORLAB_BIN"], "fit", str(tmp_path / "results.csv")]
+        out = subprocess.run(cli, capture_output=True, text=True, check=True).stdout
+        assert f"  bad_suspect: suspect ({reason})\n" in out
+        out = subprocess.run(cli + ["--include-suspect"], capture_output=True, text=True,
+                             check=True).stdout
+        assert "bad_suspect" not in out
+        form = ["--form", "e ~ a + s*ln(k1)", "--param", "a=1,s=0.05", "--json"]
+        out = subprocess.run(cli + form, capture_output=True, text=True, check=True).stdout
+        assert "bad_suspect" in out
 
 
 def test_fit_counts_a_repeated_row_once_and_says_so(tmp_path):

@@ -18,8 +18,17 @@ std::string row_name(const ResultsTable& table, std::size_t row) {
   return table.has_column("case_id") ? table.cell(row, "case_id") : fmt::format("row {}", row + 1);
 }
 
+std::string row_exclusion(const ResultsTable& table, std::size_t row, bool include_suspect) {
+  if (table.has_column("status") && table.cell(row, "status") != "ok")
+    return fmt::format("status = {}", table.cell(row, "status"));
+  if (!include_suspect && table.has_column("suspect") && !table.cell(row, "suspect").empty())
+    return fmt::format("suspect ({})", table.cell(row, "suspect"));
+  return {};
+}
+
 std::vector<RestitutionSample> restitution_samples(const ResultsTable& table,
-                                                   std::vector<ExcludedRow>* excluded) {
+                                                   std::vector<ExcludedRow>* excluded,
+                                                   bool include_suspect) {
   std::vector<RestitutionSample> out;
   if (table.size() == 0) return out;
   const auto e = table.numbers("e");
@@ -27,12 +36,9 @@ std::vector<RestitutionSample> restitution_samples(const ResultsTable& table,
   const auto rho = table.numbers("sphere_rho");
   const auto es = table.numbers("E_star");
   const auto sy = table.numbers("sigma_y");
-  const bool has_status = table.has_column("status");
   for (std::size_t i = 0; i < table.size(); ++i) {
-    std::string reason;
-    if (has_status && table.cell(i, "status") != "ok") {
-      reason = fmt::format("status = {}", table.cell(i, "status"));
-    } else if (!std::isfinite(sy[i]) || !(sy[i] > 0)) {
+    std::string reason = row_exclusion(table, i, include_suspect);
+    if (reason.empty() && (!std::isfinite(sy[i]) || !(sy[i] > 0))) {
       reason = fmt::format("sigma_y = {}: elastic substrate", sy[i]);
     }
     if (reason.empty()) {
@@ -51,18 +57,32 @@ nlohmann::json to_json(const std::vector<ExcludedRow>& rows) {
   return out;
 }
 
-std::vector<ExcludedRow> form_exclusions(const ResultsTable& table, const std::string& response) {
+std::vector<ExcludedRow> form_exclusions(const ResultsTable& table,
+                                         const std::string& response,
+                                         bool include_suspect) {
   std::vector<ExcludedRow> out;
-  const bool has_status = table.has_column("status");
   const auto y = table.is_numeric(response) ? table.numbers(response) : std::vector<double>{};
   for (std::size_t i = 0; i < table.size(); ++i) {
-    if (has_status && table.cell(i, "status") != "ok") {
-      out.push_back({row_name(table, i), fmt::format("status = {}", table.cell(i, "status"))});
+    std::string reason = row_exclusion(table, i, include_suspect);
+    if (!reason.empty()) {
+      out.push_back({row_name(table, i), std::move(reason)});
     } else if (!y.empty() && !std::isfinite(y[i])) {
       out.push_back({row_name(table, i), fmt::format("{} = {}", response, y[i])});
     }
   }
   return out;
+}
+
+ResultsTable usable_rows(const ResultsTable& table, bool include_suspect) {
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    if (!row_exclusion(table, i, include_suspect).empty()) continue;
+    std::vector<std::string> row;
+    row.reserve(table.columns().size());
+    for (const auto& name : table.columns()) row.push_back(table.cell(i, name));
+    rows.push_back(std::move(row));
+  }
+  return {table.columns(), std::move(rows)};
 }
 
 DataColumns numeric_columns(const ResultsTable& table) {
@@ -190,7 +210,7 @@ nlohmann::json to_json(const YieldVelocityFit& fit) {
 
 nlohmann::json fit_paper_forms(const ResultsTable& table, const PaperFitOptions& options) {
   std::vector<ExcludedRow> excluded;
-  const auto samples = restitution_samples(table, &excluded);
+  const auto samples = restitution_samples(table, &excluded, options.include_suspect);
   const RestitutionLawFit law = fit_restitution_law(samples, options);
   excluded.insert(excluded.end(), law.excluded.begin(), law.excluded.end());
   nlohmann::json out{{"restitution_law", to_json(law)},

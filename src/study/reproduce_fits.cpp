@@ -263,8 +263,9 @@ json model_curves(const std::map<std::string, fem::ImpactConfig>& groups, const 
     }
     if (ours.have_law) {
       const PaperInputs p(c);
-      std::vector<double> e;
-      for (const double x : velocity) e.push_back(ours.e(p, x));
+      std::vector<double> e(velocity.size());
+      std::transform(velocity.begin(), velocity.end(), e.begin(),
+                     [&](double x) { return ours.e(p, x); });
       models["ours"] = e;
     }
     by_group[group] = {{"sphere", c.sphere.material.name},

@@ -18,20 +18,30 @@ namespace corlab::study {
 /// Group label of a (rho, E*, sigma_y) triple, e.g. "rho7850_E115.4GPa_sy500MPa".
 std::string group_label(double sphere_rho, double E_star, double sigma_y);
 
-/// The rows with status "ok" as restitution samples (columns e, velocity, sphere_rho, E_star,
-/// sigma_y); case_id = group_label() so that one paper "case" collects all its velocities, row_id =
-/// the row's case_id. Rows that are not "ok" or have no yield stress (elastic substrate) are left
-/// out and, if `excluded` is given, appended to it with the reason. Throws InputError if a needed
-/// column is missing.
+/// Why a fit leaves out row `row`, or "" when the row is usable: its status is not "ok", or
+/// (unless `include_suspect`) its `suspect` column names a quality problem (run_quality.hpp).
+std::string row_exclusion(const ResultsTable& table, std::size_t row, bool include_suspect);
+
+/// The usable rows (row_exclusion() empty) as restitution samples (columns e, velocity,
+/// sphere_rho, E_star, sigma_y); case_id = group_label() so that one paper "case" collects all its
+/// velocities, row_id = the row's case_id. Rows that are not usable or have no yield stress
+/// (elastic substrate) are left out and, if `excluded` is given, appended to it with the reason.
+/// Throws InputError if a needed column is missing.
 std::vector<RestitutionSample> restitution_samples(const ResultsTable& table,
-                                                   std::vector<ExcludedRow>* excluded = nullptr);
+                                                   std::vector<ExcludedRow>* excluded = nullptr,
+                                                   bool include_suspect = false);
 
 /// The case_id of a row ("row N", 1-based, in a table without a case_id column).
 std::string row_name(const ResultsTable& table, std::size_t row);
 
-/// The rows a user form (`corlab fit --form`) leaves out before its --where filter: status not
-/// "ok", or a non-finite `response`; each with the reason.
-std::vector<ExcludedRow> form_exclusions(const ResultsTable& table, const std::string& response);
+/// The rows a user form (`corlab fit --form`) leaves out before its --where filter: not usable
+/// (row_exclusion()), or a non-finite `response`; each with the reason.
+std::vector<ExcludedRow> form_exclusions(const ResultsTable& table,
+                                         const std::string& response,
+                                         bool include_suspect = false);
+
+/// The usable rows of `table` (row_exclusion() empty), in their order.
+ResultsTable usable_rows(const ResultsTable& table, bool include_suspect = false);
 
 /// The numeric columns of a table (for fit_expression()); text columns are left out.
 DataColumns numeric_columns(const ResultsTable& table);

@@ -65,6 +65,7 @@ struct Coefficient {
 struct PaperFitOptions {
   double confidence = 0.95;                 ///< level of the confidence intervals [-]
   double plastic_tolerance = 1e-3;          ///< form (i) uses points with e < 1 - plastic_tolerance
+  bool include_suspect = false;             ///< also fit runs flagged suspect (run_quality.hpp)
   int min_points_per_case = 2;              ///< a case with fewer plastic points is left out of (i)
   double sigma0 = PaperConstants::kSigma0;  ///< [Pa]
   double E0 = PaperConstants::kE0;          ///< [Pa]
