@@ -36,6 +36,17 @@ def test_plastic_case_dissipates():
     assert r["hysteresis_area"] == pytest.approx(r["energy_sphere_loss"], rel=0.02)
 
 
+def test_run_cut_during_contact_has_a_status_and_no_restitution():
+    """issue 12: a run that did not end as a clean rebound never reports an e."""
+    # contact starts at gap / v = 2 us; the Hertz contact lasts ~12 us: t_max = 6 us cuts it
+    r = corlab.simulate({**SMALL, "impact.velocity": 5.0, "solver.t_max": 6e-6})
+    assert r["status"] == "not_separated"
+    assert r["separated"] is False
+    assert np.isnan(r["e"]) and np.isnan(r["e_energy"])  # null in summary.json
+    assert "t_max" in r["status_detail"]
+    assert r["suspect"] == ""
+
+
 def test_bad_settings_raise_value_error():
     with pytest.raises(ValueError, match="impact.velocity"):
         corlab.simulate({"impact.velocity": -1.0})

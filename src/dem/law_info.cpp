@@ -31,7 +31,7 @@ const std::vector<LawInfo>& law_catalog() {
       {"hu_guo", "Hu S., Guo X. (2015), Mech. Mach. Theory 85:14-31", "chi = 3(1 - e)/(2 e)",
        Status::kUnverified,
        "one source (issue 11 text); consistent with its stated delivered e = 0.271 at e = 0.3 "
-       "(tests/unit/dem/hysteresis_chi_test)"},
+       "(tests/unit/dem/dem_hysteresis_chi_test)"},
       {"carvalho_martins", "Carvalho A.S., Martins J.M. (2019), Mech. Mach. Theory 139:174-194",
        "chi = 3(1 - e)(11 - e)/(2(1 + 9 e))", Status::kUnverified,
        "one secondary source (Exudyn documentation, ObjectConnectorRollingDiscPenalty/contact); "
@@ -59,7 +59,8 @@ const std::vector<LawInfo>& law_catalog() {
        "Thornton C., Ning Z. (1998), Powder Technol. 99:154-162 without adhesion)",
        "Hertz to p_y, then F = F_y + pi p_y R (delta - delta_y); Hertz unloading with R_p",
        Status::kVerifiedSecondSource,
-       "e(v) by ODE equals corlab's thornton1997 closed form (tests/unit/dem/contact_ode_test)"},
+       "e(v) by ODE equals corlab's thornton1997 closed form "
+       "(tests/unit/dem/dem_contact_ode_test)"},
   };
   return catalog;
 }

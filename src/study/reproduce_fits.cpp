@@ -83,11 +83,12 @@ json discretisation_error_summary(const json& comparison) {
                   {"median", errs[errs.size() / 2].first},
                   {"max", worst},
                   {"max_relative", worst / (*run)["e_fe"].get<double>()},
-                  {"max_case", {{"study", (*run)["study"]},
-                                {"case_id", (*run)["case_id"]},
-                                {"group", (*run)["group"]},
-                                {"velocity", (*run)["velocity"]},
-                                {"e", (*run)["e_fe"]}}}};
+                  {"max_case",
+                   {{"study", (*run)["study"]},
+                    {"case_id", (*run)["case_id"]},
+                    {"group", (*run)["group"]},
+                    {"velocity", (*run)["velocity"]},
+                    {"e", (*run)["e_fe"]}}}};
   }
   return out;
 }
@@ -151,8 +152,7 @@ OurFits fit_paper_forms(const StudyFiles& files, json& fits) {
   OurFits ours;
   fits["restitution_law"] =
       restitution_fit_or_error(restitution_samples(files.table("table2")), &ours.law);
-  ours.have_law =
-      !fits["restitution_law"].contains("error") && std::isfinite(ours.law.alpha.value);
+  ours.have_law = !fits["restitution_law"].contains("error") && std::isfinite(ours.law.alpha.value);
 
   RestitutionLawFit per_case;
   fits["yield_velocity_cases"] =
@@ -170,9 +170,7 @@ OurFits fit_paper_forms(const StudyFiles& files, json& fits) {
 
 /// The paper's literal back-calculation: v_y from eq. 12 (the paper's constants, and ours) over
 /// the full (rho, E*, sigma_y) grid of the yield-velocity spec.
-void fit_back_calculated_yield_velocity(const StudyFiles& files,
-                                        const OurFits& ours,
-                                        json& fits) {
+void fit_back_calculated_yield_velocity(const StudyFiles& files, const OurFits& ours, json& fits) {
   std::set<std::tuple<double, double, double>> grid;
   if (auto spec = files.spec("yield_velocity")) {
     for (const auto& c : spec->expand()) {
@@ -324,8 +322,7 @@ json onset_case(const SweepCase& c,
   json probes = json::array();
   for (const auto& [id, probe] : all_probes) {
     if (id != c.id) continue;
-    const bool plastic =
-        !probe.elastic_reference && probe.plastic_strain_max > options.threshold;
+    const bool plastic = !probe.elastic_reference && probe.plastic_strain_max > options.threshold;
     if (probe.elastic_reference) {
       v_scaled = probe.velocity * std::pow(p.sigma_y / probe.von_mises_max, 2.5);
     } else if (plastic) {
@@ -350,9 +347,8 @@ json onset_case(const SweepCase& c,
           {"v_scaled", v_scaled},
           {"bracketed", bracketed},
           {"v_hertz_onset", hertz_yield_onset_velocity(p.rho, p.E_star, p.sigma_y)},
-          {"v_y_paper_eq18",
-           power_law_yield_velocity(PaperConstants::kCombined, 4.5, -3.5, p.rho, p.E_star,
-                                    p.sigma_y)},
+          {"v_y_paper_eq18", power_law_yield_velocity(PaperConstants::kCombined, 4.5, -3.5, p.rho,
+                                                      p.E_star, p.sigma_y)},
           {"v_y_ours", ours.v_y(p)},
           {"probes", probes}};
 }

@@ -72,6 +72,17 @@ refused "--velocity" predict --model ma2023 --sphere steel_ma2023 --substrate st
 grep -q "corlab simulate: 100.0 %" "$work/ok.err" || fail "no final progress line"
 if grep -q $'\r' "$work/ok.err"; then fail "carriage return in progress written to a file"; fi
 
+# A run cut by t_max during contact: exit 4, its status printed and in summary.json, no e.
+"$corlab" simulate --set sphere.radius=2.5e-3 --set substrate.radius=2.5e-3 \
+  --set substrate.depth=2.5e-3 --set mesh.h_min=0.125e-3 --set mesh.h_max=1e-3 \
+  --set mesh.contact_elements=0 --set solver.t_max=2.5e-5 --quiet --out "$work/cut" \
+  > "$work/cut.out" 2> "$work/cut.err"
+rc=$?
+[ $rc -eq 4 ] || fail "run cut by t_max -> exit $rc, expected 4: $(cat "$work/cut.err")"
+grep -q "^status = not_separated" "$work/cut.out" || fail "no status line: $(cat "$work/cut.out")"
+grep -q '"status": "not_separated"' "$work/cut/summary.json" || fail "summary.json has no status"
+grep -q '"e": null' "$work/cut/summary.json" || fail "summary.json reports an e for a cut run"
+
 # predict outside a model's calibration: a warning on stderr, the numbers on stdout, exit 0.
 "$corlab" predict --model ma2023 --sphere steel_ma2023 --substrate steel_ma2023 --velocity 1e6 \
   > "$work/p.out" 2> "$work/p.err" || fail "predict failed"
