@@ -10,7 +10,8 @@
 
 namespace corlab::fem {
 
-/// The config as JSON, keyed by the text keys of impact_config.hpp (SI units).
+/// The config as JSON (SI units): every key of config_keys() at its config_echo_path, e.g.
+/// {"impact": {"velocity": 5.0}, "sphere": {"material": {"name": ..., "E": ...}}}.
 nlohmann::json config_to_json(const ImpactConfig& config);
 
 /// The summary of a result (no history): every field of result_fields() written to the summary,
