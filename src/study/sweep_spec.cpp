@@ -12,6 +12,7 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
+#include "corlab/core/text.hpp"
 
 namespace corlab::study {
 namespace {
@@ -19,12 +20,6 @@ namespace {
 constexpr std::string_view kTopLevel = "[study], [base], [grid], [[cases]]";
 
 /// Removes line breaks so that every message stays on one line.
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  return text;
-}
-
 /// How a value appears in messages: numbers as they are, strings in quotes.
 std::string shown(std::string_view value) {
   return parse_double(value) ? std::string(value) : fmt::format("'{}'", value);
