@@ -6,13 +6,14 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <limits>
-#include <optional>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <limits>
+#include <optional>
 #include <set>
+#include <stdexcept>
 
+#include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/fem/run_cost.hpp"
@@ -194,15 +195,11 @@ void ensure_directory(const std::filesystem::path& out_dir) {
 void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan) {
   ensure_directory(out_dir);
   check_same_study(spec, out_dir);
-  {
-    const auto spec_copy = out_dir / "spec.toml";
-    const auto temp = out_dir / "spec.toml.tmp";
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << spec.to_toml();
-    out.close();
-    if (!out)
-      throw InputError(fmt::format("invalid --out = '{}': must be writable", out_dir.string()));
-    std::filesystem::rename(temp, spec_copy);
+  try {
+    write_file_atomically(out_dir / "spec.toml", spec.to_toml());
+  } catch (const std::runtime_error& err) {
+    throw InputError(
+        fmt::format("invalid --out = '{}': must be writable ({})", out_dir.string(), err.what()));
   }
   // Finished rows (the solver is deterministic: a run that ended without a clean rebound ends
   // the same way again); failed rows (exceptions) are retried.

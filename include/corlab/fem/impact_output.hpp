@@ -18,7 +18,8 @@ nlohmann::json config_to_json(const ImpactConfig& config);
 /// their units under "units" and the config under "config".
 nlohmann::json summary_to_json(const ImpactResult& result, const ImpactConfig& config);
 
-/// Writes summary_to_json to `file` (pretty-printed). Throws std::runtime_error on I/O failure.
+/// Writes summary_to_json to `file` (pretty-printed) with write_file_atomically, so a reader never
+/// sees a partial summary. Throws std::runtime_error on I/O failure.
 void write_summary_json(const ImpactResult& result,
                         const ImpactConfig& config,
                         const std::filesystem::path& file);
