@@ -58,7 +58,7 @@ bool mpi_available() {
 
 namespace detail {
 
-int default_jobs() { return std::max(1U, std::thread::hardware_concurrency()); }
+int default_jobs() { return static_cast<int>(std::max(1U, std::thread::hardware_concurrency())); }
 
 Outcome execute_case(const std::vector<SweepCase>& cases,
                      std::size_t index,
@@ -128,7 +128,7 @@ Outcome deserialize(std::string_view message) {
   return outcome;
 }
 
-WorkerPool::WorkerPool(int threads, Source next, Run run) {
+WorkerPool::WorkerPool(int threads, const Source& next, const Run& run) {
   running_ = threads;
   threads_.reserve(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t) {
