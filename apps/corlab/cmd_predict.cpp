@@ -4,12 +4,12 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <limits>
-#include <optional>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,9 +60,8 @@ std::vector<double> parse_velocities(const std::string& text, const std::string&
   const double start = parse_double(parts[0]).value_or(kNaN);
   const double stop = parse_double(parts[1]).value_or(kNaN);
   const double count = parse_double(parts[2]).value_or(kNaN);
-  if (!(std::isfinite(start) && std::isfinite(stop)) ||
-      !(start > 0.0) || !(stop >= start) || !(count >= 1.0) || count != std::floor(count) ||
-      count > 1e8) {
+  if (!(std::isfinite(start) && std::isfinite(stop)) || !(start > 0.0) || !(stop >= start) ||
+      !(count >= 1.0) || count != std::floor(count) || count > 1e8) {
     throw_invalid("velocity", text, kRangeSyntax);
   }
   const auto n = static_cast<std::size_t>(count);
@@ -102,6 +101,7 @@ int run_predict(const PredictOptions& o) {
   if (o.clamp == "off") options.clamp = false;
 
   std::vector<restitution::Model> models;
+  models.reserve(names.size());
   for (const auto& name : names)
     models.push_back(restitution::make_model(name, sphere, substrate, options));
   for (const auto& m : models) {

@@ -5,11 +5,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/text.hpp"
 #include "corlab/version.hpp"
 
 namespace corlab::cli {
@@ -17,10 +20,12 @@ std::vector<Command>& command_registry() {
   static std::vector<Command> registry;
   return registry;
 }
-}  // namespace corlab::cli
 
-int main(int argc, char** argv) {
-  using namespace corlab::cli;
+namespace {
+
+// Parses the command line and runs the chosen subcommand; its exit code. Bad input (ours or the
+// parser's) is one line on stderr and exit 2; any other std::exception escapes to main.
+int run(int argc, char** argv) {
   CLI::App app{"corlab: coefficient of restitution of elastic-plastic impacts (SI units)"};
   app.set_version_flag("--version", std::string(corlab::kVersion));
   app.require_subcommand(1);
@@ -44,9 +49,8 @@ int main(int argc, char** argv) {
     return app.exit(err);
   } catch (const CLI::ParseError& err) {
     // The parser's own errors follow the same rule as ours: one line on stderr, exit 2.
-    std::string message = err.what();
-    std::replace(message.begin(), message.end(), '\n', ' ');
-    std::fprintf(stderr, "corlab: error: %s (see corlab --help)\n", message.c_str());
+    std::fprintf(stderr, "corlab: error: %s (see corlab --help)\n",
+                 corlab::one_line(err.what()).c_str());
     return 2;
   } catch (const corlab::InputError& err) {
     std::fprintf(stderr, "corlab: error: %s\n", err.what());
@@ -57,8 +61,20 @@ int main(int argc, char** argv) {
   } catch (const corlab::InputError& err) {
     std::fprintf(stderr, "corlab: error: %s\n", err.what());
     return 2;
+  }
+}
+
+}  // namespace
+}  // namespace corlab::cli
+
+// Anything that is not bad input is an internal error: one line, exit 3 (never an abort).
+int main(int argc, char** argv) {
+  try {
+    return corlab::cli::run(argc, argv);
   } catch (const std::exception& err) {
     std::fprintf(stderr, "corlab: internal error: %s\n", err.what());
-    return 3;
+  } catch (...) {
+    std::fprintf(stderr, "corlab: internal error: unknown exception\n");
   }
+  return 3;
 }

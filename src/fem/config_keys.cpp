@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <type_traits>
 #include <variant>
 
@@ -45,8 +46,9 @@ KeyEntry entry(std::string_view key,
                std::string_view unit,
                std::optional<KeyRange> range,
                std::string_view doc,
-               Accessor access) {
-  return {{key, kKindOf[access.index()], unit, range, doc}, access};
+               Accessor access,
+               std::string_view echo_in = {}) {
+  return {{key, kKindOf[access.index()], unit, range, doc, echo_in}, access};
 }
 
 KeyRange closed(double lo, double hi, std::string_view why = {}) {
@@ -67,7 +69,7 @@ Material& body(ImpactConfig& c) {
 }
 
 // The six material keys of one body; `k` are their names in the order material, E, nu, rho,
-// sigma_y, hardening.
+// sigma_y, hardening. summary.json echoes the properties inside the material's object.
 template <bool kSphere>
 void add_material_keys(std::vector<KeyEntry>& t, const std::array<std::string_view, 6>& k) {
   t.push_back(entry(
@@ -76,20 +78,20 @@ void add_material_keys(std::vector<KeyEntry>& t, const std::array<std::string_vi
       +[](ImpactConfig& c) { return &body<kSphere>(c); }));
   t.push_back(entry(
       k[1], "[Pa]", closed(1e4, 1e13, "from gels to 10 x diamond"), "Young's modulus E",
-      +[](ImpactConfig& c) { return &body<kSphere>(c).youngs_modulus; }));
+      +[](ImpactConfig& c) { return &body<kSphere>(c).youngs_modulus; }, k[0]));
   t.push_back(entry(
       k[2], "[-]", open(-1.0, 0.5, "isotropic elasticity"), "Poisson's ratio nu",
-      +[](ImpactConfig& c) { return &body<kSphere>(c).poisson_ratio; }));
+      +[](ImpactConfig& c) { return &body<kSphere>(c).poisson_ratio; }, k[0]));
   t.push_back(entry(
       k[3], "[kg/m^3]", closed(1.0, 1e5, "from foams to 4 x osmium"), "density rho",
-      +[](ImpactConfig& c) { return &body<kSphere>(c).density; }));
+      +[](ImpactConfig& c) { return &body<kSphere>(c).density; }, k[0]));
   t.push_back(entry(
       k[4], "[Pa]", open(0.0, kInf),
       "yield stress, `none` = elastic (yield strain sigma_y/E in [1e-5, 0.1))",
-      +[](ImpactConfig& c) { return &body<kSphere>(c).yield_stress; }));
+      +[](ImpactConfig& c) { return &body<kSphere>(c).yield_stress; }, k[0]));
   t.push_back(entry(
       k[5], "[Pa]", closed(0.0, kInf), "linear isotropic hardening modulus H (< E)",
-      +[](ImpactConfig& c) { return &body<kSphere>(c).hardening_modulus; }));
+      +[](ImpactConfig& c) { return &body<kSphere>(c).hardening_modulus; }, k[0]));
 }
 
 void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
@@ -302,6 +304,34 @@ std::string text_of(const KeyEntry& e, ImpactConfig& c) {
       e.access);
 }
 
+nlohmann::json material_json(const Material& m) {
+  return {{"name", m.name},
+          {"E", m.youngs_modulus},
+          {"nu", m.poisson_ratio},
+          {"rho", m.density},
+          {"sigma_y", m.yield_stress ? nlohmann::json(*m.yield_stress) : nlohmann::json(nullptr)},
+          {"hardening", m.hardening_modulus},
+          {"source", m.source}};
+}
+
+nlohmann::json json_of(const KeyEntry& e, ImpactConfig& c) {
+  return std::visit(
+      [&](auto get) -> nlohmann::json {
+        const auto* v = get(c);
+        using T = std::remove_cv_t<std::remove_pointer_t<decltype(v)>>;
+        if constexpr (std::is_same_v<T, std::optional<double>>) {
+          return *v ? nlohmann::json(**v) : nlohmann::json(nullptr);
+        } else if constexpr (std::is_same_v<T, Material>) {
+          return material_json(*v);
+        } else if constexpr (std::is_same_v<T, std::filesystem::path>) {
+          return v->string();
+        } else {
+          return *v;
+        }
+      },
+      e.access);
+}
+
 }  // namespace
 
 bool KeyRange::contains(double value) const {
@@ -339,6 +369,25 @@ std::string config_value_text(const ImpactConfig& config, std::string_view key) 
   if (e == nullptr) return {};
   ImpactConfig copy = config;
   return text_of(*e, copy);
+}
+
+nlohmann::json config_value_json(const ImpactConfig& config, std::string_view key) {
+  const KeyEntry* e = find_entry(key);
+  if (e == nullptr) return nullptr;
+  ImpactConfig copy = config;
+  return json_of(*e, copy);
+}
+
+std::vector<std::string> config_echo_path(const ConfigKeyInfo& info) {
+  std::vector<std::string> path;
+  std::string_view rest = info.echo_in.empty() ? info.key : info.echo_in;
+  for (auto dot = rest.find('.'); dot != std::string_view::npos; dot = rest.find('.')) {
+    path.emplace_back(rest.substr(0, dot));
+    rest.remove_prefix(dot + 1);
+  }
+  path.emplace_back(rest);
+  if (!info.echo_in.empty()) path.emplace_back(info.key.substr(info.key.rfind('.') + 1));
+  return path;
 }
 
 void set_config_key(ImpactConfig& config, std::string_view key, std::string_view value) {

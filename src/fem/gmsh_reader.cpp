@@ -12,16 +12,22 @@
 #include <array>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstddef>
 #include <cstdlib>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <unordered_map>
 #include <vector>
+
+#include "corlab/core/number.hpp"
+#include "corlab/core/text.hpp"
 #endif
 
 namespace corlab::fem {
@@ -207,14 +213,7 @@ void add_body(Mesh& mesh,
       }
       quad[c] = it->second;
     }
-    const auto a = static_cast<std::size_t>(quad[0]);
-    const auto b = static_cast<std::size_t>(quad[1]);
-    const auto c = static_cast<std::size_t>(quad[2]);
-    const auto d = static_cast<std::size_t>(quad[3]);
-    const double area2 = (mesh.r[c] - mesh.r[a]) * (mesh.z[d] - mesh.z[b]) -
-                         (mesh.z[c] - mesh.z[a]) * (mesh.r[d] - mesh.r[b]);
-    if (area2 < 0.0) std::swap(quad[1], quad[3]);
-    mesh.quads.push_back(quad);
+    mesh.quads.push_back(counter_clockwise(mesh, quad));
     mesh.element_body.push_back(body);
   }
 }
@@ -258,21 +257,16 @@ namespace {
 
 Mesh read_opened_gmsh(const std::filesystem::path& file);
 
-// One line: gmsh's messages may hold line breaks.
-std::string one_line(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  return text;
-}
-
 // Longest time gmsh may take to open a file [s]; CORLAB_GMSH_TIMEOUT_S overrides it.
 double gmsh_open_timeout_s() {
-  if (const char* env = std::getenv("CORLAB_GMSH_TIMEOUT_S"); env != nullptr) {
-    const double value = std::atof(env);
-    if (value > 0.0) return value;
+  constexpr const char* kVariable = "CORLAB_GMSH_TIMEOUT_S";
+  const char* env = std::getenv(kVariable);
+  if (env == nullptr) return 60.0;
+  const std::optional<double> value = parse_double(trim(env));
+  if (!value || !std::isfinite(*value) || *value <= 0.0) {
+    throw_invalid(kVariable, env, "a time limit > 0 [s] (or unset for 60 s)");
   }
-  return 60.0;
+  return *value;
 }
 
 // Debian's gmsh 4.8 reader segfaults on some damaged .msh files (GModel::getMeshVertexByTag) and
@@ -280,6 +274,7 @@ double gmsh_open_timeout_s() {
 // Open the file in a forked child first: if the child dies or overruns the time limit, the file is
 // refused as an InputError instead of taking corlab down or hanging it.
 void check_gmsh_survives_opening(const std::filesystem::path& file) {
+  const double limit = gmsh_open_timeout_s();
   const pid_t pid = ::fork();
   if (pid < 0) return;  // cannot probe: read directly
   if (pid == 0) {
@@ -291,7 +286,6 @@ void check_gmsh_survives_opening(const std::filesystem::path& file) {
     }
     ::_exit(0);
   }
-  const double limit = gmsh_open_timeout_s();
   const auto start = std::chrono::steady_clock::now();
   int status = 0;
   while (true) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/text.hpp"
 #include "corlab/fem/config_keys.hpp"
 #include "corlab/fem/config_limits.hpp"
 
@@ -21,13 +22,6 @@ namespace {
 bool is_material_key(std::string_view key) {
   constexpr std::string_view suffix = ".material";
   return key.size() >= suffix.size() && key.substr(key.size() - suffix.size()) == suffix;
-}
-
-std::string one_line(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  return text;
 }
 
 // The text of one TOML value for `key`: scalars as they are, arrays only for list keys.
@@ -72,9 +66,7 @@ void apply_settings(ImpactConfig& config,
   for (const auto& item : key_value_items) {
     const auto eq = item.find('=');
     if (eq == std::string::npos) throw_invalid(origin, item, "key=value");
-    std::string key = item.substr(0, eq);
-    key.erase(0, key.find_first_not_of(" \t"));
-    key.erase(key.find_last_not_of(" \t") + 1);
+    std::string key(trim(std::string_view(item).substr(0, eq)));
     if (!seen.insert(key).second) {
       throw_invalid(fmt::format("{} {}", origin, key), item.substr(eq + 1),
                     "given once (the key is set twice)");

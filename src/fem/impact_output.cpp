@@ -9,23 +9,12 @@
 #include <variant>
 
 #include "corlab/core/atomic_file.hpp"
+#include "corlab/fem/config_keys.hpp"
 #include "corlab/fem/result_fields.hpp"
 
 namespace corlab::fem {
 
 namespace {
-
-nlohmann::json material_json(const Material& m) {
-  nlohmann::json j;
-  j["name"] = m.name;
-  j["E"] = m.youngs_modulus;
-  j["nu"] = m.poisson_ratio;
-  j["rho"] = m.density;
-  j["sigma_y"] = m.yield_stress ? nlohmann::json(*m.yield_stress) : nlohmann::json(nullptr);
-  j["hardening"] = m.hardening_modulus;
-  j["source"] = m.source;
-  return j;
-}
 
 std::ofstream open_for_writing(const std::filesystem::path& file) {
   std::ofstream out(file);
@@ -35,26 +24,13 @@ std::ofstream open_for_writing(const std::filesystem::path& file) {
 
 }  // namespace
 
-nlohmann::json config_to_json(const ImpactConfig& c) {
-  nlohmann::json j;
-  j["sphere"] = {{"radius", c.sphere.radius}, {"material", material_json(c.sphere.material)}};
-  j["substrate"] = {{"radius", c.substrate.radius},
-                    {"depth", c.substrate.depth},
-                    {"material", material_json(c.substrate.material)}};
-  j["impact"] = {{"velocity", c.impact.velocity}, {"gap", c.impact.gap}};
-  j["mesh"] = {{"h_min", c.mesh.h_min},
-               {"growth", c.mesh.growth},
-               {"h_max", c.mesh.h_max},
-               {"refine_factor", c.mesh.refine_factor},
-               {"contact_elements", c.mesh.contact_elements},
-               {"file", c.mesh.file.string()}};
-  j["solver"] = {{"safety_factor", c.solver.safety_factor},
-                 {"hourglass", c.solver.hourglass},
-                 {"bulk_viscosity_linear", c.solver.bulk_viscosity_linear},
-                 {"bulk_viscosity_quadratic", c.solver.bulk_viscosity_quadratic},
-                 {"penalty_scale", c.solver.penalty_scale},
-                 {"t_max", c.solver.t_max}};
-  j["output"] = {{"times", c.output.field_times}, {"history_every", c.output.history_every}};
+nlohmann::json config_to_json(const ImpactConfig& config) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const ConfigKeyInfo& key : config_keys()) {
+    nlohmann::json* node = &j;
+    for (const std::string& name : config_echo_path(key)) node = &(*node)[name];
+    *node = config_value_json(config, key.key);
+  }
   return j;
 }
 

@@ -359,17 +359,9 @@ class MeshBuilder {
     for (std::size_t k = 0; k < pts.size(); ++k) ids[k] = node(pts[k]);
     for (std::size_t i = 0; i < ni; ++i) {
       for (std::size_t j = 0; j < nj; ++j) {
-        std::array<int, 4> q{ids[i * (nj + 1) + j], ids[(i + 1) * (nj + 1) + j],
-                             ids[(i + 1) * (nj + 1) + j + 1], ids[i * (nj + 1) + j + 1]};
-        // counter-clockwise in (r, z): flip when the signed area is negative
-        const auto a = static_cast<std::size_t>(q[0]);
-        const auto c = static_cast<std::size_t>(q[2]);
-        const auto b = static_cast<std::size_t>(q[1]);
-        const auto d = static_cast<std::size_t>(q[3]);
-        const double area2 = (mesh_.r[c] - mesh_.r[a]) * (mesh_.z[d] - mesh_.z[b]) -
-                             (mesh_.z[c] - mesh_.z[a]) * (mesh_.r[d] - mesh_.r[b]);
-        if (area2 < 0.0) std::swap(q[1], q[3]);
-        mesh_.quads.push_back(q);
+        const std::array<int, 4> q{ids[i * (nj + 1) + j], ids[(i + 1) * (nj + 1) + j],
+                                   ids[(i + 1) * (nj + 1) + j + 1], ids[i * (nj + 1) + j + 1]};
+        mesh_.quads.push_back(counter_clockwise(mesh_, q));
         mesh_.element_body.push_back(body_);
       }
     }

@@ -152,9 +152,7 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
       }
       const fem::ImpactResult r = fem::simulate(c.config, control);
       fem::write_history_csv(r.history, run_dir / "history.csv");
-      const fs::path tmp = run_dir / "summary.json.tmp";
-      fem::write_summary_json(r, c.config, tmp);
-      fs::rename(tmp, run_dir / "summary.json");
+      fem::write_summary_json(r, c.config, run_dir / "summary.json");  // atomic: see its doc
       ++ran;
       if (opt.progress) {
         std::lock_guard lock(log);

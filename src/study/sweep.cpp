@@ -6,13 +6,14 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <limits>
-#include <optional>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
+#include <limits>
+#include <optional>
 #include <set>
+#include <stdexcept>
 
+#include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/fem/run_cost.hpp"
@@ -57,7 +58,7 @@ bool mpi_available() {
 
 namespace detail {
 
-int default_jobs() { return std::max(1U, std::thread::hardware_concurrency()); }
+int default_jobs() { return static_cast<int>(std::max(1U, std::thread::hardware_concurrency())); }
 
 Outcome execute_case(const std::vector<SweepCase>& cases,
                      std::size_t index,
@@ -127,7 +128,7 @@ Outcome deserialize(std::string_view message) {
   return outcome;
 }
 
-WorkerPool::WorkerPool(int threads, Source next, Run run) {
+WorkerPool::WorkerPool(int threads, const Source& next, const Run& run) {
   running_ = threads;
   threads_.reserve(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t) {
@@ -194,15 +195,11 @@ void ensure_directory(const std::filesystem::path& out_dir) {
 void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan) {
   ensure_directory(out_dir);
   check_same_study(spec, out_dir);
-  {
-    const auto spec_copy = out_dir / "spec.toml";
-    const auto temp = out_dir / "spec.toml.tmp";
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << spec.to_toml();
-    out.close();
-    if (!out)
-      throw InputError(fmt::format("invalid --out = '{}': must be writable", out_dir.string()));
-    std::filesystem::rename(temp, spec_copy);
+  try {
+    write_file_atomically(out_dir / "spec.toml", spec.to_toml());
+  } catch (const std::runtime_error& err) {
+    throw InputError(
+        fmt::format("invalid --out = '{}': must be writable ({})", out_dir.string(), err.what()));
   }
   // Finished rows (the solver is deterministic: a run that ended without a clean rebound ends
   // the same way again); failed rows (exceptions) are retried.

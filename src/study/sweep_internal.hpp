@@ -45,7 +45,7 @@ class WorkerPool {
  public:
   using Source = std::function<std::optional<std::size_t>()>;
   using Run = std::function<Outcome(std::size_t)>;
-  WorkerPool(int threads, Source next, Run run);
+  WorkerPool(int threads, const Source& next, const Run& run);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;

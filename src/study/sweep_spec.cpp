@@ -12,18 +12,12 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
+#include "corlab/core/text.hpp"
 
 namespace corlab::study {
 namespace {
 
 constexpr std::string_view kTopLevel = "[study], [base], [grid], [[cases]]";
-
-/// Removes line breaks so that every message stays on one line.
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  return text;
-}
 
 /// How a value appears in messages: numbers as they are, strings in quotes.
 std::string shown(std::string_view value) {
@@ -165,7 +159,7 @@ std::string settings_summary(const Settings& settings) {
   std::string text;
   for (const auto& [k, v] : settings) {
     if (!text.empty()) text += ", ";
-    text += k + "=" + v;
+    text += fmt::format("{}={}", k, v);
   }
   return text;
 }
@@ -185,9 +179,11 @@ void validate_spec(const SweepSpec& spec,
   // 1. [base] alone over the defaults.
   fem::ImpactConfig base_config;
   const Settings base_ordered = application_order(spec.base);
-  for (const auto& [key, value] : base_ordered) {
+  for (const Setting& setting : base_ordered) {
+    const std::string& key = setting.first;
+    const std::string& value = setting.second;
     const auto pos = std::find_if(spec.base.begin(), spec.base.end(),
-                                  [&](const Setting& s) { return s.first == key; });
+                                  [&key](const Setting& s) { return s.first == key; });
     const std::string& where = base_where[static_cast<std::size_t>(pos - spec.base.begin())];
     try {
       fem::apply_setting(base_config, key, value);
@@ -231,9 +227,9 @@ void validate_spec(const SweepSpec& spec,
   const std::vector<Settings> cases =
       spec.cases.empty() ? std::vector<Settings>{Settings{}} : spec.cases;
   std::size_t index = 0;
-  for (std::size_t c = 0; c < cases.size(); ++c) {
+  for (const Settings& case_settings : cases) {
     for (const auto& point : points) {
-      const Settings settings = merged(spec, cases[c], point);
+      const Settings settings = merged(spec, case_settings, point);
       const std::string id = case_id(settings);
       fem::ImpactConfig config;
       try {
@@ -362,19 +358,21 @@ std::string SweepSpec::to_toml() const {
   return out.str();
 }
 
-SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) {
-  const SpecError error{std::string(origin)};
-  toml::table root;
+namespace {
+
+toml::table parse_toml(std::string_view toml_text,
+                       std::string_view origin,
+                       const SpecError& error) {
   try {
-    root = toml::parse(toml_text, origin);
+    return toml::parse(toml_text, origin);
   } catch (const toml::parse_error& err) {
     error.fail(fmt::format("line {} column {}", err.source().begin.line, err.source().begin.column),
                fmt::format("not valid TOML: {}", err.description()));
   }
-  SweepSpec spec;
-  spec.origin = std::string(origin);
-  spec.toml_text = std::string(toml_text);
+}
 
+/// Only [study], [base], [grid] and [[cases]], each of its kind.
+void check_top_level(const toml::table& root, const SpecError& error) {
   for (const auto& [key, node] : root) {
     const std::string_view k = key.str();
     if (k != "study" && k != "base" && k != "grid" && k != "cases") {
@@ -386,8 +384,10 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
                                               : "[" + std::string(k) + "] table"));
     }
   }
+}
 
-  // [study]
+/// [study]: name, description, max_runs.
+void read_study(const toml::table& root, const SpecError& error, SweepSpec& spec) {
   const toml::table* study = root["study"].as_table();
   if (study == nullptr) error.fail("", "missing [study] table with name = \"...\"");
   for (const auto& [key, node] : *study) {
@@ -409,8 +409,12 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
   if (!study->contains("name")) error.fail("study.name", "missing (required, [A-Za-z0-9_-]+)");
   if (!valid_name(spec.name))
     error.fail_value("study.name", spec.name, "must match [A-Za-z0-9_-]+");
+}
 
-  // [base]
+/// [base] into spec.base; returns where each setting was written.
+std::vector<std::string> read_base(const toml::table& root,
+                                   const SpecError& error,
+                                   SweepSpec& spec) {
   std::vector<std::string> base_where;
   if (const toml::table* base = root["base"].as_table()) {
     for (const Leaf& leaf : leaves_in_order(*base, error, "base")) {
@@ -419,8 +423,13 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
       base_where.push_back(where);
     }
   }
+  return base_where;
+}
 
-  // [[cases]]
+/// [[cases]] into spec.cases; returns where each setting of each case was written.
+std::vector<std::vector<std::string>> read_cases(const toml::table& root,
+                                                 const SpecError& error,
+                                                 SweepSpec& spec) {
   std::vector<std::vector<std::string>> case_where;
   if (const toml::array* cases = root["cases"].as_array()) {
     for (std::size_t c = 0; c < cases->size(); ++c) {
@@ -436,31 +445,47 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
       case_where.push_back(std::move(wheres));
     }
   }
+  return case_where;
+}
 
-  // [grid]
-  if (const toml::table* grid = root["grid"].as_table()) {
-    for (const Leaf& leaf : leaves_in_order(*grid, error, "grid")) {
-      const std::string where = "grid." + quoted_key(leaf.key);
-      const toml::array* array = leaf.node->as_array();
-      if (array == nullptr) error.fail(where, "must be a non-empty array of values");
-      if (array->empty()) error.fail(where + " = []", "must be a non-empty array of values");
-      std::vector<std::string> values;
-      for (std::size_t i = 0; i < array->size(); ++i) {
-        values.push_back(value_text(*array->get(i), error, fmt::format("{}[{}]", where, i)));
-      }
-      for (std::size_t i = 0; i < values.size(); ++i) {
-        for (std::size_t j = 0; j < i; ++j) {
-          if (values[i] == values[j]) {
-            error.fail_value(
-                fmt::format("{}[{}]", where, i), values[i],
-                fmt::format("must differ from {}[{}] (duplicate grid value)", where, j));
-          }
+/// [grid] into spec.grid: a non-empty array of distinct values per key.
+void read_grid(const toml::table& root, const SpecError& error, SweepSpec& spec) {
+  const toml::table* grid = root["grid"].as_table();
+  if (grid == nullptr) return;
+  for (const Leaf& leaf : leaves_in_order(*grid, error, "grid")) {
+    const std::string where = "grid." + quoted_key(leaf.key);
+    const toml::array* array = leaf.node->as_array();
+    if (array == nullptr) error.fail(where, "must be a non-empty array of values");
+    if (array->empty()) error.fail(where + " = []", "must be a non-empty array of values");
+    std::vector<std::string> values;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      values.push_back(value_text(*array->get(i), error, fmt::format("{}[{}]", where, i)));
+    }
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (values[i] == values[j]) {
+          error.fail_value(fmt::format("{}[{}]", where, i), values[i],
+                           fmt::format("must differ from {}[{}] (duplicate grid value)", where, j));
         }
       }
-      spec.grid.emplace_back(leaf.key, std::move(values));
     }
+    spec.grid.emplace_back(leaf.key, std::move(values));
   }
+}
 
+}  // namespace
+
+SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) {
+  const SpecError error{std::string(origin)};
+  const toml::table root = parse_toml(toml_text, origin, error);
+  SweepSpec spec;
+  spec.origin = std::string(origin);
+  spec.toml_text = std::string(toml_text);
+  check_top_level(root, error);
+  read_study(root, error, spec);
+  const std::vector<std::string> base_where = read_base(root, error, spec);
+  const std::vector<std::vector<std::string>> case_where = read_cases(root, error, spec);
+  read_grid(root, error, spec);
   check_run_count(spec, error);
   validate_spec(spec, error, case_where, base_where);
   return spec;

@@ -5,6 +5,7 @@
 /// (validate), `corlab simulate --help` and the error messages all come from this table; adding a
 /// key is one entry in config_keys.cpp.
 
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,6 +45,9 @@ struct ConfigKeyInfo {
   std::string_view unit;          ///< e.g. "[m/s]", "[-]"; empty for text keys
   std::optional<KeyRange> range;  ///< for number, integer, number_list and yield_stress keys
   std::string_view doc;           ///< one line
+  /// Empty: summary.json echoes the key at its dotted name. Else the material key whose object
+  /// holds it under the key's last name (sphere.E is echoed as sphere.material.E).
+  std::string_view echo_in;
 };
 
 /// Every key, in documentation order.
@@ -64,6 +68,15 @@ std::string config_keys_help();
 
 /// The current value of `key` in `config` as text (defaults: of ImpactConfig{}).
 std::string config_value_text(const ImpactConfig& config, std::string_view key);
+
+/// The current value of `key` in `config` as JSON: a number, an integer, a list as an array, an
+/// unset yield stress as null, a material as {name, E, nu, rho, sigma_y, hardening, source}, a
+/// path as a string. Null for an unknown key.
+nlohmann::json config_value_json(const ImpactConfig& config, std::string_view key);
+
+/// Where summary.json's config echo puts `info`'s value: its dotted name split at the dots
+/// ({"impact", "velocity"}), or under its `echo_in` key ({"sphere", "material", "E"}).
+std::vector<std::string> config_echo_path(const ConfigKeyInfo& info);
 
 /// Checks every numeric key of `config` against its range; throws InputError
 /// "invalid <key> = <value>: must be in [lo, hi] <unit> (<why>)" for the first one outside.

@@ -10,14 +10,16 @@
 
 namespace corlab::fem {
 
-/// The config as JSON, keyed by the text keys of impact_config.hpp (SI units).
+/// The config as JSON (SI units): every key of config_keys() at its config_echo_path, e.g.
+/// {"impact": {"velocity": 5.0}, "sphere": {"material": {"name": ..., "E": ...}}}.
 nlohmann::json config_to_json(const ImpactConfig& config);
 
 /// The summary of a result (no history): every field of result_fields() written to the summary,
 /// their units under "units" and the config under "config".
 nlohmann::json summary_to_json(const ImpactResult& result, const ImpactConfig& config);
 
-/// Writes summary_to_json to `file` (pretty-printed). Throws std::runtime_error on I/O failure.
+/// Writes summary_to_json to `file` (pretty-printed) with write_file_atomically, so a reader never
+/// sees a partial summary. Throws std::runtime_error on I/O failure.
 void write_summary_json(const ImpactResult& result,
                         const ImpactConfig& config,
                         const std::filesystem::path& file);

@@ -6,7 +6,9 @@
 /// centre is on the axis at z = gap + sphere_radius, so its lowest point is at z = gap.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace corlab::fem {
@@ -34,5 +36,18 @@ struct Mesh {
   int num_nodes() const { return static_cast<int>(r.size()); }
   int num_elements() const { return static_cast<int>(quads.size()); }
 };
+
+/// `quad` (node indices of `mesh`) in the counter-clockwise (r, z) order Mesh::quads holds: nodes
+/// 1 and 3 swapped when the signed area (from the diagonals) is negative.
+inline std::array<int, 4> counter_clockwise(const Mesh& mesh, std::array<int, 4> quad) {
+  const auto a = static_cast<std::size_t>(quad[0]);
+  const auto b = static_cast<std::size_t>(quad[1]);
+  const auto c = static_cast<std::size_t>(quad[2]);
+  const auto d = static_cast<std::size_t>(quad[3]);
+  const double area2 = (mesh.r[c] - mesh.r[a]) * (mesh.z[d] - mesh.z[b]) -
+                       (mesh.z[c] - mesh.z[a]) * (mesh.r[d] - mesh.r[b]);
+  if (area2 < 0.0) std::swap(quad[1], quad[3]);
+  return quad;
+}
 
 }  // namespace corlab::fem

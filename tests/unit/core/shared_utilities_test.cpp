@@ -1,5 +1,5 @@
-// The shared utilities of core/: trim, the atomic file writer, the interrupt handler and the
-// thread pool.
+// The shared utilities of core/: trim, one_line, the atomic file writer, the interrupt handler and
+// the thread pool.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -27,6 +27,12 @@ TEST(Trim, RemovesBlanksAtBothEndsOnly) {
   EXPECT_EQ(trim(" \t "), "");
   EXPECT_EQ(trim(""), "");
   static_assert(trim(" k ") == "k");
+}
+
+TEST(OneLine, ReplacesLineBreaksWithBlanks) {
+  EXPECT_EQ(one_line("a\nb\r\nc"), "a b  c");
+  EXPECT_EQ(one_line("no break"), "no break");
+  EXPECT_EQ(one_line(""), "");
 }
 
 TEST(AtomicFile, ReplacesTheContentAndLeavesNoTemporary) {

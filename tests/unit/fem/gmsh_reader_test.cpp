@@ -168,5 +168,22 @@ TEST(GmshReader, FileThatHangsGmshIsAnInputError) {
   EXPECT_NO_THROW((void)read_gmsh(kMeshDir / "example_impact.msh"));
 }
 
+TEST(GmshReader, TimeLimitThatIsNotAPositiveNumberIsAnInputError) {
+  if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
+  for (const char* bad : {"abc", "0", "-5", "2s", ""}) {
+    ::setenv("CORLAB_GMSH_TIMEOUT_S", bad, 1);
+    try {
+      (void)read_gmsh(kMeshDir / "example_impact.msh");
+      ADD_FAILURE() << "CORLAB_GMSH_TIMEOUT_S=" << bad << " was accepted";
+    } catch (const InputError& err) {
+      EXPECT_EQ(err.field(), "CORLAB_GMSH_TIMEOUT_S") << err.what();
+      EXPECT_EQ(err.value(), bad) << err.what();
+    }
+  }
+  ::setenv("CORLAB_GMSH_TIMEOUT_S", " 30 ", 1);
+  EXPECT_NO_THROW((void)read_gmsh(kMeshDir / "example_impact.msh"));
+  ::unsetenv("CORLAB_GMSH_TIMEOUT_S");
+}
+
 }  // namespace
 }  // namespace corlab::fem

@@ -7,6 +7,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
+
+#include "corlab/fem/config_keys.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -25,6 +28,29 @@ TEST(ImpactOutput, SummaryHasTheDocumentedKeys) {
   EXPECT_DOUBLE_EQ(j["e"].get<double>(), 0.53);
   EXPECT_DOUBLE_EQ(j["config"]["impact"]["velocity"].get<double>(), 5.0);
   EXPECT_DOUBLE_EQ(j["config"]["substrate"]["material"]["sigma_y"].get<double>(), 500e6);
+}
+
+TEST(ImpactOutput, ConfigEchoHasEveryKeyOfTheTable) {
+  ImpactConfig c;
+  c.mesh.file = "disc.msh";
+  c.output.field_times = {1e-6, 2e-6};
+  const auto config = summary_to_json(ImpactResult{}, c)["config"];
+  for (const ConfigKeyInfo& key : config_keys()) {
+    const std::vector<std::string> path = config_echo_path(key);
+    const nlohmann::json* node = &config;
+    for (const std::string& name : path) {
+      ASSERT_TRUE(node->contains(name)) << key.key << " (at " << name << ")";
+      node = &(*node)[name];
+    }
+    EXPECT_EQ(*node, config_value_json(c, key.key)) << key.key;
+  }
+  EXPECT_EQ(config["solver"]["max_steps"].get<long long>(), c.solver.max_steps);
+  EXPECT_EQ(config["sphere"]["material"]["E"].get<double>(), c.sphere.material.youngs_modulus);
+  EXPECT_EQ(config["mesh"]["file"].get<std::string>(), "disc.msh");
+  EXPECT_EQ(config["output"]["times"], nlohmann::json({1e-6, 2e-6}));
+  EXPECT_EQ(config["output"]["history_every"].get<int>(), c.output.history_every);
+  c.substrate.material.yield_stress.reset();
+  EXPECT_TRUE(config_to_json(c)["substrate"]["material"]["sigma_y"].is_null());
 }
 
 TEST(ImpactOutput, HistoryCsvHasUnitsAndRows) {

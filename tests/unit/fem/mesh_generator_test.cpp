@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -32,6 +33,16 @@ double edge(const Mesh& m, int a, int b) {
 }
 
 class MeshAtVelocity : public ::testing::TestWithParam<double> {};
+
+TEST(CounterClockwise, KeepsACounterClockwiseQuadAndFlipsAClockwiseOne) {
+  Mesh m;
+  m.r = {0.0, 1.0, 1.0, 0.0};
+  m.z = {0.0, 0.0, 1.0, 1.0};
+  const std::array<int, 4> ccw{0, 1, 2, 3};
+  EXPECT_EQ(counter_clockwise(m, ccw), ccw);
+  EXPECT_EQ(counter_clockwise(m, {0, 3, 2, 1}), ccw);
+  EXPECT_EQ(counter_clockwise(m, {1, 0, 3, 2}), (std::array<int, 4>{1, 2, 3, 0}));
+}
 
 TEST_P(MeshAtVelocity, NodeSetsFollowTheConventions) {
   const MeshOptions o = options_at(GetParam());
