@@ -53,7 +53,8 @@ nlohmann::json config_to_json(const ImpactConfig& c) {
                  {"bulk_viscosity_linear", c.solver.bulk_viscosity_linear},
                  {"bulk_viscosity_quadratic", c.solver.bulk_viscosity_quadratic},
                  {"penalty_scale", c.solver.penalty_scale},
-                 {"t_max", c.solver.t_max}};
+                 {"t_max", c.solver.t_max},
+                 {"subcycling_levels", c.solver.subcycling_levels}};
   j["output"] = {{"times", c.output.field_times}, {"history_every", c.output.history_every}};
   return j;
 }

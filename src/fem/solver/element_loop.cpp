@@ -31,6 +31,10 @@ constexpr int kBlock = 16;
 
 // The lane-parallel part of one block of nb <= kBlock elements: stress update at the mid-step
 // geometry x^{n+1/2}, internal + hourglass forces at x^{n+1}, stable step. f_r/f_z receive f_int.
+// kTrapezoid (subcycling): the viscous work over the step is the trapezoid of the viscous stress
+// at its start (bv, updated) and end, the rule that matches the product-form kinetic energy;
+// else the stress at its end (as before subcycling).
+template <bool kTrapezoid>
 [[gnu::always_inline]] inline void element_block(const BodyParams& p,
                                                  int nb,
                                                  const double* __restrict xr,
@@ -46,6 +50,7 @@ constexpr int kBlock = 16;
                                                  double* __restrict qz,
                                                  double* __restrict f_r,
                                                  double* __restrict f_z,
+                                                 double* __restrict bv,
                                                  double dt,
                                                  ElementSums& sums) {
   const J2Plasticity mat = p.material;
@@ -94,7 +99,12 @@ constexpr int kBlock = 16;
     const double length = characteristic_length(g);
     const double evol = trace(rate.d);
     const double s_bv = bulk_viscous_stress(evol, rho, c, length, b1, b2);
-    w_v[l] = vol_mid * s_bv * evol * dt;
+    if constexpr (kTrapezoid) {
+      w_v[l] = vol_mid * 0.5 * (bv[l] + s_bv) * evol * dt;
+      bv[l] = s_bv;
+    } else {
+      w_v[l] = vol_mid * s_bv * evol * dt;
+    }
     s.rr += s_bv;
     s.zz += s_bv;
     s.tt += s_bv;
@@ -161,9 +171,10 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    element_block(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
-                  es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0, es.eps_p.data() + e0,
-                  es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0], &f_z[0][0], dt, sums);
+    element_block<false>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
+                         es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0,
+                         es.eps_p.data() + e0, es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0],
+                         &f_z[0][0], nullptr, dt, sums);
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
@@ -174,6 +185,94 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
       }
     }
   }
+}
+
+// element_loop for one subcycling level (element_loop.hpp): the rate from the element's own
+// interval, 2^L f_int scattered. Cloned as element_loop.
+CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
+                                               ElementState& es,
+                                               int begin,
+                                               int end,
+                                               const double* __restrict r,
+                                               const double* __restrict z,
+                                               double* __restrict fr_out,
+                                               double* __restrict fz_out,
+                                               double dt,
+                                               double scale,
+                                               const double* __restrict v_r,
+                                               const double* __restrict v_z,
+                                               ElementSums& sums) {
+  alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
+  alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
+  const double inv_dt = 1.0 / dt;
+  for (int e0 = begin; e0 < end; e0 += kBlock) {
+    const int nb = std::min(kBlock, end - e0);
+    const std::array<int, 4>* nd = es.nodes.data() + e0;
+    double* __restrict rp = es.r_prev.data() + 4 * static_cast<std::size_t>(e0);
+    double* __restrict zp = es.z_prev.data() + 4 * static_cast<std::size_t>(e0);
+    for (int l = 0; l < nb; ++l) {
+#pragma GCC unroll 4
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        xr[i][l] = r[n];
+        xz[i][l] = z[n];
+        ur[i][l] = (r[n] - rp[4 * l + i]) * inv_dt;
+        uz[i][l] = (z[n] - zp[4 * l + i]) * inv_dt;
+        rp[4 * l + i] = r[n];
+        zp[4 * l + i] = z[n];
+      }
+    }
+    const double omega_before = sums.omega_min;
+    element_block<true>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
+                        es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0,
+                        es.eps_p.data() + e0, es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0],
+                        &f_z[0][0], es.bv.data() + e0, dt, sums);
+    if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
+    for (int l = 0; l < nb; ++l) {
+#pragma GCC unroll 4
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        fr_out[n] -= scale * f_r[i][l];
+        fz_out[n] -= scale * f_z[i][l];
+      }
+    }
+    if (v_r == nullptr) continue;
+    double c = 0.0;
+    for (int l = 0; l < nb; ++l) {
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        c += f_r[i][l] * (ur[i][l] - v_r[n]) + f_z[i][l] * (uz[i][l] - v_z[n]);
+      }
+    }
+    sums.kick_correction -= 0.5 * dt * c;
+  }
+}
+
+// Subcycled nodal update (element_loop.hpp): listed nodes, each with its level's step.
+CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
+  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
+  const double dt_avg = a.dt_avg;
+#pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
+  for (int k = 0; k < a.count; ++k) {
+    const int i = a.order[k];
+    const double h = a.step[a.level[i]];
+    const double vr_old = a.vr[i];
+    const double vz_old = a.vz[i];
+    const double vr_new = (vr_old + dt_avg * a.fr[i] * a.im[i]) * a.free_r[i];
+    const double vz_new = (vz_old + dt_avg * a.fz[i] * a.im[i]) * a.free_z[i];
+    const double k_i = 0.5 * a.m[i] * (vr_old * vr_new + vz_old * vz_new);
+    ke += k_i;
+    ke_sphere += k_i * a.sphere[i];
+    p_sphere += a.m[i] * vz_new * a.sphere[i];
+    mz_sphere += a.m[i] * a.z[i] * a.sphere[i];
+    a.vr[i] = vr_new;
+    a.vz[i] = vz_new;
+    a.r[i] += h * vr_new;
+    a.z[i] += h * vz_new;
+    a.fr[i] = 0.0;
+    a.fz[i] = 0.0;
+  }
+  return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
 }
 
 // Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
