@@ -250,27 +250,78 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
 
 // Subcycled nodal update (element_loop.hpp): listed nodes, each with its level's step.
 CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
-  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
+  const int* __restrict order = a.order;
+  double* __restrict pr = a.r;
+  double* __restrict pz = a.z;
+  double* __restrict pvr = a.vr;
+  double* __restrict pvz = a.vz;
+  double* __restrict pfr = a.fr;
+  double* __restrict pfz = a.fz;
+  const double* __restrict pm = a.m;
+  const double* __restrict pim = a.im;
+  const double* __restrict pfree_r = a.free_r;
+  const double* __restrict pfree_z = a.free_z;
+  const double* __restrict psph = a.sphere;
+  const double* __restrict pscale = a.scale;
   const double dt_avg = a.dt_avg;
+  const double dt = a.step[0];
+  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
 #pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
   for (int k = 0; k < a.count; ++k) {
-    const int i = a.order[k];
-    const double h = a.step[a.level[i]];
-    const double vr_old = a.vr[i];
-    const double vz_old = a.vz[i];
-    const double vr_new = (vr_old + dt_avg * a.fr[i] * a.im[i]) * a.free_r[i];
-    const double vz_new = (vz_old + dt_avg * a.fz[i] * a.im[i]) * a.free_z[i];
-    const double k_i = 0.5 * a.m[i] * (vr_old * vr_new + vz_old * vz_new);
+    const int i = order[k];
+    const double h = dt * pscale[i];
+    const double vr_new = (pvr[i] + dt_avg * pfr[i] * pim[i]) * pfree_r[i];
+    const double vz_new = (pvz[i] + dt_avg * pfz[i] * pim[i]) * pfree_z[i];
+    const double k_i = 0.5 * pm[i] * (pvr[i] * vr_new + pvz[i] * vz_new);
     ke += k_i;
-    ke_sphere += k_i * a.sphere[i];
-    p_sphere += a.m[i] * vz_new * a.sphere[i];
-    mz_sphere += a.m[i] * a.z[i] * a.sphere[i];
-    a.vr[i] = vr_new;
-    a.vz[i] = vz_new;
-    a.r[i] += h * vr_new;
-    a.z[i] += h * vz_new;
-    a.fr[i] = 0.0;
-    a.fz[i] = 0.0;
+    ke_sphere += k_i * psph[i];
+    p_sphere += pm[i] * vz_new * psph[i];
+    mz_sphere += pm[i] * pz[i] * psph[i];
+    pvr[i] = vr_new;
+    pvz[i] = vz_new;
+    pr[i] += h * vr_new;
+    pz[i] += h * vz_new;
+    pfr[i] = 0.0;
+    pfz[i] = 0.0;
+  }
+  return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
+}
+
+// Subcycled nodal update over all nodes (element_loop.hpp): contiguous and vectorised; a node not
+// due has no force (no element of its has updated) and a zero step.
+CORLAB_SIMD_CLONES NodeSums node_update_due(const SubcycledNodes& a, int nn, int due_level) {
+  double* __restrict pr = a.r;
+  double* __restrict pz = a.z;
+  double* __restrict pvr = a.vr;
+  double* __restrict pvz = a.vz;
+  double* __restrict pfr = a.fr;
+  double* __restrict pfz = a.fz;
+  const double* __restrict pm = a.m;
+  const double* __restrict pim = a.im;
+  const double* __restrict pfree_r = a.free_r;
+  const double* __restrict pfree_z = a.free_z;
+  const double* __restrict psph = a.sphere;
+  const double* __restrict pscale = a.scale;
+  const double dt_avg = a.dt_avg;
+  const double dt = a.step[0];
+  const double due_scale = static_cast<double>(1 << due_level);
+  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
+#pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
+  for (int i = 0; i < nn; ++i) {
+    const double h = pscale[i] <= due_scale ? dt * pscale[i] : 0.0;
+    const double vr_new = (pvr[i] + dt_avg * pfr[i] * pim[i]) * pfree_r[i];
+    const double vz_new = (pvz[i] + dt_avg * pfz[i] * pim[i]) * pfree_z[i];
+    const double k_i = 0.5 * pm[i] * (pvr[i] * vr_new + pvz[i] * vz_new);
+    ke += k_i;
+    ke_sphere += k_i * psph[i];
+    p_sphere += pm[i] * vz_new * psph[i];
+    mz_sphere += pm[i] * pz[i] * psph[i];
+    pvr[i] = vr_new;
+    pvz[i] = vz_new;
+    pr[i] += h * vr_new;
+    pz[i] += h * vz_new;
+    pfr[i] = 0.0;
+    pfz[i] = 0.0;
   }
   return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
 }

@@ -246,6 +246,8 @@ void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<in
         m.n_sphere_elements + static_cast<int>(std::count_if(mid, lv.element.end(), below));
   }
   lv.node = std::move(node_level);
+  lv.node_scale.resize(m.n_nodes);
+  for (int i = 0; i < m.n_nodes; ++i) lv.node_scale[i] = std::ldexp(1.0, lv.node[i]);
   lv.node_order.resize(m.n_nodes);
   for (int i = 0; i < m.n_nodes; ++i) lv.node_order[i] = i;
   std::stable_sort(lv.node_order.begin(), lv.node_order.end(),
@@ -256,8 +258,9 @@ void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<in
   }
 }
 
-/// Subcycling levels (solver.subcycling_levels > 0); max_level stays 0 when no element can take a
-/// longer step, and the run then steps as without subcycling.
+/// Subcycling levels (solver.subcycling_levels > 0); max_level stays 0 (the run then steps as
+/// without subcycling) when no element can take a longer step or the saving is below
+/// 1 - kMaxUpdateFraction.
 void set_levels(const SolverConfig& sc, ImpactModel& m) {
   m.levels = SubcyclingLevels{};
   const int max_level = std::clamp(sc.subcycling_levels, 0, kMaxSubcyclingLevels);
@@ -267,7 +270,9 @@ void set_levels(const SolverConfig& sc, ImpactModel& m) {
   const std::vector<int> level = element_levels(m, max_level);
   const std::vector<int> nl = node_levels(m, level);
   const int used = *std::max_element(level.begin(), level.end());
-  if (used == 0) return;
+  double updates = 0.0;
+  for (int l : level) updates += std::ldexp(1.0, -l);
+  if (used == 0 || updates > kMaxUpdateFraction * m.n_elements) return;
   sort_by_level(m, level, nl);
   m.levels.max_level = used;
 }
