@@ -29,6 +29,20 @@ constexpr double kTwoPi = 2.0 * units::kPi;
 // (the pure kernels, inlined, vectorised across elements), then scattered.
 constexpr int kBlock = 16;
 
+// Bulk-viscous work of lane l over a step dt: the viscous stress at its end (kTrapezoid false),
+// or the trapezoid of those at its start (bv[l], then updated) and end.
+template <bool kTrapezoid>
+[[gnu::always_inline]] inline double viscous_work(
+    double* __restrict bv, int l, double vol, double s_bv, double evol, double dt) {
+  if constexpr (kTrapezoid) {
+    const double w = vol * 0.5 * (bv[l] + s_bv) * evol * dt;
+    bv[l] = s_bv;
+    return w;
+  } else {
+    return vol * s_bv * evol * dt;
+  }
+}
+
 // The lane-parallel part of one block of nb <= kBlock elements: stress update at the mid-step
 // geometry x^{n+1/2}, internal + hourglass forces at x^{n+1}, stable step. f_r/f_z receive f_int.
 // kTrapezoid (subcycling): the viscous work over the step is the trapezoid of the viscous stress
@@ -99,12 +113,7 @@ template <bool kTrapezoid>
     const double length = characteristic_length(g);
     const double evol = trace(rate.d);
     const double s_bv = bulk_viscous_stress(evol, rho, c, length, b1, b2);
-    if constexpr (kTrapezoid) {
-      w_v[l] = vol_mid * 0.5 * (bv[l] + s_bv) * evol * dt;
-      bv[l] = s_bv;
-    } else {
-      w_v[l] = vol_mid * s_bv * evol * dt;
-    }
+    w_v[l] = viscous_work<kTrapezoid>(bv, l, vol_mid, s_bv, evol, dt);
     s.rr += s_bv;
     s.zz += s_bv;
     s.tt += s_bv;
@@ -304,7 +313,7 @@ CORLAB_SIMD_CLONES NodeSums node_update_due(const SubcycledNodes& a, int nn, int
   const double* __restrict pscale = a.scale;
   const double dt_avg = a.dt_avg;
   const double dt = a.step[0];
-  const double due_scale = static_cast<double>(1 << due_level);
+  const auto due_scale = static_cast<double>(1 << due_level);
   double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
 #pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
   for (int i = 0; i < nn; ++i) {

@@ -104,7 +104,6 @@ void element_loop_subcycled(const BodyParams& p,
 struct SubcycledNodes {
   const int* order;     // node indices to update
   int count;            // how many
-  const int* level;     // level of each node
   const double* step;   // step of each level [s]
   const double* scale;  // 2^level of each node [-]
   double dt_avg;        // mean of the base steps before and after now [s]

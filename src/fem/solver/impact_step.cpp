@@ -85,12 +85,22 @@ NodeSums move_nodes_subcycled(const ImpactModel& m, ImpactState& s) {
   const int l = sync_level(s.step, lv.max_level);
   std::array<double, kMaxSubcyclingLevels + 1> step{};
   for (int k = 0; k <= lv.max_level; ++k) step[k] = std::ldexp(s.dt, k);
-  const SubcycledNodes a{lv.node_order.data(), lv.node_end[l],       lv.node.data(),
-                         step.data(),          lv.node_scale.data(), 0.5 * (s.dt_prev + s.dt),
-                         s.r.data(),           s.z.data(),           s.vr.data(),
-                         s.vz.data(),          s.fr.data(),          s.fz.data(),
-                         m.mass.data(),        m.inv_mass.data(),    m.free_r.data(),
-                         m.free_z.data(),      m.is_sphere.data()};
+  const SubcycledNodes a{lv.node_order.data(),
+                         lv.node_end[l],
+                         step.data(),
+                         lv.node_scale.data(),
+                         0.5 * (s.dt_prev + s.dt),
+                         s.r.data(),
+                         s.z.data(),
+                         s.vr.data(),
+                         s.vz.data(),
+                         s.fr.data(),
+                         s.fz.data(),
+                         m.mass.data(),
+                         m.inv_mass.data(),
+                         m.free_r.data(),
+                         m.free_z.data(),
+                         m.is_sphere.data()};
   // Most nodes due (fast runs, major-cycle boundaries): one contiguous pass over all.
   const NodeSums ns =
       2 * lv.node_end[l] >= m.n_nodes ? node_update_due(a, m.n_nodes, l) : node_update_subcycled(a);
