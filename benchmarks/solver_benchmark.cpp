@@ -6,6 +6,10 @@
 //   The context line "isa" names the element-loop clone the CPU runs (avx512, avx2, baseline).
 //   BM_ElementThroughput/h: the same case cut to a fixed end time (solver.t_max), for the
 //     element-loop throughput at several mesh sizes.
+//   BM_Subcycling/v/levels: the case at v = 5 and 0.1 m/s (arg 50, 1: v x 10) with
+//     solver.subcycling_levels = 0 (off) and 4 (docs/theory/solver.md section 11); compare the
+//     times and the e labels of levels 0 and 4 (element_updates: the element updates done).
+// element_steps_per_s counts elements x base steps (what a run without subcycling would update).
 // Sample run: ./build-solver/bin/solver_benchmark --benchmark_filter=PaperCase
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
@@ -28,6 +32,7 @@ void report(benchmark::State& state, const ImpactResult& r) {
       benchmark::Counter(static_cast<double>(r.elements) * static_cast<double>(r.steps) *
                              static_cast<double>(state.iterations()),
                          benchmark::Counter::kIsRate);
+  state.counters["element_updates"] = r.element_steps_per_s * r.wall_s;
   state.SetLabel(fmt::format("e={:.6f}", r.e));
 }
 
@@ -73,6 +78,27 @@ void BM_ElementThroughput(benchmark::State& state) {
   report(state, r);
 }
 BENCHMARK(BM_ElementThroughput)->Arg(500)->Arg(250)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_Subcycling(benchmark::State& state) {
+  ImpactConfig config;
+  config.impact.velocity = static_cast<double>(state.range(0)) / 10.0;
+  config.solver.subcycling_levels = static_cast<int>(state.range(1));
+  const corlab::fem::Mesh mesh = corlab::fem::build_impact_mesh(config);  // not timed
+  ImpactResult r;
+  for (auto _ : state) {
+    r = corlab::fem::run_impact(config, mesh);
+    benchmark::DoNotOptimize(std::as_const(r).e);
+  }
+  report(state, r);
+}
+BENCHMARK(BM_Subcycling)
+    ->Args({50, 0})
+    ->Args({50, 4})
+    ->Args({1, 0})
+    ->Args({1, 4})
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
 
 /// The clone of the element loop the dynamic loader picks (GCC target_clones order).
 const char* instruction_set() {

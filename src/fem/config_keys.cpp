@@ -161,6 +161,10 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
       "refuse a run estimated to need more time steps (raise it to run anyway)",
       +[](ImpactConfig& c) { return &c.solver.max_steps; }));
   t.push_back(entry(
+      "solver.subcycling_levels", "[-]", closed(0.0, 6.0, "2^6 = 64 base steps per major cycle"),
+      "element subcycling: elements step at up to 2^this x the base step (0 = off)",
+      +[](ImpactConfig& c) { return &c.solver.subcycling_levels; }));
+  t.push_back(entry(
       "output.times", "[s]", closed(0.0, 10.0), "times at which to write VTU fields (a list)",
       +[](ImpactConfig& c) { return &c.output.field_times; }));
   t.push_back(entry(

@@ -185,7 +185,8 @@ class TimeLoop {
         rule_(m.t_wave, m.velocity),
         field_times_(config.output.field_times),
         every_(config.output.history_every),
-        v_com_prev_(s.sphere_velocity) {
+        v_com_prev_(s.sphere_velocity),
+        t_boundary_(s.t) {
     std::sort(field_times_.begin(), field_times_.end());
   }
 
@@ -193,6 +194,7 @@ class TimeLoop {
   RunStatus run() {
     // A run cancelled before it starts does no work (the loop polls only every kPollEvery steps).
     if (cancelled()) return RunStatus::kCancelled;
+    if (m_.levels.max_level > 0) return run_subcycled();
     while (true) {
       if (auto end = kinematic_half()) return *end;
       if (auto end = force_half()) return *end;
@@ -261,6 +263,57 @@ class TimeLoop {
     return std::nullopt;
   }
 
+  /// The subcycled loop (docs/theory/solver.md section 11): the energy balance, history and stop
+  /// rule at major-cycle boundaries, where every node and element is in sync.
+  RunStatus run_subcycled() {
+    const long long cycle = 1LL << m_.levels.max_level;
+    const long long rows_every = std::max<long long>(1, every_ / cycle);
+    while (true) {
+      const bool boundary = s_.step % cycle == 0;
+      const NodeSums ns = solver::move_nodes_subcycled(m_, s_);
+      if (boundary) {
+        if (auto end = cycle_boundary(ns, (s_.step / cycle) % rows_every == 0)) return *end;
+      }
+      rep_ = solver::compute_forces_subcycled(m_, s_);
+      if (rep_.inverted_element >= 0) return RunStatus::kElementInverted;
+      if (!(s_.dt > kMinStepFraction * m_.dt_initial)) return RunStatus::kStepCollapsed;
+      if (s_.step % cycle == 0) {
+        if (auto end = after_step()) return *end;
+      } else if (s_.t >= m_.t_max || s_.step >= m_.max_steps) {
+        return s_.t >= m_.t_max ? RunStatus::kNotSeparated : RunStatus::kStepBudgetExceeded;
+      }
+    }
+  }
+
+  /// At a major-cycle boundary t^k: energy balance, history row, stop rule (contact over the
+  /// cycle that ended; the sphere's momentum before the nodes' update).
+  std::optional<RunStatus> cycle_boundary(const NodeSums& ns, bool row) {
+    const double cycle_dt = s_.t - t_boundary_;
+    t_boundary_ = s_.t;
+    const double v_mean = 0.5 * (s_.sphere_velocity + v_com_prev_);
+    v_com_prev_ = s_.sphere_velocity;
+    const double total = ns.ke + s_.kick_correction + s_.energy.internal + s_.energy.hourglass +
+                         s_.energy.viscous + s_.energy.contact;
+    const double balance = (total - m_.energy_initial) / m_.energy_initial;
+    if (!std::isfinite(balance)) {
+      balance_max_ = kNaN;
+      return RunStatus::kNonFinite;
+    }
+    balance_max_ = std::max(balance_max_, std::abs(balance));
+    if (row) record_history(s_, ns.ke + s_.kick_correction, v_mean, balance, history_);
+    if (s_.step == 0) return std::nullopt;
+    rule_.accumulate(ns.ke_sphere, cycle_dt);
+    const double since = s_.cycle_penetrating ? s_.t - s_.t_first_penetrating : cycle_dt;
+    const auto decision = rule_.update(s_.t, since, s_.cycle_penetrating, s_.sphere_velocity);
+    s_.cycle_penetrating = false;
+    if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
+    if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
+    if (control_.stop_at_max_compression && rule_.touched() && s_.sphere_velocity >= 0.0) {
+      return RunStatus::kMaxCompression;
+    }
+    return std::nullopt;
+  }
+
   const Mesh& mesh_;
   const SimulationControl& control_;
   const ImpactModel& m_;
@@ -271,6 +324,7 @@ class TimeLoop {
   std::size_t next_field_ = 0;
   int every_;
   double v_com_prev_;
+  double t_boundary_ = 0.0;  ///< time of the last major-cycle boundary (subcycling) [s]
   double balance_max_ = 0.0;
   ForceReport rep_;
 };
@@ -299,8 +353,10 @@ ImpactResult run_impact(const ImpactConfig& config,
     res.status_detail = status_detail(res.status, m, s, loop.last_forces(), s.sphere_velocity);
   }
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  res.element_steps_per_s =
-      static_cast<double>(m.n_elements) * static_cast<double>(s.step) / res.wall_s;
+  const double element_steps =
+      m.levels.max_level > 0 ? static_cast<double>(s.element_steps)
+                             : static_cast<double>(m.n_elements) * static_cast<double>(s.step);
+  res.element_steps_per_s = element_steps / res.wall_s;
   if (control.progress) control.progress(1.0);
   return res;
 }

@@ -67,6 +67,9 @@ struct SolverConfig {
   /// Step budget [-]: validate() refuses a run whose estimated step count (estimate_run()) is
   /// larger; the solver stops a run that reaches it (status step_budget_exceeded).
   long long max_steps = 20'000'000;
+  /// Multi-time-step integration (element subcycling, docs/theory/solver.md section 11): elements
+  /// step at 2^L x the base step, L <= this (0 = every element at the base step) [-].
+  int subcycling_levels = 4;
 };
 
 struct OutputConfig {

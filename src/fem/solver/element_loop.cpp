@@ -29,8 +29,26 @@ constexpr double kTwoPi = 2.0 * units::kPi;
 // (the pure kernels, inlined, vectorised across elements), then scattered.
 constexpr int kBlock = 16;
 
+// Bulk-viscous work of lane l over a step dt: the viscous stress at its end (kTrapezoid false),
+// or the trapezoid of those at its start (bv[l], then updated) and end.
+template <bool kTrapezoid>
+[[gnu::always_inline]] inline double viscous_work(
+    double* __restrict bv, int l, double vol, double s_bv, double evol, double dt) {
+  if constexpr (kTrapezoid) {
+    const double w = vol * 0.5 * (bv[l] + s_bv) * evol * dt;
+    bv[l] = s_bv;
+    return w;
+  } else {
+    return vol * s_bv * evol * dt;
+  }
+}
+
 // The lane-parallel part of one block of nb <= kBlock elements: stress update at the mid-step
 // geometry x^{n+1/2}, internal + hourglass forces at x^{n+1}, stable step. f_r/f_z receive f_int.
+// kTrapezoid (subcycling): the viscous work over the step is the trapezoid of the viscous stress
+// at its start (bv, updated) and end, the rule that matches the product-form kinetic energy;
+// else the stress at its end (as before subcycling).
+template <bool kTrapezoid>
 [[gnu::always_inline]] inline void element_block(const BodyParams& p,
                                                  int nb,
                                                  const double* __restrict xr,
@@ -46,6 +64,7 @@ constexpr int kBlock = 16;
                                                  double* __restrict qz,
                                                  double* __restrict f_r,
                                                  double* __restrict f_z,
+                                                 double* __restrict bv,
                                                  double dt,
                                                  ElementSums& sums) {
   const J2Plasticity mat = p.material;
@@ -94,7 +113,7 @@ constexpr int kBlock = 16;
     const double length = characteristic_length(g);
     const double evol = trace(rate.d);
     const double s_bv = bulk_viscous_stress(evol, rho, c, length, b1, b2);
-    w_v[l] = vol_mid * s_bv * evol * dt;
+    w_v[l] = viscous_work<kTrapezoid>(bv, l, vol_mid, s_bv, evol, dt);
     s.rr += s_bv;
     s.zz += s_bv;
     s.tt += s_bv;
@@ -161,9 +180,10 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    element_block(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
-                  es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0, es.eps_p.data() + e0,
-                  es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0], &f_z[0][0], dt, sums);
+    element_block<false>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
+                         es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0,
+                         es.eps_p.data() + e0, es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0],
+                         &f_z[0][0], nullptr, dt, sums);
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
@@ -174,6 +194,145 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
       }
     }
   }
+}
+
+// element_loop for one subcycling level (element_loop.hpp): the rate from the element's own
+// interval, 2^L f_int scattered. Cloned as element_loop.
+CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
+                                               ElementState& es,
+                                               int begin,
+                                               int end,
+                                               const double* __restrict r,
+                                               const double* __restrict z,
+                                               double* __restrict fr_out,
+                                               double* __restrict fz_out,
+                                               double dt,
+                                               double scale,
+                                               const double* __restrict v_r,
+                                               const double* __restrict v_z,
+                                               ElementSums& sums) {
+  alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
+  alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
+  const double inv_dt = 1.0 / dt;
+  for (int e0 = begin; e0 < end; e0 += kBlock) {
+    const int nb = std::min(kBlock, end - e0);
+    const std::array<int, 4>* nd = es.nodes.data() + e0;
+    double* __restrict rp = es.r_prev.data() + 4 * static_cast<std::size_t>(e0);
+    double* __restrict zp = es.z_prev.data() + 4 * static_cast<std::size_t>(e0);
+    for (int l = 0; l < nb; ++l) {
+#pragma GCC unroll 4
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        xr[i][l] = r[n];
+        xz[i][l] = z[n];
+        ur[i][l] = (r[n] - rp[4 * l + i]) * inv_dt;
+        uz[i][l] = (z[n] - zp[4 * l + i]) * inv_dt;
+        rp[4 * l + i] = r[n];
+        zp[4 * l + i] = z[n];
+      }
+    }
+    const double omega_before = sums.omega_min;
+    element_block<true>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
+                        es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0,
+                        es.eps_p.data() + e0, es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0],
+                        &f_z[0][0], es.bv.data() + e0, dt, sums);
+    if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
+    for (int l = 0; l < nb; ++l) {
+#pragma GCC unroll 4
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        fr_out[n] -= scale * f_r[i][l];
+        fz_out[n] -= scale * f_z[i][l];
+      }
+    }
+    if (v_r == nullptr) continue;
+    double c = 0.0;
+    for (int l = 0; l < nb; ++l) {
+      for (int i = 0; i < 4; ++i) {
+        const int n = nd[l][i];
+        c += f_r[i][l] * (ur[i][l] - v_r[n]) + f_z[i][l] * (uz[i][l] - v_z[n]);
+      }
+    }
+    sums.kick_correction -= 0.5 * dt * c;
+  }
+}
+
+// Subcycled nodal update (element_loop.hpp): listed nodes, each with its level's step.
+CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
+  const int* __restrict order = a.order;
+  double* __restrict pr = a.r;
+  double* __restrict pz = a.z;
+  double* __restrict pvr = a.vr;
+  double* __restrict pvz = a.vz;
+  double* __restrict pfr = a.fr;
+  double* __restrict pfz = a.fz;
+  const double* __restrict pm = a.m;
+  const double* __restrict pim = a.im;
+  const double* __restrict pfree_r = a.free_r;
+  const double* __restrict pfree_z = a.free_z;
+  const double* __restrict psph = a.sphere;
+  const double* __restrict pscale = a.scale;
+  const double dt_avg = a.dt_avg;
+  const double dt = a.step[0];
+  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
+#pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
+  for (int k = 0; k < a.count; ++k) {
+    const int i = order[k];
+    const double h = dt * pscale[i];
+    const double vr_new = (pvr[i] + dt_avg * pfr[i] * pim[i]) * pfree_r[i];
+    const double vz_new = (pvz[i] + dt_avg * pfz[i] * pim[i]) * pfree_z[i];
+    const double k_i = 0.5 * pm[i] * (pvr[i] * vr_new + pvz[i] * vz_new);
+    ke += k_i;
+    ke_sphere += k_i * psph[i];
+    p_sphere += pm[i] * vz_new * psph[i];
+    mz_sphere += pm[i] * pz[i] * psph[i];
+    pvr[i] = vr_new;
+    pvz[i] = vz_new;
+    pr[i] += h * vr_new;
+    pz[i] += h * vz_new;
+    pfr[i] = 0.0;
+    pfz[i] = 0.0;
+  }
+  return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
+}
+
+// Subcycled nodal update over all nodes (element_loop.hpp): contiguous and vectorised; a node not
+// due has no force (no element of its has updated) and a zero step.
+CORLAB_SIMD_CLONES NodeSums node_update_due(const SubcycledNodes& a, int nn, int due_level) {
+  double* __restrict pr = a.r;
+  double* __restrict pz = a.z;
+  double* __restrict pvr = a.vr;
+  double* __restrict pvz = a.vz;
+  double* __restrict pfr = a.fr;
+  double* __restrict pfz = a.fz;
+  const double* __restrict pm = a.m;
+  const double* __restrict pim = a.im;
+  const double* __restrict pfree_r = a.free_r;
+  const double* __restrict pfree_z = a.free_z;
+  const double* __restrict psph = a.sphere;
+  const double* __restrict pscale = a.scale;
+  const double dt_avg = a.dt_avg;
+  const double dt = a.step[0];
+  const auto due_scale = static_cast<double>(1 << due_level);
+  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
+#pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
+  for (int i = 0; i < nn; ++i) {
+    const double h = pscale[i] <= due_scale ? dt * pscale[i] : 0.0;
+    const double vr_new = (pvr[i] + dt_avg * pfr[i] * pim[i]) * pfree_r[i];
+    const double vz_new = (pvz[i] + dt_avg * pfz[i] * pim[i]) * pfree_z[i];
+    const double k_i = 0.5 * pm[i] * (pvr[i] * vr_new + pvz[i] * vz_new);
+    ke += k_i;
+    ke_sphere += k_i * psph[i];
+    p_sphere += pm[i] * vz_new * psph[i];
+    mz_sphere += pm[i] * pz[i] * psph[i];
+    pvr[i] = vr_new;
+    pvz[i] = vz_new;
+    pr[i] += h * vr_new;
+    pz[i] += h * vz_new;
+    pfr[i] = 0.0;
+    pfz[i] = 0.0;
+  }
+  return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
 }
 
 // Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +

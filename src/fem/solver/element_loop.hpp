@@ -30,6 +30,10 @@ struct ElementState {
   std::vector<double> srr, szz, stt, srz;  // Cauchy stress [Pa]
   std::vector<double> eps_p;               // equivalent plastic strain [-]
   std::vector<double> qr, qz;              // hourglass generalised forces [N]
+  // Subcycling only: nodal positions at each element's last update [m], 4 per element (element
+  // e: [4 e, 4 e + 4)).
+  std::vector<double> r_prev, z_prev;
+  std::vector<double> bv;  // viscous mean stress at each element's last update [Pa]
   void resize(std::size_t n) {
     nodes.resize(n);
     for (auto* v : {&srr, &szz, &stt, &srz, &eps_p, &qr, &qz}) v->assign(n, 0.0);
@@ -46,6 +50,10 @@ struct ElementSums {
   double dt_min = std::numeric_limits<double>::infinity();
   double omega_min = std::numeric_limits<double>::infinity();  // smallest volume or area
   int bad_element = -1;  // first element of the block holding an inverted element
+  // Subcycling: (1/2) sum of -f_int . (dx - dt v), dx the element's last interval, v its nodes'
+  // velocities before the kick: what the product-form kinetic energy at a major-cycle boundary
+  // lacks of the work of an element that steps longer than its nodes [J].
+  double kick_correction = 0.0;
 };
 
 // Sums of the nodal update.
@@ -71,6 +79,58 @@ void element_loop(const BodyParams& p,
                   double* __restrict fz_out,
                   double dt,
                   ElementSums& sums);
+
+/// element_loop for one subcycling level L (docs/theory/solver.md section 11): each element of
+/// [begin, end) steps over dt = 2^L x the base step from its stored positions (es.r_prev/z_prev,
+/// updated) to r, z (all its nodes are in sync); the rate is (x - x_prev) / dt. fr_out/fz_out
+/// receive -scale f_int, scale = 2^L: the element's impulse in base-step units, applied to its
+/// nodes now (asynchronous variational integrator). v_r/v_z (nodal velocities, or null): add
+/// the energy balance's kick_correction.
+void element_loop_subcycled(const BodyParams& p,
+                            ElementState& es,
+                            int begin,
+                            int end,
+                            const double* __restrict r,
+                            const double* __restrict z,
+                            double* __restrict fr_out,
+                            double* __restrict fz_out,
+                            double dt,
+                            double scale,
+                            const double* __restrict v_r,
+                            const double* __restrict v_z,
+                            ElementSums& sums);
+
+/// Arrays of the subcycled nodal update.
+struct SubcycledNodes {
+  const int* order;     // node indices to update
+  int count;            // how many
+  const double* step;   // step of each level [s]
+  const double* scale;  // 2^level of each node [-]
+  double dt_avg;        // mean of the base steps before and after now [s]
+  double* r;
+  double* z;
+  double* vr;
+  double* vz;
+  double* fr;  // impulses / dt_avg [N] (zeroed)
+  double* fz;
+  const double* m;
+  const double* im;
+  const double* free_r;
+  const double* free_z;
+  const double* sphere;
+};
+
+/// Subcycled nodal update of the listed nodes (those due now): kick v += dt_avg f/m (f: the
+/// 2^L-weighted forces of the elements due now and the contact), then drift x += h v over the
+/// node's own step h = step[level]. Sums: kinetic energy in product form, sphere momentum after
+/// the kick, sum m z before the drift (the whole model's when all nodes are due: a major-cycle
+/// boundary).
+NodeSums node_update_subcycled(const SubcycledNodes& a);
+
+/// The same over all nn nodes in index order (a.order unused), vectorised: the nodes of level <=
+/// due_level are due; the others have no force (none of their elements updated) and do not move.
+/// Faster than the listed update when most nodes are due.
+NodeSums node_update_due(const SubcycledNodes& a, int nn, int due_level);
 
 /// Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
 /// dt v^{n+1/2}, forces zeroed for the next assembly; dt, dt_avg [s].

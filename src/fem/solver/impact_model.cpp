@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/units.hpp"
@@ -167,6 +169,114 @@ void set_time_scales(const ImpactConfig& config, ImpactModel& m) {
   m.max_steps = sc.max_steps;
 }
 
+/// Stable step of element e at the start positions (as for dt_critical) [s].
+double initial_element_step(const ImpactModel& m, int e) {
+  const auto& nd = m.element_nodes[e];
+  double xr[4], xz[4];
+  for (int i = 0; i < 4; ++i) {
+    xr[i] = m.r0[nd[i]];
+    xz[i] = m.z0[nd[i]];
+  }
+  const BodyParams& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
+  return element_stable_time_step(characteristic_length(quad4_geometry(xr, xz)), p.wave_speed,
+                                  p.b1);
+}
+
+/// Level of each node: the smallest level of its elements.
+std::vector<int> node_levels(const ImpactModel& m, const std::vector<int>& element_level) {
+  std::vector<int> level(m.n_nodes, kMaxSubcyclingLevels);
+  for (int e = 0; e < m.n_elements; ++e) {
+    for (int n : m.element_nodes[e]) level[n] = std::min(level[n], element_level[e]);
+  }
+  return level;
+}
+
+/// Level of each element: the largest L <= max_level with 2^L dt_critical <= kLevelMargin x its
+/// own stable step; 0 for an element touching a contact node; then lowered until it is at most
+/// one above the smallest level at its nodes (neighbours differ by at most one level).
+std::vector<int> element_levels(const ImpactModel& m, int max_level) {
+  std::vector<char> contact(m.n_nodes, 0);
+  for (int i : m.slaves) contact[i] = 1;
+  for (int i : m.masters) contact[i] = 1;
+  std::vector<int> level(m.n_elements, 0);
+  for (int e = 0; e < m.n_elements; ++e) {
+    const double dt_e = initial_element_step(m, e);
+    int l = 0;
+    while (l < max_level && std::ldexp(m.dt_critical, l + 1) <= kLevelMargin * dt_e) ++l;
+    for (int n : m.element_nodes[e]) l = contact[n] != 0 ? 0 : l;
+    level[e] = l;
+  }
+  for (bool changed = true; changed;) {
+    changed = false;
+    const std::vector<int> nl = node_levels(m, level);
+    for (int e = 0; e < m.n_elements; ++e) {
+      int lim = level[e];
+      for (int n : m.element_nodes[e]) lim = std::min(lim, nl[n] + 1);
+      changed = changed || lim != level[e];
+      level[e] = lim;
+    }
+  }
+  return level;
+}
+
+/// Elements of each body sorted by level (stable), the level ranges, and the nodes by level.
+/// node_level: each node's level (>= the levels of its elements).
+void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<int> node_level) {
+  SubcyclingLevels& lv = m.levels;
+  std::vector<int> order(m.n_elements);
+  for (int e = 0; e < m.n_elements; ++e) order[e] = e;
+  const auto by_level = [&](int a, int b) { return level[a] < level[b]; };
+  std::stable_sort(order.begin(), order.begin() + m.n_sphere_elements, by_level);
+  std::stable_sort(order.begin() + m.n_sphere_elements, order.end(), by_level);
+  std::vector<std::array<int, 4>> nodes(m.n_elements);
+  std::vector<int> original(m.n_elements);
+  lv.element.assign(m.n_elements, 0);
+  for (int k = 0; k < m.n_elements; ++k) {
+    nodes[k] = m.element_nodes[order[k]];
+    original[k] = m.original_element[order[k]];
+    lv.element[k] = level[order[k]];
+  }
+  m.element_nodes = std::move(nodes);
+  m.original_element = std::move(original);
+  for (int l = 0; l <= kMaxSubcyclingLevels; ++l) {
+    const auto below = [&](int x) { return x <= l; };
+    const auto mid = lv.element.begin() + m.n_sphere_elements;
+    lv.sphere_end[l] = static_cast<int>(std::count_if(lv.element.begin(), mid, below));
+    lv.substrate_end[l] =
+        m.n_sphere_elements + static_cast<int>(std::count_if(mid, lv.element.end(), below));
+  }
+  lv.node = std::move(node_level);
+  lv.node_scale.resize(m.n_nodes);
+  for (int i = 0; i < m.n_nodes; ++i) lv.node_scale[i] = std::ldexp(1.0, lv.node[i]);
+  lv.node_order.resize(m.n_nodes);
+  for (int i = 0; i < m.n_nodes; ++i) lv.node_order[i] = i;
+  std::stable_sort(lv.node_order.begin(), lv.node_order.end(),
+                   [&](int a, int b) { return lv.node[a] < lv.node[b]; });
+  for (int l = 0; l <= kMaxSubcyclingLevels; ++l) {
+    lv.node_end[l] = static_cast<int>(
+        std::count_if(lv.node.begin(), lv.node.end(), [&](int x) { return x <= l; }));
+  }
+}
+
+/// Subcycling levels (solver.subcycling_levels > 0); max_level stays 0 (the run then steps as
+/// without subcycling) when no element can take a longer step or the saving is below
+/// 1 - kMaxUpdateFraction.
+void set_levels(const SolverConfig& sc, ImpactModel& m) {
+  m.levels = SubcyclingLevels{};
+  const int max_level = std::clamp(sc.subcycling_levels, 0, kMaxSubcyclingLevels);
+  if (max_level == 0) return;
+  // Nodes step at the smallest level of their elements, so that every element's nodes are in
+  // sync when it updates (docs/theory/solver.md section 11).
+  const std::vector<int> level = element_levels(m, max_level);
+  const std::vector<int> nl = node_levels(m, level);
+  const int used = *std::max_element(level.begin(), level.end());
+  double updates = 0.0;
+  for (int l : level) updates += std::ldexp(1.0, -l);
+  if (used == 0 || updates > kMaxUpdateFraction * m.n_elements) return;
+  sort_by_level(m, level, nl);
+  m.levels.max_level = used;
+}
+
 }  // namespace
 
 ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
@@ -183,8 +293,25 @@ ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
   m.slaves = mesh.sphere_surface_nodes;
   m.masters = mesh.substrate_surface_nodes;
   set_penalties(config.solver, m);
+  set_levels(config.solver, m);
   set_time_scales(config, m);
   return m;
+}
+
+/// Subcycling state: each element's last positions (the start) and viscous stress (none).
+void init_subcycling(const ImpactModel& m, ImpactState& s) {
+  ElementState& es = s.elements;
+  const auto n4 = 4 * static_cast<std::size_t>(m.n_elements);
+  es.r_prev.resize(n4);
+  es.z_prev.resize(n4);
+  es.bv.assign(static_cast<std::size_t>(m.n_elements), 0.0);
+  for (int e = 0; e < m.n_elements; ++e) {
+    for (int i = 0; i < 4; ++i) {
+      es.r_prev[4 * e + i] = m.r0[m.element_nodes[e][i]];
+      es.z_prev[4 * e + i] = m.z0[m.element_nodes[e][i]];
+    }
+  }
+  s.level_dt_min.fill(std::numeric_limits<double>::infinity());
 }
 
 ImpactState make_initial_state(const ImpactModel& m) {
@@ -207,6 +334,7 @@ ImpactState make_initial_state(const ImpactModel& m) {
   s.t = m.t_start;
   s.dt = m.dt_initial;
   s.sphere_velocity = -m.velocity;
+  if (m.levels.max_level > 0) init_subcycling(m, s);
   return s;
 }
 

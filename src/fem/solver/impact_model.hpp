@@ -14,6 +14,33 @@
 
 namespace corlab::fem::solver {
 
+/// Largest subcycling level (solver.subcycling_levels <= this) [-].
+constexpr int kMaxSubcyclingLevels = 6;
+/// An element gets level L only if 2^L dt_critical <= kLevelMargin x its own stable step, so that
+/// it may deform (its stable step shrink by 1 - kLevelMargin) before it limits the base step [-].
+constexpr double kLevelMargin = 0.8;
+
+/// Subcycling is used only when it leaves at most this fraction of the element updates (sum of
+/// 2^-L over the elements / their number): an update costs about 20 % more than one without
+/// subcycling (the stored positions), so a smaller saving (fast impacts, whose contact zone covers
+/// most of the fine mesh) would slow the run down [-].
+constexpr double kMaxUpdateFraction = 0.8;
+
+/// Element subcycling (docs/theory/solver.md section 11): levels and the ranges they give.
+struct SubcyclingLevels {
+  int max_level = 0;               ///< largest level in use (0 = subcycling off) [-]
+  std::vector<int> element;        ///< level of each (sorted) element [-]
+  std::vector<int> node;           ///< level of each node = min over its elements [-]
+  std::vector<double> node_scale;  ///< 2^level of each node [-]
+  std::vector<int> node_order;     ///< nodes sorted by level
+  /// node_order[0, node_end[L]) are the nodes of level <= L.
+  std::array<int, kMaxSubcyclingLevels + 1> node_end{};
+  /// Elements of level L of the sphere: [sphere_end[L-1] (or 0), sphere_end[L]); substrate the
+  /// same from n_sphere_elements.
+  std::array<int, kMaxSubcyclingLevels + 1> sphere_end{};
+  std::array<int, kMaxSubcyclingLevels + 1> substrate_end{};
+};
+
 struct ImpactModel {
   int n_nodes = 0;
   int n_elements = 0;
@@ -41,6 +68,7 @@ struct ImpactModel {
   double t_expected = 0.0;             ///< expected end, for the progress estimate [s]
   double z_com_start = 0.0;            ///< sphere c.o.m. height at the start [m]
   long long max_steps = 0;             ///< step budget (solver.max_steps)
+  SubcyclingLevels levels;             ///< all 0 unless solver.subcycling_levels > 0
 };
 
 /// Builds the model; throws InputError for an invalid config or mesh (named field).

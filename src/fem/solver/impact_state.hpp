@@ -4,6 +4,7 @@
 /// stresses, contact cursors, time, and the running energy and response sums. One step
 /// (impact_step.hpp) maps a state to the next.
 
+#include <array>
 #include <vector>
 
 #include "fem/solver/element_loop.hpp"
@@ -40,6 +41,15 @@ struct ImpactState {
   double penetration_max = 0.0;  ///< deepest slave penetration [m]
   double sphere_velocity = 0.0;  ///< sphere c.o.m. velocity at the last half step, + up [m/s]
   double sphere_com_z = 0.0;     ///< sphere c.o.m. height at the newest positions [m]
+  // Subcycling only (model.levels.max_level > 0; docs/theory/solver.md section 11): fr/fz then
+  // hold the 2^L-weighted forces of the elements due at each node's next update.
+  /// Smallest stable step / 2^L over the elements of level L at their latest update [s].
+  std::array<double, kMaxSubcyclingLevels + 1> level_dt_min{};
+  bool cycle_penetrating = false;    ///< any slave in contact during this major cycle
+  double t_first_penetrating = 0.0;  ///< start of the cycle's first step in contact [s]
+  double hysteresis_force = 0.0;     ///< contact force at the last major-cycle boundary [N]
+  long long element_steps = 0;       ///< element updates done [-]
+  double kick_correction = 0.0;      ///< ElementSums::kick_correction at the last boundary [J]
 };
 
 /// The state at the start: sphere touching, moving down at v0; everything else at rest.

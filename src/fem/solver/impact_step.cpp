@@ -2,6 +2,8 @@
 #include "fem/solver/impact_step.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "corlab/fem/contact_search.hpp"
 #include "corlab/fem/penalty_contact.hpp"
@@ -11,7 +13,8 @@ namespace {
 
 /// Node-to-segment penalty contact at x^{n+1}: forces into fr/fz, the stored penalty energy, the
 /// total force on the sphere and the deepest penetration.
-bool apply_contact(const ImpactModel& m, ImpactState& s, double& force, double& energy) {
+bool apply_contact(
+    const ImpactModel& m, ImpactState& s, double* fr, double* fz, double& force, double& energy) {
   bool penetrating = false;
   force = 0.0;
   energy = 0.0;
@@ -23,8 +26,7 @@ bool apply_contact(const ImpactModel& m, ImpactState& s, double& force, double& 
     if (!c.active) continue;
     const int a = m.masters[c.segment];
     const int b = m.masters[c.segment + 1];
-    energy += penalty_force(c.projection, m.penalty[k], s.fr[i], s.fz[i], s.fr[a], s.fz[a], s.fr[b],
-                            s.fz[b]);
+    energy += penalty_force(c.projection, m.penalty[k], fr[i], fz[i], fr[a], fz[a], fr[b], fz[b]);
     force += -m.penalty[k] * c.projection.gap * c.projection.nz;
     s.penetration_max = std::max(s.penetration_max, -c.projection.gap);
     penetrating = true;
@@ -32,7 +34,118 @@ bool apply_contact(const ImpactModel& m, ImpactState& s, double& force, double& 
   return penetrating;
 }
 
+/// Adds one pass's element sums to the step's.
+void add_sums(const ElementSums& a, ElementSums& sums) {
+  sums.internal_work += a.internal_work;
+  sums.plastic_work += a.plastic_work;
+  sums.hourglass_work += a.hourglass_work;
+  sums.viscous_work += a.viscous_work;
+  sums.eps_p_max = std::max(sums.eps_p_max, a.eps_p_max);
+  sums.dt_min = std::min(sums.dt_min, a.dt_min);
+  sums.omega_min = std::min(sums.omega_min, a.omega_min);
+  if (sums.bad_element < 0) sums.bad_element = a.bad_element;
+  sums.kick_correction += a.kick_correction;
+}
+
+/// Element passes of one subcycled base step: levels 0..top, each over its own 2^L x dt.
+ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
+  const SubcyclingLevels& lv = m.levels;
+  ElementSums sums;
+  for (int l = 0; l <= top; ++l) {
+    const int sb = l == 0 ? 0 : lv.sphere_end[l - 1];
+    const int ub = l == 0 ? m.n_sphere_elements : lv.substrate_end[l - 1];
+    const double h = std::ldexp(s.dt, l);
+    const double scale = std::ldexp(1.0, l);
+    // The balance is evaluated at major-cycle boundaries only; level 0 needs no correction.
+    const bool correct = l > 0 && top == lv.max_level;
+    const double* v_r = correct ? s.vr.data() : nullptr;
+    const double* v_z = correct ? s.vz.data() : nullptr;
+    ElementSums ls;
+    element_loop_subcycled(m.sphere, s.elements, sb, lv.sphere_end[l], s.r.data(), s.z.data(),
+                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, ls);
+    element_loop_subcycled(m.substrate, s.elements, ub, lv.substrate_end[l], s.r.data(), s.z.data(),
+                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, ls);
+    s.level_dt_min[l] = std::ldexp(ls.dt_min, -l);
+    s.element_steps += lv.sphere_end[l] - sb + lv.substrate_end[l] - ub;
+    add_sums(ls, sums);
+  }
+  return sums;
+}
+
 }  // namespace
+
+int sync_level(long long step, int max_level) {
+  int l = 0;
+  while (l < max_level && (step & (1LL << l)) == 0) ++l;
+  return l;
+}
+
+NodeSums move_nodes_subcycled(const ImpactModel& m, ImpactState& s) {
+  const SubcyclingLevels& lv = m.levels;
+  const int l = sync_level(s.step, lv.max_level);
+  std::array<double, kMaxSubcyclingLevels + 1> step{};
+  for (int k = 0; k <= lv.max_level; ++k) step[k] = std::ldexp(s.dt, k);
+  const SubcycledNodes a{lv.node_order.data(),
+                         lv.node_end[l],
+                         step.data(),
+                         lv.node_scale.data(),
+                         0.5 * (s.dt_prev + s.dt),
+                         s.r.data(),
+                         s.z.data(),
+                         s.vr.data(),
+                         s.vz.data(),
+                         s.fr.data(),
+                         s.fz.data(),
+                         m.mass.data(),
+                         m.inv_mass.data(),
+                         m.free_r.data(),
+                         m.free_z.data(),
+                         m.is_sphere.data()};
+  // Most nodes due (fast runs, major-cycle boundaries): one contiguous pass over all.
+  const NodeSums ns =
+      2 * lv.node_end[l] >= m.n_nodes ? node_update_due(a, m.n_nodes, l) : node_update_subcycled(a);
+  if (l == lv.max_level) {
+    s.sphere_velocity = ns.p_sphere / m.sphere_mass;
+    s.sphere_com_z = ns.mz_sphere / m.sphere_mass;
+    const double indentation = m.z_com_start - s.sphere_com_z;
+    s.hysteresis += 0.5 * (s.hysteresis_force + s.force) * (indentation - s.indentation);
+    s.hysteresis_force = s.force;
+    s.indentation = indentation;
+    s.indentation_max = std::max(s.indentation_max, indentation);
+  }
+  return ns;
+}
+
+ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
+  ForceReport rep;
+  const int top = sync_level(s.step + 1, m.levels.max_level);
+  rep.elements = subcycled_elements(m, s, top);
+  const ElementSums& sums = rep.elements;
+  if (sums.bad_element >= 0) rep.inverted_element = m.original_element[sums.bad_element];
+  s.energy.internal += sums.internal_work;
+  s.energy.plastic += sums.plastic_work;
+  s.energy.hourglass += sums.hourglass_work;
+  s.energy.viscous += sums.viscous_work;
+  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
+
+  double force = 0.0;
+  rep.penetrating = apply_contact(m, s, s.fr.data(), s.fz.data(), force, s.energy.contact);
+  if (rep.penetrating && !s.cycle_penetrating) s.t_first_penetrating = s.t;
+  s.cycle_penetrating = s.cycle_penetrating || rep.penetrating;
+  s.force = force;
+  s.force_max = std::max(s.force_max, force);
+
+  s.t += s.dt;
+  ++s.step;
+  s.dt_prev = s.dt;
+  if (top == m.levels.max_level) {
+    s.kick_correction = sums.kick_correction;
+    double dt_min = s.level_dt_min[0];
+    for (int l = 1; l <= top; ++l) dt_min = std::min(dt_min, s.level_dt_min[l]);
+    s.dt = m.safety_factor * dt_min;
+  }
+  return rep;
+}
 
 NodeSums move_nodes(const ImpactModel& m, ImpactState& s) {
   const double dt_avg = 0.5 * (s.dt_prev + s.dt);
@@ -60,7 +173,7 @@ ForceReport compute_forces(const ImpactModel& m, ImpactState& s) {
   s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
 
   double force = 0.0;
-  rep.penetrating = apply_contact(m, s, force, s.energy.contact);
+  rep.penetrating = apply_contact(m, s, s.fr.data(), s.fz.data(), force, s.energy.contact);
   const double indentation = m.z_com_start - s.sphere_com_z;
   s.hysteresis += 0.5 * (s.force + force) * (indentation - s.indentation);
   s.force = force;

@@ -25,4 +25,22 @@ NodeSums move_nodes(const ImpactModel& model, ImpactState& state);
 /// sets the next dt from the stable step.
 ForceReport compute_forces(const ImpactModel& model, ImpactState& state);
 
+/// Element subcycling (docs/theory/solver.md section 11; model.levels.max_level > 0). Base step k
+/// = state.step; state.dt is the base step, changed only at major-cycle boundaries (k a multiple
+/// of 2^max_level, where every node and element is in sync).
+
+/// The largest level L <= max_level with step % 2^L == 0 (max_level for step 0).
+int sync_level(long long step, int max_level);
+
+/// Kinematic half of base step k: the nodes of level <= sync_level(k) (those due at t^k) get the
+/// impulses of the elements due at t^k and move over their own step. At a major-cycle boundary
+/// also the sphere's momentum, c.o.m., indentation and hysteresis at t^k; the returned kinetic
+/// energy is then the whole model's.
+NodeSums move_nodes_subcycled(const ImpactModel& model, ImpactState& state);
+
+/// Force half of base step k: the elements of level <= sync_level(k + 1) over their own interval
+/// ending at t^{k+1} (2^L-weighted forces into fr/fz), contact (level-0 nodes); advances t; at a
+/// major-cycle end, the next base step from each level's latest stable step.
+ForceReport compute_forces_subcycled(const ImpactModel& model, ImpactState& state);
+
 }  // namespace corlab::fem::solver
