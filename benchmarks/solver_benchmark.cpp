@@ -62,7 +62,12 @@ void BM_ImpactVelocity(benchmark::State& state) {
   }
   report(state, r);
 }
-BENCHMARK(BM_ImpactVelocity)->Arg(1)->Arg(700)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_ImpactVelocity)
+    ->Arg(1)
+    ->Arg(700)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
 
 void BM_ElementThroughput(benchmark::State& state) {
   ImpactConfig config;
