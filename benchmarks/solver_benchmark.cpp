@@ -36,12 +36,12 @@ void report(benchmark::State& state, const ImpactResult& r) {
   state.SetLabel(fmt::format("e={:.6f}", r.e));
 }
 
-// The loops keep r alive with DoNotOptimize on a const reference, which only reads it: with the
-// non-const overload of Google Benchmark 1.7.1 ("+m,r" asm operand) r.e read 0 after the loop in
-// this build (GCC 12, -O3, LTO) while every other field was right.
-void BM_PaperCase(benchmark::State& state) {
-  const ImpactConfig config;
-  const corlab::fem::Mesh mesh = corlab::fem::build_impact_mesh(config);  // not timed
+/// Times run_impact on `config` (the mesh is built once, not timed) and reports the last run.
+/// The loop keeps r alive with DoNotOptimize on a const reference, which only reads it: with the
+/// non-const overload of Google Benchmark 1.7.1 ("+m,r" asm operand) r.e read 0 after the loop in
+/// this build (GCC 12, -O3, LTO) while every other field was right.
+void time_runs(benchmark::State& state, const ImpactConfig& config) {
+  const corlab::fem::Mesh mesh = corlab::fem::build_impact_mesh(config);
   ImpactResult r;
   for (auto _ : state) {
     r = corlab::fem::run_impact(config, mesh);
@@ -49,18 +49,17 @@ void BM_PaperCase(benchmark::State& state) {
   }
   report(state, r);
 }
+
+void BM_PaperCase(benchmark::State& state) {
+  const ImpactConfig config;
+  time_runs(state, config);
+}
 BENCHMARK(BM_PaperCase)->Unit(benchmark::kSecond)->Iterations(3)->UseRealTime();
 
 void BM_ImpactVelocity(benchmark::State& state) {
   ImpactConfig config;
   config.impact.velocity = static_cast<double>(state.range(0)) / 10.0;
-  const corlab::fem::Mesh mesh = corlab::fem::build_impact_mesh(config);  // not timed
-  ImpactResult r;
-  for (auto _ : state) {
-    r = corlab::fem::run_impact(config, mesh);
-    benchmark::DoNotOptimize(std::as_const(r).e);
-  }
-  report(state, r);
+  time_runs(state, config);
 }
 BENCHMARK(BM_ImpactVelocity)
     ->Arg(1)
@@ -74,13 +73,7 @@ void BM_ElementThroughput(benchmark::State& state) {
   config.mesh.h_min = static_cast<double>(state.range(0)) * 1e-6;
   config.mesh.contact_elements = 0.0;
   config.solver.t_max = config.impact.gap / config.impact.velocity + 2e-5;
-  const corlab::fem::Mesh mesh = corlab::fem::build_impact_mesh(config);
-  ImpactResult r;
-  for (auto _ : state) {
-    r = corlab::fem::run_impact(config, mesh);
-    benchmark::DoNotOptimize(std::as_const(r).e);
-  }
-  report(state, r);
+  time_runs(state, config);
 }
 BENCHMARK(BM_ElementThroughput)->Arg(500)->Arg(250)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -88,13 +81,7 @@ void BM_Subcycling(benchmark::State& state) {
   ImpactConfig config;
   config.impact.velocity = static_cast<double>(state.range(0)) / 10.0;
   config.solver.subcycling_levels = static_cast<int>(state.range(1));
-  const corlab::fem::Mesh mesh = corlab::fem::build_impact_mesh(config);  // not timed
-  ImpactResult r;
-  for (auto _ : state) {
-    r = corlab::fem::run_impact(config, mesh);
-    benchmark::DoNotOptimize(std::as_const(r).e);
-  }
-  report(state, r);
+  time_runs(state, config);
 }
 BENCHMARK(BM_Subcycling)
     ->Args({50, 0})
