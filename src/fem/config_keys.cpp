@@ -112,8 +112,12 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       +[](ImpactConfig& c) { return &c.mesh.contact_elements; }));
   t.push_back(entry(
       "mesh.refine_factor", "[-]", closed(1.0, 10.0),
-      "refined zone = this x predicted contact radius",
+      "refined zone radius = this x predicted contact radius",
       +[](ImpactConfig& c) { return &c.mesh.refine_factor; }));
+  t.push_back(entry(
+      "mesh.refine_depth", "[-]", closed(0.25, 10.0),
+      "refined zone depth below the contact = this x predicted contact radius",
+      +[](ImpactConfig& c) { return &c.mesh.refine_depth; }));
   t.push_back(entry(
       "mesh.growth", "[-]", closed(1.0, 2.0),
       "size ratio of neighbouring elements outside the zone",

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/contact_estimate.hpp"
 #include "corlab/fem/gmsh_reader.hpp"
+#include "corlab/fem/mesh_quality.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -31,13 +33,21 @@ constexpr double kCoreRightSpacing = 1.1;
 constexpr double kMinBottomAngle = 10.0 * kPi / 180.0;
 constexpr double kMaxBottomAngle = 60.0 * kPi / 180.0;
 constexpr double kRingCornerAngle = 120.0 * kPi / 180.0;
-/// Depth of the uniform-h layer under the sphere's lowest point as a fraction of zone_depth: the
-/// elastic sphere's stresses peak at ~0.5 a below the contact (Johnson 1985, fig. 4.6).
-constexpr double kSphereUniformDepthFraction = 0.5;
+/// Depth of the uniform-h layer under the sphere's lowest point as a fraction of zone_depth (the
+/// substrate's: by default 0.5 a, where the elastic stresses peak, Johnson 1985, fig. 4.6).
+constexpr double kSphereUniformDepthFraction = 1.0;
 /// Ring thickness limits as fractions of R.
 constexpr double kMinRingFraction = 0.12;
 constexpr double kMaxRingFraction = 0.2;
 constexpr double kTopRingFraction = 0.5;
+/// Quality the three-block substrate must have, else the tensor grid is used: corner angles
+/// >= 40 deg and widths >= 0.7 h (a square zone gives 45 deg and 0.72 h at the diagonal).
+constexpr double kMinBlockAngle = 40.0 * kPi / 180.0;
+constexpr double kMinBlockWidth = 0.7;
+/// Subcycling levels and level margin of the cost model that picks the substrate layout (the
+/// solver's defaults; see explicit_cost).
+constexpr int kCostLevels = 4;
+constexpr double kCostLevelMargin = 0.8;
 
 struct Point {
   double r = 0.0;
@@ -573,14 +583,15 @@ std::size_t uniform_count(const std::vector<double>& x, double h) {
   return n;
 }
 
-/// Substrate: the uniform h x h zone [0, Z_r] x [-Z_d, 0] plus two graded blocks around it that
-/// meet on the diagonal from the zone's corner (Z_r, -Z_d) to the far corner (W, -D): the right
-/// block (zone's right edge -> r = W, surface on top) and the bottom block (zone's bottom edge ->
-/// base, axis on the left). Unlike a tensor grid, the zone's fine columns and rows do not run on
-/// to the base and to r = W. The graded edges (surface, axis) start at h g and are capped so that
-/// the diagonal's intervals stay <= h_max; the outer edges (r = W, z = -D) carry as many uniform
-/// intervals as the zone edge facing them.
-void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+/// Three-block substrate: the uniform h x h zone [0, Z_r] x [-Z_d, 0] plus two graded blocks around
+/// it that meet on the diagonal from the zone's corner (Z_r, -Z_d) to the far corner (W, -D): the
+/// right block (zone's right edge -> r = W, surface on top) and the bottom block (zone's bottom
+/// edge -> base, axis on the left). Unlike a tensor grid, the zone's fine columns and rows do not
+/// run on to the base and to r = W. The graded edges (surface, axis) start at h g and are capped so
+/// that the diagonal's intervals stay <= h_max; the outer edges (r = W, z = -D) carry as many
+/// uniform intervals as the zone edge facing them. Returns false (nothing added) when the zone
+/// leaves no room for the blocks.
+bool generate_substrate_blocks(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const double h = o.h_contact;
   const double width = o.substrate_radius;
   const double depth = o.substrate_depth;
@@ -594,8 +605,7 @@ void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) 
   if (nr < 4 || nd < 4 || zr >= 0.8 * width || zd >= 0.8 * depth ||
       width / static_cast<double>(nd) > o.h_max || depth / static_cast<double>(nr) > o.h_max ||
       width / static_cast<double>(nd) < h || depth / static_cast<double>(nr) < h) {
-    generate_substrate_tensor(o, builder, mesh);
-    return;
+    return false;
   }
   // graded distributions along the surface (from r = Z_r) and the axis (from z = -Z_d)
   auto surf = graded_positions(width - zr, h, 0.0, o.growth,
@@ -649,6 +659,71 @@ void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) 
   for (std::size_t i = 1; i <= m; ++i)
     mesh.substrate_surface_nodes.push_back(ids_right[i * (nd + 1) + nd]);
   for (std::size_t i = 0; i <= nr; ++i) mesh.base_nodes.push_back(ids_bottom[i * (m + 1) + m]);
+  return true;
+}
+
+/// Explicit cost of a substrate per unit of simulated time, in updates of its smallest element:
+/// the sum over its elements of 2^-L, L the element subcycling level its characteristic length
+/// L_e (quad_quality) gives against the smallest, L_min: the largest L <= 4 with 2^L L_min <= 0.8
+/// L_e (the solver's defaults: solver.subcycling_levels = 4, kLevelMargin = 0.8).
+double explicit_cost(const Mesh& mesh) {
+  std::vector<double> lengths;
+  for (std::size_t e = 0; e < mesh.quads.size(); ++e) {
+    std::array<double, 4> r{};
+    std::array<double, 4> z{};
+    for (int k = 0; k < 4; ++k) {
+      const auto n = static_cast<std::size_t>(mesh.quads[e][static_cast<std::size_t>(k)]);
+      r[static_cast<std::size_t>(k)] = mesh.r[n];
+      z[static_cast<std::size_t>(k)] = mesh.z[n];
+    }
+    lengths.push_back(quad_quality(r, z).characteristic_length);
+  }
+  const double shortest = *std::min_element(lengths.begin(), lengths.end());
+  double cost = 0.0;
+  for (const double l : lengths) {
+    int level = 0;
+    while (level < kCostLevels && std::ldexp(shortest, level + 1) <= kCostLevelMargin * l) ++level;
+    cost += std::ldexp(1.0, -level);
+  }
+  return cost;
+}
+
+/// The three-block substrate of `o` in a mesh of its own, or nothing when the zone leaves no room
+/// for the blocks or they have an element sharper than kMinBlockAngle or thinner than
+/// kMinBlockWidth x h (a zone much wider than deep makes the diagonal steep and shears them).
+std::optional<Mesh> well_shaped_substrate_blocks(const MeshOptions& o) {
+  Mesh blocks;
+  MeshBuilder builder(blocks);
+  if (!generate_substrate_blocks(o, builder, blocks)) return std::nullopt;
+  const MeshQuality q = mesh_quality(blocks, Body::kSubstrate);
+  if (q.min_angle < kMinBlockAngle || q.min_width < kMinBlockWidth * o.h_contact) {
+    return std::nullopt;
+  }
+  return blocks;
+}
+
+/// Substrate: of the candidate layouts, the cheapest to integrate (explicit_cost): the three
+/// blocks around the zone as given; the tensor grid of the zone as given; the three blocks around
+/// a zone as deep as it is wide (uniform h deeper than asked, but the elements grow in both
+/// directions away from it: cheaper for small contacts, where the tensor grid's fine columns
+/// and rows run on to the base and to r = W).
+void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+  if (well_shaped_substrate_blocks(o)) {
+    generate_substrate_blocks(o, builder, mesh);
+    return;
+  }
+  MeshOptions square = o;
+  square.zone_depth = std::max(o.zone_depth, o.zone_radius);
+  if (const auto blocks = well_shaped_substrate_blocks(square)) {
+    Mesh tensor;
+    MeshBuilder tensor_builder(tensor);
+    generate_substrate_tensor(o, tensor_builder, tensor);
+    if (explicit_cost(*blocks) < explicit_cost(tensor)) {
+      generate_substrate_blocks(square, builder, mesh);
+      return;
+    }
+  }
+  generate_substrate_tensor(o, builder, mesh);
 }
 
 }  // namespace
@@ -694,7 +769,7 @@ MeshOptions mesh_options_for(const ImpactConfig& config) {
   if (config.mesh.contact_elements > 0.0)
     o.h_contact = std::min(o.h_contact, a / config.mesh.contact_elements);
   o.zone_radius = config.mesh.refine_factor * a;
-  o.zone_depth = o.zone_radius;
+  o.zone_depth = config.mesh.refine_depth * a;
   o.growth = config.mesh.growth;
   o.h_max = std::max(config.mesh.h_max, o.h_contact);
   return o;

@@ -33,8 +33,9 @@ struct MeshOptions {
 void validate(const MeshOptions& options);
 
 /// Options for a configuration: h = min(mesh.h_min, a_pred / mesh.contact_elements) (the bound only
-/// when contact_elements > 0), zone_radius = zone_depth = mesh.refine_factor x a_pred, with a_pred
-/// = predicted_contact_radius(config) (contact_estimate.hpp).
+/// when contact_elements > 0), zone_radius = mesh.refine_factor x a_pred, zone_depth =
+/// mesh.refine_depth x a_pred, with a_pred = predicted_contact_radius(config)
+/// (contact_estimate.hpp).
 MeshOptions mesh_options_for(const ImpactConfig& config);
 
 /// Generates both bodies (sphere elements first, then substrate elements).

@@ -47,8 +47,9 @@ template <bool kTrapezoid>
 // geometry x^{n+1/2}, internal + hourglass forces at x^{n+1}, stable step. f_r/f_z receive f_int.
 // kTrapezoid (subcycling): the viscous work over the step is the trapezoid of the viscous stress
 // at its start (bv, updated) and end, the rule that matches the product-form kinetic energy;
-// else the stress at its end (as before subcycling).
-template <bool kTrapezoid>
+// else the stress at its end (as before subcycling). kStableStep: also the stable step
+// (sums.dt_min); a subcycled pass whose step is not used skips it.
+template <bool kTrapezoid, bool kStableStep>
 [[gnu::always_inline]] inline void element_block(const BodyParams& p,
                                                  int nb,
                                                  const double* __restrict xr,
@@ -133,15 +134,17 @@ template <bool kTrapezoid>
       f_r[i * kBlock + l] = fr[i];
       f_z[i * kBlock + l] = fz[i];
     }
-    const double xi = bulk_viscous_damping_ratio(evol, c, length, b1, b2);
-    dt_lane[l] = element_stable_time_step(length, c, xi);
+    if constexpr (kStableStep) {
+      const double xi = bulk_viscous_damping_ratio(evol, c, length, b1, b2);
+      dt_lane[l] = element_stable_time_step(length, c, xi);
+    }
   }
   for (int l = 0; l < nb; ++l) {
     sums.internal_work += w_int[l];
     sums.plastic_work += w_p[l];
     sums.hourglass_work += w_hg[l];
     sums.viscous_work += w_v[l];
-    sums.dt_min = std::min(sums.dt_min, dt_lane[l]);
+    if constexpr (kStableStep) sums.dt_min = std::min(sums.dt_min, dt_lane[l]);
     sums.eps_p_max = std::max(sums.eps_p_max, eps_lane[l]);
     sums.omega_min = std::min(sums.omega_min, omega_lane[l]);
   }
@@ -180,10 +183,10 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    element_block<false>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
-                         es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0,
-                         es.eps_p.data() + e0, es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0],
-                         &f_z[0][0], nullptr, dt, sums);
+    element_block<false, true>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0],
+                               es.srr.data() + e0, es.szz.data() + e0, es.stt.data() + e0,
+                               es.srz.data() + e0, es.eps_p.data() + e0, es.qr.data() + e0,
+                               es.qz.data() + e0, &f_r[0][0], &f_z[0][0], nullptr, dt, sums);
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
@@ -210,6 +213,7 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
                                                double scale,
                                                const double* __restrict v_r,
                                                const double* __restrict v_z,
+                                               bool stable_step,
                                                ElementSums& sums) {
   alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
   alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
@@ -232,10 +236,17 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    element_block<true>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], es.srr.data() + e0,
-                        es.szz.data() + e0, es.stt.data() + e0, es.srz.data() + e0,
-                        es.eps_p.data() + e0, es.qr.data() + e0, es.qz.data() + e0, &f_r[0][0],
-                        &f_z[0][0], es.bv.data() + e0, dt, sums);
+    double* const block_state[] = {es.srr.data() + e0, es.szz.data() + e0,   es.stt.data() + e0,
+                                   es.srz.data() + e0, es.eps_p.data() + e0, es.qr.data() + e0,
+                                   es.qz.data() + e0,  es.bv.data() + e0};
+    const auto& [srr, szz, stt, srz, eps_p, qr, qz, bv] = block_state;
+    if (stable_step) {
+      element_block<true, true>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], srr, szz, stt,
+                                srz, eps_p, qr, qz, &f_r[0][0], &f_z[0][0], bv, dt, sums);
+    } else {
+      element_block<true, false>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], srr, szz, stt,
+                                 srz, eps_p, qr, qz, &f_r[0][0], &f_z[0][0], bv, dt, sums);
+    }
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4

@@ -85,7 +85,8 @@ void element_loop(const BodyParams& p,
 /// updated) to r, z (all its nodes are in sync); the rate is (x - x_prev) / dt. fr_out/fz_out
 /// receive -scale f_int, scale = 2^L: the element's impulse in base-step units, applied to its
 /// nodes now (asynchronous variational integrator). v_r/v_z (nodal velocities, or null): add
-/// the energy balance's kick_correction.
+/// the energy balance's kick_correction. stable_step: also sums.dt_min (else left infinite: a
+/// pass whose stable step is not used, most of them, skips its square roots).
 void element_loop_subcycled(const BodyParams& p,
                             ElementState& es,
                             int begin,
@@ -98,6 +99,7 @@ void element_loop_subcycled(const BodyParams& p,
                             double scale,
                             const double* __restrict v_r,
                             const double* __restrict v_z,
+                            bool stable_step,
                             ElementSums& sums);
 
 /// Arrays of the subcycled nodal update.

@@ -60,12 +60,14 @@ ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
     const bool correct = l > 0 && top == lv.max_level;
     const double* v_r = correct ? s.vr.data() : nullptr;
     const double* v_z = correct ? s.vz.data() : nullptr;
+    // The next base step is set at the major cycle's end only, from that pass's stable steps.
+    const bool stable_step = top == lv.max_level;
     ElementSums ls;
     element_loop_subcycled(m.sphere, s.elements, sb, lv.sphere_end[l], s.r.data(), s.z.data(),
-                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, ls);
+                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, stable_step, ls);
     element_loop_subcycled(m.substrate, s.elements, ub, lv.substrate_end[l], s.r.data(), s.z.data(),
-                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, ls);
-    s.level_dt_min[l] = std::ldexp(ls.dt_min, -l);
+                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, stable_step, ls);
+    if (stable_step) s.level_dt_min[l] = std::ldexp(ls.dt_min, -l);
     s.element_steps += lv.sphere_end[l] - sb + lv.substrate_end[l] - ub;
     add_sums(ls, sums);
   }

@@ -181,7 +181,7 @@ TEST_P(MeshAtVelocity, ContactSizeIsHAlongTheSurfacesAndInDepth) {
     EXPECT_LE(e, 1.3 * h);
   }
   EXPECT_GE(s, o.zone_radius - 1.3 * h);
-  // in depth: axis segments of both bodies within half the zone depth of the contact
+  // in depth: axis segments of both bodies within the zone depth of the contact
   for (const Body body : {Body::kSphere, Body::kSubstrate}) {
     std::vector<double> z;
     for (const int n : m.axis_nodes)
@@ -191,7 +191,7 @@ TEST_P(MeshAtVelocity, ContactSizeIsHAlongTheSurfacesAndInDepth) {
     if (body == Body::kSubstrate) std::reverse(z.begin(), z.end());  // from the contact down
     const double z0 = z.front();
     int checked = 0;
-    for (std::size_t k = 0; k + 1 < z.size() && std::abs(z[k + 1] - z0) <= 0.5 * o.zone_depth;
+    for (std::size_t k = 0; k + 1 < z.size() && std::abs(z[k + 1] - z0) <= o.zone_depth;
          ++k, ++checked) {
       const double e = std::abs(z[k + 1] - z[k]);
       EXPECT_GE(e, 0.7 * h);
@@ -202,6 +202,43 @@ TEST_P(MeshAtVelocity, ContactSizeIsHAlongTheSurfacesAndInDepth) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PaperVelocities, MeshAtVelocity, ::testing::Values(0.1, 5.0, 70.0));
+
+// The refined zone is 1.5 a wide but only mesh.refine_depth x a deep (0.5 a by default).
+TEST(ImpactMesh, RefinedZoneDepthFollowsTheConfig) {
+  ImpactConfig config;
+  config.impact.velocity = 30.0;
+  const double a = predicted_contact_radius(config);
+  EXPECT_DOUBLE_EQ(mesh_options_for(config).zone_depth, 0.5 * a);
+  config.mesh.refine_depth = 1.5;
+  EXPECT_DOUBLE_EQ(mesh_options_for(config).zone_depth, 1.5 * a);
+}
+
+// The substrate layout is the cheaper to integrate with element subcycling: for small contacts
+// the three blocks, whose elements grow away from the zone in both directions; a tensor grid
+// there would carry the zone's h-wide columns down to the base and its h-high rows out to r = W,
+// thin elements with nearly the contact squares' stable step. So far from the zone no substrate
+// element may be as thin as 1.25 h (the tensor grid: h; the blocks: >= 1.5 h at 3.4 zone radii).
+TEST(ImpactMesh, SubstrateElementsFarFromASmallContactAreNotThin) {
+  for (const double v : {0.01, 0.1, 1.0}) {
+    const MeshOptions o = options_at(v);
+    const Mesh m = generate_impact_mesh(o);
+    const double far = 3.0 * o.zone_radius;
+    int thin_far = 0;
+    for (std::size_t e = 0; e < m.quads.size(); ++e) {
+      if (m.element_body[e] != Body::kSubstrate) continue;
+      std::array<double, 4> r{};
+      std::array<double, 4> z{};
+      for (std::size_t k = 0; k < 4; ++k) {
+        r[k] = m.r[static_cast<std::size_t>(m.quads[e][k])];
+        z[k] = m.z[static_cast<std::size_t>(m.quads[e][k])];
+      }
+      const double rc = 0.25 * (r[0] + r[1] + r[2] + r[3]);
+      const double zc = 0.25 * (z[0] + z[1] + z[2] + z[3]);
+      if (std::hypot(rc, zc) > far && quad_quality(r, z).width < 1.25 * o.h_contact) ++thin_far;
+    }
+    EXPECT_EQ(thin_far, 0) << "v = " << v;
+  }
+}
 
 // The explicit step is set by the smallest characteristic length (stable_time_step.hpp). The
 // uniform h x h contact squares of the substrate (the axis column included, whose hoop term
@@ -232,7 +269,7 @@ TEST(MeshOptionsFor, SizesFromThePredictedContactRadius) {
   MeshOptions o = mesh_options_for(config);
   EXPECT_DOUBLE_EQ(o.h_contact, std::min(config.mesh.h_min, a / config.mesh.contact_elements));
   EXPECT_DOUBLE_EQ(o.zone_radius, config.mesh.refine_factor * a);
-  EXPECT_DOUBLE_EQ(o.zone_depth, config.mesh.refine_factor * a);
+  EXPECT_DOUBLE_EQ(o.zone_depth, config.mesh.refine_depth * a);
   EXPECT_DOUBLE_EQ(o.growth, config.mesh.growth);
   EXPECT_DOUBLE_EQ(o.h_max, config.mesh.h_max);
   // slow impact: the contact-elements bound takes over; 0 disables it
