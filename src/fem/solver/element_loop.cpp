@@ -43,111 +43,145 @@ template <bool kTrapezoid>
   }
 }
 
-// The lane-parallel part of one block of nb <= kBlock elements: stress update at the mid-step
-// geometry x^{n+1/2}, internal + hourglass forces at x^{n+1}, stable step. f_r/f_z receive f_int.
-// kTrapezoid (subcycling): the viscous work over the step is the trapezoid of the viscous stress
-// at its start (bv, updated) and end, the rule that matches the product-form kinetic energy;
-// else the stress at its end (as before subcycling). kStableStep: also the stable step
-// (sums.dt_min); a subcycled pass whose step is not used skips it.
+// One block of nb <= kBlock elements: gathered nodal positions x^{n+1} (xr, xz) and velocities
+// v^{n+1/2} (ur, uz), [i * kBlock + lane]; the block's slices of the element state; f_r/f_z
+// receive f_int.
+struct Block {
+  int nb;
+  const double* __restrict xr;
+  const double* __restrict xz;
+  const double* __restrict ur;
+  const double* __restrict uz;
+  double* __restrict srr;
+  double* __restrict szz;
+  double* __restrict stt;
+  double* __restrict srz;
+  double* __restrict eps_p;
+  double* __restrict qr;
+  double* __restrict qz;
+  double* __restrict bv;  // viscous mean stress at the last update (kTrapezoid only)
+  double* __restrict f_r;
+  double* __restrict f_z;
+};
+
+// Per-lane results of a block (no reductions inside the lane loop, so it vectorises without
+// reassociation).
+struct LaneResults {
+  alignas(64) double w_int[kBlock], w_p[kBlock], w_hg[kBlock], w_v[kBlock];
+  alignas(64) double dt[kBlock], eps_p[kBlock], omega[kBlock];
+};
+
+// Adds the block's per-lane results to the pass's sums.
+template <bool kStableStep>
+[[gnu::always_inline]] inline void add_lane_sums(const LaneResults& out,
+                                                 int nb,
+                                                 ElementSums& sums) {
+  for (int l = 0; l < nb; ++l) {
+    sums.internal_work += out.w_int[l];
+    sums.plastic_work += out.w_p[l];
+    sums.hourglass_work += out.w_hg[l];
+    sums.viscous_work += out.w_v[l];
+    if constexpr (kStableStep) sums.dt_min = std::min(sums.dt_min, out.dt[l]);
+    sums.eps_p_max = std::max(sums.eps_p_max, out.eps_p[l]);
+    sums.omega_min = std::min(sums.omega_min, out.omega[l]);
+  }
+}
+
+// What the stress update of one lane hands to its force computation.
+struct LaneStress {
+  AxisymTensor s;  // Cauchy stress after the update [Pa]
+  double evol;     // volumetric strain rate trace d [1/s]
+  double vol_mid;  // volume at the mid-step geometry [m^3]
+};
+
+// Stress update of lane l: rates at the mid-step geometry x^{n+1/2} (nodes r, z at x^{n+1},
+// velocities vr, vz), objective (Hughes-Winget) rotation, J2 return; the block's stress and
+// plastic strain updated, the lane's internal and plastic work into `out`.
+[[gnu::always_inline]] inline LaneStress lane_stress(const J2Plasticity& mat,
+                                                     const Block& b,
+                                                     int l,
+                                                     const double* r,
+                                                     const double* z,
+                                                     const double* vr,
+                                                     const double* vz,
+                                                     double dt,
+                                                     LaneResults& out) {
+  double mr[4], mz[4];
+#pragma GCC unroll 4
+  for (int i = 0; i < 4; ++i) {
+    mr[i] = r[i] - 0.5 * dt * vr[i];
+    mz[i] = z[i] - 0.5 * dt * vz[i];
+  }
+  const Quad4Geometry gm = quad4_geometry(mr, mz);
+  const StrainRate rate = quad4_strain_rate(gm, vr, vz);
+  AxisymTensor s{b.srr[l], b.szz[l], b.stt[l], b.srz[l]};
+  rotate_hughes_winget(s, rate.spin * dt);
+  const AxisymTensor s_old = s;
+  const AxisymTensor de{rate.d.rr * dt, rate.d.zz * dt, rate.d.tt * dt, rate.d.rz * dt};
+  const double vol_mid = kTwoPi * gm.omega;
+  J2Plasticity::State state{b.eps_p[l]};
+  const J2Plasticity::Increment inc = mat.update(s, state, de);
+  b.eps_p[l] = state.eps_p;
+  out.eps_p[l] = state.eps_p;
+  out.w_p[l] = vol_mid * inc.plastic_work;
+  out.w_int[l] = 0.5 * vol_mid * (contract(s_old, de) + contract(s, de));
+  b.srr[l] = s.rr;
+  b.szz[l] = s.zz;
+  b.stt[l] = s.tt;
+  b.srz[l] = s.rz;
+  return LaneStress{s, trace(rate.d), vol_mid};
+}
+
+// The lane-parallel part of one block: stress update at the mid-step geometry x^{n+1/2}
+// (lane_stress), bulk viscosity, internal + hourglass forces at x^{n+1} into b.f_r/f_z, and the
+// stable step (kStableStep; a subcycled pass whose step is not used skips it); the block's sums
+// added to `sums`. kTrapezoid (subcycling): the viscous work over the step is the trapezoid of
+// the viscous stress at its start (b.bv, updated) and end, the rule that matches the
+// product-form kinetic energy; else the stress at its end (as before subcycling).
 template <bool kTrapezoid, bool kStableStep>
 [[gnu::always_inline]] inline void element_block(const BodyParams& p,
-                                                 int nb,
-                                                 const double* __restrict xr,
-                                                 const double* __restrict xz,
-                                                 const double* __restrict ur,
-                                                 const double* __restrict uz,
-                                                 double* __restrict srr,
-                                                 double* __restrict szz,
-                                                 double* __restrict stt,
-                                                 double* __restrict srz,
-                                                 double* __restrict eps_p,
-                                                 double* __restrict qr,
-                                                 double* __restrict qz,
-                                                 double* __restrict f_r,
-                                                 double* __restrict f_z,
-                                                 double* __restrict bv,
+                                                 const Block& b,
                                                  double dt,
                                                  ElementSums& sums) {
-  const J2Plasticity mat = p.material;
-  const double shear = mat.shear_modulus;
-  const double rho = p.density;
   const double c = p.wave_speed;
-  const double kappa = p.hourglass;
-  const double b1 = p.b1;
-  const double b2 = p.b2;
-  // Per-lane results (no reductions inside the loop, so it vectorises without reassociation).
-  alignas(64) double w_int[kBlock], w_p[kBlock], w_hg[kBlock], w_v[kBlock];
-  alignas(64) double dt_lane[kBlock], eps_lane[kBlock], omega_lane[kBlock];
+  LaneResults out;
 #pragma GCC ivdep
-  for (int l = 0; l < nb; ++l) {
-    double r[4], z[4], vr[4], vz[4], mr[4], mz[4];
+  for (int l = 0; l < b.nb; ++l) {
+    double r[4], z[4], vr[4], vz[4];
 #pragma GCC unroll 4
     for (int i = 0; i < 4; ++i) {
-      r[i] = xr[i * kBlock + l];
-      z[i] = xz[i * kBlock + l];
-      vr[i] = ur[i * kBlock + l];
-      vz[i] = uz[i * kBlock + l];
-      mr[i] = r[i] - 0.5 * dt * vr[i];
-      mz[i] = z[i] - 0.5 * dt * vz[i];
+      r[i] = b.xr[i * kBlock + l];
+      z[i] = b.xz[i * kBlock + l];
+      vr[i] = b.ur[i * kBlock + l];
+      vz[i] = b.uz[i * kBlock + l];
     }
-    // Rates at the mid-step configuration; objective (Hughes-Winget) stress update.
-    const Quad4Geometry gm = quad4_geometry(mr, mz);
-    const StrainRate rate = quad4_strain_rate(gm, vr, vz);
-    AxisymTensor s{srr[l], szz[l], stt[l], srz[l]};
-    rotate_hughes_winget(s, rate.spin * dt);
-    const AxisymTensor s_old = s;
-    const AxisymTensor de{rate.d.rr * dt, rate.d.zz * dt, rate.d.tt * dt, rate.d.rz * dt};
-    const double vol_mid = kTwoPi * gm.omega;
-    J2Plasticity::State state{eps_p[l]};
-    const J2Plasticity::Increment inc = mat.update(s, state, de);
-    eps_p[l] = state.eps_p;
-    w_p[l] = vol_mid * inc.plastic_work;
-    eps_lane[l] = state.eps_p;
-    w_int[l] = 0.5 * vol_mid * (contract(s_old, de) + contract(s, de));
-    srr[l] = s.rr;
-    szz[l] = s.zz;
-    stt[l] = s.tt;
-    srz[l] = s.rz;
-    // Forces and stable step at x^{n+1}.
+    LaneStress ls = lane_stress(p.material, b, l, r, z, vr, vz, dt, out);
     const Quad4Geometry g = quad4_geometry(r, z);
-    omega_lane[l] = std::min(g.omega, g.area);
+    out.omega[l] = std::min(g.omega, g.area);
     const double length = characteristic_length(g);
-    const double evol = trace(rate.d);
-    const double s_bv = bulk_viscous_stress(evol, rho, c, length, b1, b2);
-    w_v[l] = viscous_work<kTrapezoid>(bv, l, vol_mid, s_bv, evol, dt);
-    s.rr += s_bv;
-    s.zz += s_bv;
-    s.tt += s_bv;
+    const double s_bv = bulk_viscous_stress(ls.evol, p.density, c, length, p.b1, p.b2);
+    out.w_v[l] = viscous_work<kTrapezoid>(b.bv, l, ls.vol_mid, s_bv, ls.evol, dt);
+    ls.s.rr += s_bv;
+    ls.s.zz += s_bv;
+    ls.s.tt += s_bv;
     double fr[4], fz[4];
-    quad4_internal_forces(g, s, fr, fz);
+    quad4_internal_forces(g, ls.s, fr, fz);
     double gamma[4];
     hourglass_shape(g, r, z, gamma);
-    const double k_hg =
-        hourglass_stiffness(kappa, shear, kTwoPi * g.omega, quad4_gradient_norm2(g));
-    double q_r = qr[l];
-    double q_z = qz[l];
-    w_hg[l] = hourglass_update(gamma, vr, vz, k_hg, dt, q_r, q_z, fr, fz);
-    qr[l] = q_r;
-    qz[l] = q_z;
+    const double k_hg = hourglass_stiffness(p.hourglass, p.material.shear_modulus, kTwoPi * g.omega,
+                                            quad4_gradient_norm2(g));
+    out.w_hg[l] = hourglass_update(gamma, vr, vz, k_hg, dt, b.qr[l], b.qz[l], fr, fz);
 #pragma GCC unroll 4
     for (int i = 0; i < 4; ++i) {
-      f_r[i * kBlock + l] = fr[i];
-      f_z[i * kBlock + l] = fz[i];
+      b.f_r[i * kBlock + l] = fr[i];
+      b.f_z[i * kBlock + l] = fz[i];
     }
     if constexpr (kStableStep) {
-      const double xi = bulk_viscous_damping_ratio(evol, c, length, b1, b2);
-      dt_lane[l] = element_stable_time_step(length, c, xi);
+      const double xi = bulk_viscous_damping_ratio(ls.evol, c, length, p.b1, p.b2);
+      out.dt[l] = element_stable_time_step(length, c, xi);
     }
   }
-  for (int l = 0; l < nb; ++l) {
-    sums.internal_work += w_int[l];
-    sums.plastic_work += w_p[l];
-    sums.hourglass_work += w_hg[l];
-    sums.viscous_work += w_v[l];
-    if constexpr (kStableStep) sums.dt_min = std::min(sums.dt_min, dt_lane[l]);
-    sums.eps_p_max = std::max(sums.eps_p_max, eps_lane[l]);
-    sums.omega_min = std::min(sums.omega_min, omega_lane[l]);
-  }
+  add_lane_sums<kStableStep>(out, b.nb, sums);
 }
 
 // One pass over the elements [begin, end) of one body; fr/fz (nodal) receive -f_int. Compiled
@@ -183,10 +217,22 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    element_block<false, true>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0],
-                               es.srr.data() + e0, es.szz.data() + e0, es.stt.data() + e0,
-                               es.srz.data() + e0, es.eps_p.data() + e0, es.qr.data() + e0,
-                               es.qz.data() + e0, &f_r[0][0], &f_z[0][0], nullptr, dt, sums);
+    const Block b{nb,
+                  &xr[0][0],
+                  &xz[0][0],
+                  &ur[0][0],
+                  &uz[0][0],
+                  es.srr.data() + e0,
+                  es.szz.data() + e0,
+                  es.stt.data() + e0,
+                  es.srz.data() + e0,
+                  es.eps_p.data() + e0,
+                  es.qr.data() + e0,
+                  es.qz.data() + e0,
+                  nullptr,
+                  &f_r[0][0],
+                  &f_z[0][0]};
+    element_block<false, true>(p, b, dt, sums);
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
@@ -236,16 +282,25 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    double* const block_state[] = {es.srr.data() + e0, es.szz.data() + e0,   es.stt.data() + e0,
-                                   es.srz.data() + e0, es.eps_p.data() + e0, es.qr.data() + e0,
-                                   es.qz.data() + e0,  es.bv.data() + e0};
-    const auto& [srr, szz, stt, srz, eps_p, qr, qz, bv] = block_state;
+    const Block b{nb,
+                  &xr[0][0],
+                  &xz[0][0],
+                  &ur[0][0],
+                  &uz[0][0],
+                  es.srr.data() + e0,
+                  es.szz.data() + e0,
+                  es.stt.data() + e0,
+                  es.srz.data() + e0,
+                  es.eps_p.data() + e0,
+                  es.qr.data() + e0,
+                  es.qz.data() + e0,
+                  es.bv.data() + e0,
+                  &f_r[0][0],
+                  &f_z[0][0]};
     if (stable_step) {
-      element_block<true, true>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], srr, szz, stt,
-                                srz, eps_p, qr, qz, &f_r[0][0], &f_z[0][0], bv, dt, sums);
+      element_block<true, true>(p, b, dt, sums);
     } else {
-      element_block<true, false>(p, nb, &xr[0][0], &xz[0][0], &ur[0][0], &uz[0][0], srr, szz, stt,
-                                 srz, eps_p, qr, qz, &f_r[0][0], &f_z[0][0], bv, dt, sums);
+      element_block<true, false>(p, b, dt, sums);
     }
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
