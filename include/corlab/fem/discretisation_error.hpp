@@ -7,10 +7,10 @@
 ///   GCI = Fs |e_h - e_2h| / (2^p - 1),  Fs = 3 (two grids), p = 2 (formal order)  =>  |e_h -
 ///   e_2h|.
 /// The error bar is e_h +/- GCI, not an extrapolation: penalty contact and the moving elastic-
-/// plastic front make the convergence of e non-monotone (paper case at 5 m/s: e = 0.5541,
-/// 0.5374, 0.5419, 0.5354, 0.5363 at h = 1, 0.5, 0.35, 0.25, 0.2 mm), so a Richardson-extrapolated
+/// plastic front make the convergence of e non-monotone (paper case at 5 m/s: e = 0.5546,
+/// 0.5368, 0.5422, 0.5351, 0.5364 at h = 1, 0.5, 0.35, 0.25, 0.2 mm), so a Richardson-extrapolated
 /// value would be less reliable than the fine-mesh value itself. Verified on that series:
-/// (0.5, 0.25) gives 0.5354 +/- 0.0020, which brackets the 0.2 mm value
+/// (0.5, 0.25) gives 0.5351 +/- 0.0016, which brackets the 0.2 mm value
 /// (tests/verification/impact_paper_case_test.cpp, MeshConvergence).
 
 #include "corlab/fem/impact_config.hpp"
