@@ -64,6 +64,33 @@ struct Block {
   double* __restrict f_z;
 };
 
+// Gathered nodal values and computed forces of one block, [node i][lane].
+struct BlockLanes {
+  alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
+  alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
+};
+
+// The block of nb elements from e0: its lanes and its slices of the element state (the viscous
+// stress history only with `viscous_history`, i.e. subcycling).
+[[gnu::always_inline]] inline Block block_at(
+    ElementState& es, int e0, int nb, BlockLanes& lanes, bool viscous_history) {
+  return Block{nb,
+               &lanes.xr[0][0],
+               &lanes.xz[0][0],
+               &lanes.ur[0][0],
+               &lanes.uz[0][0],
+               es.srr.data() + e0,
+               es.szz.data() + e0,
+               es.stt.data() + e0,
+               es.srz.data() + e0,
+               es.eps_p.data() + e0,
+               es.qr.data() + e0,
+               es.qz.data() + e0,
+               viscous_history ? es.bv.data() + e0 : nullptr,
+               &lanes.f_r[0][0],
+               &lanes.f_z[0][0]};
+}
+
 // Per-lane results of a block (no reductions inside the lane loop, so it vectorises without
 // reassociation).
 struct LaneResults {
@@ -201,8 +228,8 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
                                      double* __restrict fz_out,
                                      double dt,
                                      ElementSums& sums) {
-  alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
-  alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
+  BlockLanes lanes;
+  auto& [xr, xz, ur, uz, f_r, f_z] = lanes;
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
     const std::array<int, 4>* nd = es.nodes.data() + e0;
@@ -217,21 +244,7 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    const Block b{nb,
-                  &xr[0][0],
-                  &xz[0][0],
-                  &ur[0][0],
-                  &uz[0][0],
-                  es.srr.data() + e0,
-                  es.szz.data() + e0,
-                  es.stt.data() + e0,
-                  es.srz.data() + e0,
-                  es.eps_p.data() + e0,
-                  es.qr.data() + e0,
-                  es.qz.data() + e0,
-                  nullptr,
-                  &f_r[0][0],
-                  &f_z[0][0]};
+    const Block b = block_at(es, e0, nb, lanes, false);
     element_block<false, true>(p, b, dt, sums);
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
     for (int l = 0; l < nb; ++l) {
@@ -261,8 +274,8 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
                                                const double* __restrict v_z,
                                                bool stable_step,
                                                ElementSums& sums) {
-  alignas(64) double xr[4][kBlock], xz[4][kBlock], ur[4][kBlock], uz[4][kBlock];
-  alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
+  BlockLanes lanes;
+  auto& [xr, xz, ur, uz, f_r, f_z] = lanes;
   const double inv_dt = 1.0 / dt;
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
@@ -282,21 +295,7 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
       }
     }
     const double omega_before = sums.omega_min;
-    const Block b{nb,
-                  &xr[0][0],
-                  &xz[0][0],
-                  &ur[0][0],
-                  &uz[0][0],
-                  es.srr.data() + e0,
-                  es.szz.data() + e0,
-                  es.stt.data() + e0,
-                  es.srz.data() + e0,
-                  es.eps_p.data() + e0,
-                  es.qr.data() + e0,
-                  es.qz.data() + e0,
-                  es.bv.data() + e0,
-                  &f_r[0][0],
-                  &f_z[0][0]};
+    const Block b = block_at(es, e0, nb, lanes, true);
     if (stable_step) {
       element_block<true, true>(p, b, dt, sums);
     } else {
