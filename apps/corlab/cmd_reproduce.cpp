@@ -21,6 +21,7 @@
 #include "command.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/interrupt.hpp"
+#include "corlab/core/process.hpp"
 #include "corlab/study/reproduce.hpp"
 
 namespace corlab::cli {
@@ -39,6 +40,7 @@ struct ReproduceArgs {
   bool error_estimate = true;
 };
 
+/// `s` quoted for a POSIX shell, for showing command lines (nothing runs through a shell).
 std::string shell_quote(const std::string& s) {
   std::string out = "'";
   for (const char c : s) {
@@ -95,11 +97,20 @@ int make_report(const fs::path& out_dir) {
   }
   ::setenv("PYTHONPATH", pythonpath.c_str(), 1);
   ::setenv("MPLBACKEND", "Agg", 1);
-  const std::string cmd = "/usr/bin/python3 -m corlab.report " + shell_quote(out_dir.string());
-  std::fprintf(stderr, "corlab: report: PYTHONPATH=%s %s\n", pydir.string().c_str(), cmd.c_str());
-  const int status = std::system(cmd.c_str());
+  const std::vector<std::string> argv = {"/usr/bin/python3", "-m", "corlab.report",
+                                         out_dir.string()};
+  std::fprintf(stderr, "corlab: report: PYTHONPATH=%s %s -m corlab.report %s\n",
+               pydir.string().c_str(), argv[0].c_str(), shell_quote(argv[3]).c_str());
+  int status = 0;
+  try {
+    status = run_process(argv);  // no shell: the directory name reaches Python as it is
+  } catch (const std::exception& err) {
+    std::fprintf(stderr, "corlab: the report failed: %s\n", err.what());
+    return 1;
+  }
   if (status != 0) {
-    std::fprintf(stderr, "corlab: the report failed (status %d)\n", status);
+    std::fprintf(stderr, "corlab: the report failed (%s exited with status %d)\n", argv[0].c_str(),
+                 status);
     return 1;
   }
   std::fprintf(stderr, "corlab: report written to %s\n",

@@ -5,6 +5,10 @@ Every function takes the report directory (the output of ``corlab reproduce``) a
 the data for it are missing (the report then says so). Axes carry SI units (mm, us and kN where
 those read better). No experimental points are drawn: no published numbers are available to
 corlab (docs/reference models.md section 7).
+
+Every model line and reference value comes from fit.json (written by the C++ ``corlab
+reproduce``: "verification", "figure_lines", "fits", "paper"); this module holds no formula and
+no published constant of its own, it only plots.
 """
 from __future__ import annotations
 
@@ -16,10 +20,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-PAPER = {"s": 0.056, "alpha": 1.16, "beta": 0.253, "n": 4.5, "m": -3.5, "c": 0.05, "K": 15.81}
-SIGMA0 = 100e6
-E0 = 100e9
 
 
 def read_csv(path):
@@ -94,14 +94,16 @@ def fig2_mesh(out_dir, fit):
     return _save(fig, out_dir, "fig02_mesh.png")
 
 
-def _hertz_force(delta, E_star, R):
-    return 4.0 / 3.0 * E_star * math.sqrt(R) * max(delta, 0.0) ** 1.5
+def verification_run(fit, case_id):
+    """The entry of fit.json's "verification"/"hertz" of one run ({} when there is none)."""
+    for r in fit.get("verification", {}).get("hertz", []):
+        if r.get("case_id") == case_id:
+            return r
+    return {}
 
 
-def effective_modulus(cfg):
-    s = cfg["sphere"]["material"]
-    b = cfg["substrate"]["material"]
-    return 1.0 / ((1 - s["nu"] ** 2) / s["E"] + (1 - b["nu"] ** 2) / b["E"])
+def _paper(fit, key):
+    return num(fit.get("paper", {}).get(key))
 
 
 def fig3_hertz(out_dir, fit):
@@ -115,12 +117,9 @@ def fig3_hertz(out_dir, fit):
         label = "FE, elastic substrate" if elastic else "FE, elastic-plastic (sigma_y = 500 MPa)"
         ax.plot([d * 1e3 for d in h["indentation_m"]], [f / 1e3 for f in h["contact_force_N"]],
                 label=f"{label}, e = {s['e']:.4f}")
-        if elastic:
-            E_star = effective_modulus(cfg)
-            R = cfg["sphere"]["radius"]
-            dmax = max(h["indentation_m"])
-            ds = [dmax * k / 100 for k in range(101)]
-            ax.plot([d * 1e3 for d in ds], [_hertz_force(d, E_star, R) / 1e3 for d in ds], "k--",
+        curve = verification_run(fit, row["case_id"]).get("hertz_curve")
+        if elastic and curve:
+            ax.plot([d * 1e3 for d in curve["delta"]], [f / 1e3 for f in curve["force"]], "k--",
                     label="Hertz: F = 4/3 E* R^1/2 delta^3/2")
     ax.set_xlabel("indentation delta [mm]")
     ax.set_ylabel("contact force F [kN]")
@@ -209,7 +208,9 @@ def fig4_fields(out_dir, fit):
         snaps = field_snapshots(os.path.join(out_dir, "verification_hertz", "runs", row["case_id"]))
         if snaps and h:
             elastic = s["config"]["substrate"]["material"]["sigma_y"] is None
-            runs.setdefault("elastic" if elastic else "plastic", (h, s, snaps))
+            # the zoom: r up to 3 a_max, a_max = (R delta_max)^1/2 of the FE run (fit.json)
+            a_max = num(verification_run(fit, row["case_id"]).get("contact_radius_fe"))
+            runs.setdefault("elastic" if elastic else "plastic", (h, s, snaps, a_max))
     rows = []
     if "elastic" in runs:
         rows.append(("(a) elastic substrate: von Mises stress [MPa]", runs["elastic"], "von_mises",
@@ -225,11 +226,9 @@ def fig4_fields(out_dir, fit):
     ncol = max(len(r[1][2]) for r in rows)
     fig = plt.figure(figsize=(3.0 * ncol + 1.2, 3.4 * len(rows)), layout="constrained")
     subfigs = fig.subfigures(len(rows), 1, squeeze=False)[:, 0]
-    for sub, (label, (h, s, snaps), field, scale) in zip(subfigs, rows):
+    for sub, (label, (h, s, snaps, a_max), field, scale) in zip(subfigs, rows):
         axes = sub.subplots(1, ncol, squeeze=False)[0]
-        # Zoom from the Hertz contact radius at the largest indentation, a = sqrt(R delta_max).
-        a_max = math.sqrt(s["config"]["sphere"]["radius"] * max(max(h["indentation_m"]), 0.0))
-        if a_max <= 0:
+        if not a_max > 0:
             a_max = 1e-3
         r_lim, z_lo, z_hi = 3.0 * a_max, -3.0 * a_max, 1.5 * a_max
         data = []
@@ -300,14 +299,17 @@ def _law(fit):
 
 
 def _table2_points(out_dir, fit):
-    """{group: [(ln k1, e)]} of the ok Table 2 runs, grouped like the fit."""
+    """{group: [(ln k1, e, run)]} of the ok Table 2 runs, grouped like the fit."""
     groups = {}
     for c in fit.get("fits", {}).get("comparison", []):
         if c["study"] != "table2":
             continue
-        k1 = c["E_star"] / (c["sphere_rho"] * c["velocity"] ** 2)
-        groups.setdefault(c["group"], []).append((math.log(k1), c["e_fe"], c))
+        groups.setdefault(c["group"], []).append((math.log(c["k1"]), c["e_fe"], c))
     return groups
+
+
+def _lines(fit, fig):
+    return fit.get("figure_lines", {}).get(fig) or {}
 
 
 def fig6_e_vs_k1(out_dir, fit):
@@ -316,7 +318,7 @@ def fig6_e_vs_k1(out_dir, fit):
     if not groups:
         return None
     fig, ax = plt.subplots(figsize=(7.5, 5))
-    intercepts = {c["case"]: c["a"]["value"] for c in (law or {}).get("cases", [])}
+    lines = _lines(fit, "fig6")
     s = (law or {}).get("slope", {}).get("value", math.nan)
     for i, (g, pts) in enumerate(sorted(groups.items())):
         pts.sort(key=lambda p: p[0])
@@ -324,41 +326,31 @@ def fig6_e_vs_k1(out_dir, fit):
         ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=_yerr(p[2] for p in pts),
                     fmt="o", color=color, ms=4, capsize=2, elinewidth=0.8,
                     label=g.replace("_E115.4GPa", ""))
-        if g in intercepts:
-            xs = [pts[0][0], pts[-1][0]]
-            ax.plot(xs, [min(1.0, intercepts[g] + s * x) for x in xs], "-", color=color, lw=1)
+        if g in lines:
+            ax.plot(lines[g]["ln_k1"], lines[g]["e"], "-", color=color, lw=1)
     ax.set_xlabel("ln k1 = ln(E*/(rho v^2)) [-]")
     ax.set_ylabel("coefficient of restitution e [-]")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=6, ncol=2)
     ax.set_title(f"Fig. 6: e vs ln k1 (bars: discretisation error; lines: e = a_i + s ln k1, "
-                 f"s = {s:.4f}; paper 0.056)", fontsize=9)
+                 f"s = {s:.4f}; paper {_paper(fit, 'slope'):g})", fontsize=9)
     return _save(fig, out_dir, "fig06_e_vs_lnk1.png")
 
 
 def fig7_fit_error(out_dir, fit):
     law = _law(fit)
-    groups = _table2_points(out_dir, fit)
-    if not law or not groups:
+    points = _lines(fit, "fig7")
+    if not law or not points.get("e_fe"):
         return None
-    intercepts = {c["case"]: c["a"]["value"] for c in law["cases"]}
-    s = law["slope"]["value"]
-    xs, ys = [], []
-    for g, pts in groups.items():
-        if g not in intercepts:
-            continue
-        for lk1, e, _ in pts:
-            if e < 1 - 1e-3:
-                xs.append(e)
-                ys.append(intercepts[g] + s * lk1)
-    if not xs:
-        return None
+    xs, ys = points["e_fe"], points["e_eq9"]
+    bound = _paper(fit, "fit_error_bound")
     fig, ax = plt.subplots(figsize=(5.2, 5))
     ax.plot(xs, ys, "o", ms=4, label="plastic FE points")
     lo, hi = min(xs + ys) * 0.95, 1.0
     ax.plot([lo, hi], [lo, hi], "k-", lw=1, label="y = x")
-    ax.plot([lo, hi], [lo * 1.05, hi * 1.05], "k--", lw=0.8, label="+-5 %")
-    ax.plot([lo, hi], [lo * 0.95, hi * 0.95], "k--", lw=0.8)
+    ax.plot([lo, hi], [lo * (1 + bound), hi * (1 + bound)], "k--", lw=0.8,
+            label=f"+-{100 * bound:g} %")
+    ax.plot([lo, hi], [lo * (1 - bound), hi * (1 - bound)], "k--", lw=0.8)
     ax.set_xlabel("e from the FE solver [-]")
     ax.set_ylabel("e from eq. 9 (our a_i, s) [-]")
     ax.grid(alpha=0.3)
@@ -376,12 +368,14 @@ def fig8_a_vs_k2(out_dir, fit):
     y = [c["a"]["value"] for c in law["cases"]]
     err = [c["a"]["ci_upper"] - c["a"]["value"] for c in law["cases"]]
     ax.errorbar(x, y, yerr=err, fmt="o", ms=4, capsize=2, label="a_i (95 % CI)")
-    xs = [min(x) - 0.1, max(x) + 0.1]
-    if law["alpha"]["value"] is not None and not math.isnan(num(law["alpha"]["value"])):
-        ax.plot(xs, [law["alpha"]["value"] + law["beta"]["value"] * v for v in xs], "-",
+    lines = _lines(fit, "fig8")
+    xs = lines.get("ln_k2", [])
+    if xs and not math.isnan(num(lines["ours"][0])):
+        ax.plot(xs, lines["ours"], "-",
                 label=f"ours: a = {law['alpha']['value']:.3f} + {law['beta']['value']:.4f} ln k2")
-    ax.plot(xs, [PAPER["alpha"] + PAPER["beta"] * v for v in xs], "k--",
-            label="paper: a = 1.16 + 0.253 ln k2")
+    if xs:
+        ax.plot(xs, lines["paper"], "k--",
+                label=f"paper: a = {_paper(fit, 'alpha'):g} + {_paper(fit, 'beta'):g} ln k2")
     ax.set_xlabel("ln k2 = ln(sigma_y/E*) [-]")
     ax.set_ylabel("intercept a [-]")
     ax.grid(alpha=0.3)
@@ -403,28 +397,23 @@ def fig9_rho_vy2(out_dir, fit):
     groups = {}
     for s in y["samples"]:
         groups.setdefault(round(s["E_star"] / 1e9, 3), []).append(s)
-    b_of = {round(g["E_star"] / 1e9, 3): g["b"]["value"] for g in y["groups"]}
+    curves = {round(c["E_star"] / 1e9, 3): c for c in _lines(fit, "fig9")}
     n = y["n"]["value"]
     for i, (es, pts) in enumerate(sorted(groups.items())):
         color = f"C{i % 10}"
         ax.plot([p["sigma_y"] / 1e6 for p in pts], [p["sphere_rho"] * p["v_y"] ** 2 for p in pts],
                 "o", color=color, ms=4, label=f"E* = {es:g} GPa")
-        sig = sorted({p["sigma_y"] for p in pts})
-        ss = [sig[0] + (sig[-1] - sig[0]) * k / 50 for k in range(51)]
-        if es in b_of:
-            ax.plot([v / 1e6 for v in ss], [b_of[es] * (v / SIGMA0) ** n for v in ss], "-",
-                    color=color, lw=1)
-        ax.plot([v / 1e6 for v in ss],
-                [PAPER["c"] * (es * 1e9 / E0) ** PAPER["m"] * (v / SIGMA0) ** PAPER["n"]
-                 for v in ss],
-                ":", color=color, lw=1)
+        if es in curves:
+            c = curves[es]
+            ax.plot([v / 1e6 for v in c["sigma_y"]], c["ours"], "-", color=color, lw=1)
+            ax.plot([v / 1e6 for v in c["sigma_y"]], c["paper"], ":", color=color, lw=1)
     ax.set_yscale("log")
     ax.set_xlabel("substrate yield stress sigma_y [MPa]")
     ax.set_ylabel("rho v_y^2 [Pa]")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7)
-    ax.set_title(f"Fig. 9: rho v_y^2 = b (sigma_y/100 MPa)^n; ours n = {n:.3f} (solid), "
-                 "paper 4.5 (dotted)", fontsize=9)
+    ax.set_title(f"Fig. 9: rho v_y^2 = b (sigma_y/{_paper(fit, 'sigma0') / 1e6:g} MPa)^n; ours "
+                 f"n = {n:.3f} (solid), paper {_paper(fit, 'n'):g} (dotted)", fontsize=9)
     return _save(fig, out_dir, "fig09_rho_vy2.png")
 
 
@@ -438,13 +427,15 @@ def fig10_b_vs_E(out_dir, fit):
     yerr = [[g["b"]["value"] - g["b"]["ci_lower"] for g in y["groups"]],
             [g["b"]["ci_upper"] - g["b"]["value"] for g in y["groups"]]]
     ax.errorbar(es, b, yerr=yerr, fmt="o", capsize=2, label="b per E* (95 % CI)")
-    grid = [min(es) + (max(es) - min(es)) * k / 50 for k in range(51)]
+    lines = _lines(fit, "fig10")
+    grid = [e / 1e9 for e in lines.get("E_star", [])]
     c, m = num(y["c"]["value"]), num(y["m"]["value"])
-    if not math.isnan(c):
-        ax.plot(grid, [c * (e * 1e9 / E0) ** m for e in grid], "-",
-                label=f"ours: b = {c:.4g} Pa (E*/100 GPa)^{m:.3f}")
-    ax.plot(grid, [PAPER["c"] * (e * 1e9 / E0) ** PAPER["m"] for e in grid], "k--",
-            label="paper: b = 0.05 Pa (E*/100 GPa)^-3.5")
+    e0 = f"E*/{_paper(fit, 'E0') / 1e9:g} GPa"
+    if grid and not math.isnan(c):
+        ax.plot(grid, lines["ours"], "-", label=f"ours: b = {c:.4g} Pa ({e0})^{m:.3f}")
+    if grid:
+        ax.plot(grid, lines["paper"], "k--",
+                label=f"paper: b = {_paper(fit, 'c'):g} Pa ({e0})^{_paper(fit, 'm'):g}")
     ax.set_yscale("log")
     ax.set_xlabel("effective modulus E* [GPa]")
     ax.set_ylabel("b [Pa]")

@@ -5,6 +5,11 @@ versions of Ma et al. (2023) Figs. 2-13 (``corlab.figures``) and writes ``DIR/re
 fitted coefficients with 95 % confidence intervals next to the paper's, the error of the paper's
 model against our solver per case, run counts and times, the command and versions, and a
 discussion of the differences computed from the numbers (nothing in it is typed in by hand).
+
+Every number it prints comes from fit.json, computed by the C++ ``corlab reproduce`` (the Hertz
+reference of the verification runs, the model errors, our coefficients against the paper's, the
+paper's published values, the runs on disk); this module holds no formula and no published
+constant: it only reads, formats and plots.
 """
 from __future__ import annotations
 
@@ -82,8 +87,10 @@ def coef_row(label, c, form):
             covers(c), esc(form)]
 
 
-def coefficient_table(fits):
+def coefficient_table(fits, paper):
     law = fits.get("restitution_law", {})
+    fixed = (f"n = {figures.num(paper.get('n')):g}, m = {figures.num(paper.get('m')):g} "
+             "fixed")
     yv = fits.get("yield_velocity_fe", {})
     rows = []
     if "error" not in law:
@@ -97,15 +104,14 @@ def coefficient_table(fits):
         rows.append(coef_row(f"m [{label}]", y.get("m"), "(iv) eq. 17"))
         rows.append(coef_row(f"c [Pa] [{label}]", y.get("c"), "(iv) eq. 17"))
         k_row = coef_row(f"K [{label}] one step", y.get("K"), "eq. 18 constant")
-        n1, m1 = figures.num(y.get("n_one_step", {}).get("value")), \
-            figures.num(y.get("m_one_step", {}).get("value"))
-        if not abs(1 - n1 - m1) < 0.01:  # K carries units Pa^(1-n-m): not comparable
-            k_row[5] = f"not comparable (unit Pa^{1 - n1 - m1:.3f})"
+        vs = fits.get("versus_paper", {})
+        if not vs.get("K_comparable"):  # K carries units Pa^(1-n-m): not comparable
+            k_row[5] = f"not comparable (unit Pa^{figures.num(vs.get('K_unit_exponent')):.3f})"
         rows.append(k_row)
-        rows.append(coef_row(f"K [{label}] with n = 4.5, m = -3.5 fixed",
+        rows.append(coef_row(f"K [{label}] with {fixed}",
                              y.get("K_fixed_exponents"), "eq. 18 constant"))
         rows.append([esc(f"K [{label}] two step c sigma0^-n E0^-m"), fmt(y.get("K_two_step"), 5),
-                     "-", "-", "15.81", "-", "eq. 18 constant"])
+                     "-", "-", fmt(paper.get("K"), 5), "-", "eq. 18 constant"])
     for key, label in (("yield_velocity_eq12", "our eq. 12"),
                        ("yield_velocity_paper_eq12", "paper's eq. 12")):
         y = fits.get(key, {})
@@ -114,7 +120,7 @@ def coefficient_table(fits):
         note = "derived exactly from alpha, beta, s (n = beta/s, m = 1 - beta/s): no interval"
         for name, c in (("n", y.get("n")), ("m", y.get("m")), ("c [Pa]", y.get("c")),
                         ("K one step", y.get("K")),
-                        ("K with n = 4.5, m = -3.5 fixed", y.get("K_fixed_exponents"))):
+                        (f"K with {fixed}", y.get("K_fixed_exponents"))):
             if c:
                 rows.append([esc(f"{name} [v_y back-calculated from {label}]"),
                              fmt(c.get("value"), 5), "-", "-", fmt(c.get("paper"), 5), "-",
@@ -145,88 +151,73 @@ def goodness_rows(fits):
     return table(["fit", "R^2", "max rel. error", "RMS rel. error"], rows)
 
 
+def scaled(x, factor):
+    """x * factor, NaN when x is missing (fmt and pct then print "-")."""
+    return figures.num(x) * factor
+
+
 def model_error_table(fits, key="e_paper"):
-    groups = {}
-    for c in fits.get("comparison", []):
-        e_fe, e_m = c["e_fe"], c.get(key)
-        if e_m is None or e_fe is None:
-            continue
-        groups.setdefault((c["study"], c["group"]), []).append((c["velocity"], e_fe, e_m))
+    """The per-case table of fit.json's "model_error" of one model, and its "overall" entry."""
+    err = fits.get("model_error", {}).get(key, {})
     rows = []
-    for (study, group), pts in sorted(groups.items()):
-        rel = [(m - f) / f for _, f, m in pts if f]
-        if not rel:
-            continue
-        worst = max(range(len(rel)), key=lambda i: abs(rel[i]))
-        rows.append([esc(study), esc(group), str(len(pts)),
-                     pct(sum(rel) / len(rel)),
-                     pct(math.sqrt(sum(r * r for r in rel) / len(rel))),
-                     f"{pct(rel[worst])} at {fmt(pts[worst][0], 3)} m/s"])
+    for g in err.get("groups", []):
+        rows.append([esc(g["study"]), esc(g["group"]), str(g["runs"]),
+                     pct(g["mean_relative_error"]), pct(g["rms_relative_error"]),
+                     f"{pct(g['largest_relative_error'])} at "
+                     f"{fmt(g['largest_at_velocity'], 3)} m/s"])
     return table(["study", "case (group)", "runs", "mean rel. error", "RMS rel. error",
-                  "largest rel. error"], rows), groups
+                  "largest rel. error"], rows), err.get("overall", {})
 
 
-def overall_error(groups):
-    rel = [(m - f) / f for pts in groups.values() for _, f, m in pts if f]
-    if not rel:
-        return math.nan, math.nan, 0
-    return (math.sqrt(sum(r * r for r in rel) / len(rel)), max(abs(r) for r in rel), len(rel))
-
-
-def verification_section(out_dir, fit):
+def verification_section(fit):
+    """The tables of fit.json's "verification": the 5 m/s runs against Hertz (elastic) and the
+    paper's energies (elastic-plastic), and the mesh study."""
     parts = []
     paper = fit.get("paper", {})
-    runs = figures.history_runs(out_dir, "verification_hertz")
+    ver = fit.get("verification", {})
     rows = []
-    for row, h, s in runs:
-        cfg = s["config"]
-        elastic = cfg["substrate"]["material"]["sigma_y"] is None
-        E_star = figures.effective_modulus(cfg)
-        R = cfg["sphere"]["radius"]
-        rho = cfg["sphere"]["material"]["rho"]
-        v = cfg["impact"]["velocity"]
-        m = 4.0 / 3.0 * math.pi * R ** 3 * rho
-        if elastic:
-            # Hertz impact (Johnson 1985 ch. 11): delta_max, F_max, contact time 2.94 delta/v
-            dmax = (15 * m * v * v / (16 * E_star * math.sqrt(R))) ** 0.4
-            fmax = 4 / 3 * E_star * math.sqrt(R) * dmax ** 1.5
-            tc = 2.94 * dmax / v
-            rows.append(["elastic substrate", fmt(s["e"], 4), "1 (Hertz)",
-                         f"{fmt(s['F_max'] / 1e3, 5)} kN vs Hertz {fmt(fmax / 1e3, 5)} kN "
-                         f"({pct(s['F_max'] / fmax - 1)})",
-                         f"{fmt(s['delta_max'] * 1e3, 5)} mm vs Hertz {fmt(dmax * 1e3, 5)} mm "
-                         f"({pct(s['delta_max'] / dmax - 1)})",
-                         f"{fmt(s['t_contact'] * 1e6, 5)} us vs Hertz {fmt(tc * 1e6, 5)} us "
-                         f"({pct(s['t_contact'] / tc - 1)})"])
+    for r in ver.get("hertz", []):
+        h = r.get("hertz", {})
+        if r.get("elastic"):
+            rows.append(["elastic substrate", fmt(r["e"], 4), "1 (Hertz)",
+                         f"{fmt(scaled(r['F_max'], 1e-3), 5)} kN vs Hertz "
+                         f"{fmt(scaled(h.get('max_force'), 1e-3), 5)} kN "
+                         f"({pct(r['F_max_vs_hertz'])})",
+                         f"{fmt(scaled(r['delta_max'], 1e3), 5)} mm vs Hertz "
+                         f"{fmt(scaled(h.get('max_overlap'), 1e3), 5)} mm "
+                         f"({pct(r['delta_max_vs_hertz'])})",
+                         f"{fmt(scaled(r['t_contact'], 1e6), 5)} us vs Hertz "
+                         f"{fmt(scaled(h.get('contact_time'), 1e6), 5)} us "
+                         f"({pct(r['t_contact_vs_hertz'])})"])
         else:
-            e_derived = math.sqrt(1 - paper.get("energy_loss_5ms_J", 12.61) / (0.5 * m * v * v))
-            rows.append(["sigma_y = 500 MPa", fmt(s["e"], 4),
-                         f"{e_derived:.3f} (from the paper's 12.61 J loss)",
-                         f"sphere energy loss {fmt(s['energy_sphere_loss'], 4)} J (paper 12.61 J)",
-                         f"hysteresis area {fmt(s['hysteresis_area'], 4)} J (paper 12.63 J); "
-                         f"difference {pct(s['hysteresis_area'] / s['energy_sphere_loss'] - 1)} "
-                         "(paper 0.16 %)",
-                         f"hourglass {pct(s['energy_hourglass'] / s['energy_initial'], 3)} of the "
-                         f"initial energy (paper 0.0693 %); energy balance error "
-                         f"{fmt(s['energy_balance_error'], 2)}"])
+            loss = fmt(paper.get("energy_loss_5ms_J"), 4)
+            rows.append(["sigma_y = 500 MPa", fmt(r["e"], 4),
+                         f"{figures.num(r['e_from_paper_energy_loss']):.3f} (from the paper's "
+                         f"{loss} J loss)",
+                         f"sphere energy loss {fmt(r['energy_sphere_loss'], 4)} J (paper {loss} J)",
+                         f"hysteresis area {fmt(r['hysteresis_area'], 4)} J (paper "
+                         f"{fmt(paper.get('hysteresis_area_5ms_J'), 4)} J); "
+                         f"difference {pct(r['hysteresis_vs_energy_loss'])} "
+                         f"(paper {pct(paper.get('hysteresis_difference'))})",
+                         f"hourglass {pct(r['hourglass_fraction'], 3)} of the "
+                         f"initial energy (paper {pct(paper.get('hourglass_fraction'), 4)}); "
+                         f"energy balance error {fmt(r['energy_balance_error'], 2)}"])
     if rows:
         parts.append(table(["run at 5 m/s", "e (ours)", "e (reference)", "", "", ""], rows))
-    mesh = figures.history_runs(out_dir, "verification_mesh")
+    mesh = ver.get("mesh", [])
     if mesh:
-        mesh.sort(key=lambda r: -figures.num(r[0]["mesh.h_min"]))
-        finest = mesh[-1][2]["e"]
         parts.append(table(
             ["h_min [mm]", "elements", "steps", "e", "e - e(finest)", "F_max [kN]", "wall [s]"],
-            [[fmt(figures.num(r[0]["mesh.h_min"]) * 1e3, 3), str(r[2]["elements"]),
-              str(r[2]["steps"]), fmt(r[2]["e"], 5), fmt(r[2]["e"] - finest, 3),
-              fmt(r[2]["F_max"] / 1e3, 5), fmt(r[2]["wall_s"], 3)] for r in mesh]))
+            [[fmt(scaled(r["h_min"], 1e3), 3), str(r["elements"]), str(r["steps"]),
+              fmt(r["e"], 5), fmt(r["e_minus_finest"], 3), fmt(scaled(r["F_max"], 1e-3), 5),
+              fmt(r["wall_s"], 3)] for r in mesh]))
     return "\n".join(parts)
 
 
 def onset_table(fits):
     rows = []
     for o in fits.get("yield_onset", []):
-        ratio = o["v_y_paper_eq18"] / o["v_onset"] if o.get("v_onset") else math.nan
+        ratio = o.get("v_y_paper_over_onset")
         rows.append([esc(o["group"]), fmt(o["v_elastic"], 4), fmt(o["v_plastic"], 4),
                      fmt(o["v_onset"], 4), fmt(o["v_hertz_onset"], 4), fmt(o["v_y_paper_eq18"], 4),
                      fmt(o.get("v_y_ours"), 4), fmt(ratio, 3), str(len(o["probes"]))])
@@ -235,46 +226,30 @@ def onset_table(fits):
                   "Ma v_y / onset", "runs"], rows)
 
 
-def solver_seconds(out_dir, name):
-    """(runs on disk, summed solver wall time [s]) of a study, from its files."""
-    if name == "yield_onset":
-        rows = figures.read_csv(os.path.join(out_dir, name, "probes.csv"))
-        return len(rows), sum(figures.num(r.get("wall_s")) for r in rows)
-    runs = figures.history_runs(out_dir, name)
-    if runs:
-        return len(runs), sum(float(r[2].get("wall_s", 0.0)) for r in runs)
-    rows = [r for r in figures.read_csv(os.path.join(out_dir, name, "results.csv"))
-            if r.get("status") != "failed"]
-    return len(rows), sum(figures.num(r.get("wall_s")) for r in rows)
-
-
-def runs_table(fit, out_dir):
+def runs_table(fit):
     rows = []
-    total_runs, total_wall, disk_runs, disk_s = 0, 0.0, 0, 0.0
     for name, s in fit.get("studies", {}).items():
-        n_disk, t_disk = solver_seconds(out_dir, name)
         rows.append([esc(name), esc(s.get("description", "")), str(s.get("total", "-")),
                      str(s.get("already_done", "-")), str(s.get("ran", "-")),
-                     str(s.get("failed", "-")), fmt(s.get("wall_s"), 4), str(n_disk),
-                     fmt(t_disk, 4)])
-        total_runs += int(s.get("ran", 0))
-        total_wall += float(s.get("wall_s", 0.0))
-        disk_runs += n_disk
-        disk_s += t_disk
-    rows.append(["<b>all</b>", "", "", "", f"<b>{total_runs}</b>", "",
-                 f"<b>{fmt(total_wall, 4)}</b>", f"<b>{disk_runs}</b>", f"<b>{fmt(disk_s, 4)}</b>"])
+                     str(s.get("failed", "-")), fmt(s.get("wall_s"), 4),
+                     str(s.get("runs_on_disk", "-")), fmt(s.get("solver_s_on_disk"), 4)])
+    t = fit.get("studies_total", {})
+    rows.append(["<b>all</b>", "", "", "", f"<b>{t.get('ran', '-')}</b>", "",
+                 f"<b>{fmt(t.get('wall_s'), 4)}</b>", f"<b>{t.get('runs_on_disk', '-')}</b>",
+                 f"<b>{fmt(t.get('solver_s_on_disk'), 4)}</b>"])
     return table(["study", "description", "runs in spec", "done earlier", "ran now", "failed",
                   "wall now [s]", "finished runs on disk", "their solver time [s] (sum)"], rows)
 
 
-def versus(name, c, paper, digits=4):
-    """'name = x [lo, hi] against the paper's p (+d %, inside/outside our 95 % CI)'."""
-    v, lo, hi = (figures.num(c.get(k)) for k in ("value", "ci_lower", "ci_upper"))
+def versus(name, c, digits=4):
+    """'name = x [lo, hi] against the paper's p (+d %, inside/outside our 95 % CI)' from an entry
+    of fit.json's "versus_paper"."""
+    v, lo, hi, paper = (figures.num(c.get(k)) for k in ("value", "ci_lower", "ci_upper", "paper"))
     if math.isnan(v):
         return f"{name}: no value"
-    where = "inside" if lo <= paper <= hi else "outside"
+    where = "inside" if c.get("paper_in_ci") else "outside"
     return (f"{name} = {fmt(v, digits)} [{fmt(lo, digits)}, {fmt(hi, digits)}] against the "
-            f"paper's {paper:g} ({pct(v / paper - 1, 1)}; "
+            f"paper's {paper:g} ({pct(c.get('relative_difference'), 1)}; "
             f"the paper's value is {where} our 95 % CI)")
 
 
@@ -293,63 +268,68 @@ def error_bar_item(fits):
             "fits below are statistical only and do not include it.")
 
 
-def discussion(fit, out_dir):
+def discussion(fit):
     fits = fit.get("fits", {})
     law = fits.get("restitution_law", {})
+    vs = fits.get("versus_paper", {})
+    paper = fit.get("paper", {})
     items = []
     if law and "error" not in law:
-        s = law["slope"]
+        s = vs.get("slope", {})
         items.append(
-            f"Slope of ln k1: ours s = {fmt(s['value'], 4)} (95 % CI [{fmt(s['ci_lower'], 4)}, "
-            f"{fmt(s['ci_upper'], 4)}]) against the paper's 0.056, a difference of "
-            f"{pct(s['value'] / 0.056 - 1, 1)}; the paper's value is "
-            f"{'inside' if covers(s) == 'yes' else 'outside'} our interval. It rests on "
+            f"Slope of ln k1: ours s = {fmt(s.get('value'), 4)} (95 % CI "
+            f"[{fmt(s.get('ci_lower'), 4)}, {fmt(s.get('ci_upper'), 4)}]) against the paper's "
+            f"{figures.num(s.get('paper')):g}, a difference of "
+            f"{pct(s.get('relative_difference'), 1)}; the paper's value is "
+            f"{'inside' if s.get('paper_in_ci') else 'outside'} our interval. It rests on "
             f"{law['points_used']} plastic points in {len(law['cases'])} cases "
             f"({law['points_excluded']} points excluded as elastic or failed).")
-        a, b = law["alpha"], law["beta"]
+        a = law["alpha"]
         if a.get("value") is not None and not math.isnan(figures.num(a.get("value"))):
             items.append(
-                f"Intercept law a = alpha + beta ln k2: ours {versus('alpha', a, 1.16)}; "
-                f"{versus('beta', b, 0.253)}. "
+                "Intercept law a = alpha + beta ln k2: ours "
+                f"{versus('alpha', vs.get('alpha', {}))}; "
+                f"{versus('beta', vs.get('beta', {}))}. "
                 "Alpha and beta are strongly correlated (alpha is the extrapolation of the line to "
                 "ln k2 = 0, far outside the data at ln k2 ~ -6 to -4), so compare the predicted e "
                 "rather than alpha alone.")
     bars = error_bar_item(fits)
     if bars:
         items.append(bars)
-    mesh = figures.history_runs(out_dir, "verification_mesh")
+    mesh = fit.get("verification", {}).get("mesh", [])
     if len(mesh) >= 2:
-        mesh.sort(key=lambda r: -figures.num(r[0]["mesh.h_min"]))
         items.append(
             "Mesh sensitivity at 5 m/s (Fig. 2): e = " +
-            ", ".join(f"{r[2]['e']:.4f} at h_min = {figures.num(r[0]['mesh.h_min']) * 1e3:g} mm"
+            ", ".join(f"{figures.num(r['e']):.4f} at h_min = {scaled(r['h_min'], 1e3):g} mm"
                       for r in mesh) +
             "; the FE values carry a discretisation error of this order, which the confidence "
             "intervals do not include.")
-    _, groups = model_error_table(fits, "e_paper")
-    rms, worst, n = overall_error(groups)
-    if n:
+    _, overall = model_error_table(fits, "e_paper")
+    if overall.get("runs"):
         items.append(
             f"The paper's model (eq. 19 with its published constants) against our solver over "
-            f"{n} runs: RMS relative error {pct(rms)}, largest {pct(worst)}. The paper states its "
-            "fit stays within 5 % of its own FE results (Fig. 7).")
+            f"{overall['runs']} runs: RMS relative error {pct(overall['rms_relative_error'])}, "
+            f"largest {pct(overall['largest_relative_error'])}. The paper states its fit stays "
+            f"within {pct(paper.get('fit_error_bound'), 0)} of its own FE results (Fig. 7).")
     _, ours = model_error_table(fits, "e_ours")
-    rms_o, worst_o, n_o = overall_error(ours)
-    if n_o:
-        items.append(f"Eq. 19 with our refitted constants over the same runs: RMS {pct(rms_o)}, "
-                     f"largest {pct(worst_o)}.")
+    if ours.get("runs"):
+        items.append(f"Eq. 19 with our refitted constants over the same runs: RMS "
+                     f"{pct(ours['rms_relative_error'])}, largest "
+                     f"{pct(ours['largest_relative_error'])}.")
     y = fits.get("yield_velocity_fe", {})
     if y and "error" not in y:
         kf = y.get("K_fixed_exponents", {})
-        ratio = math.sqrt(figures.num(kf.get("value")) / 15.81)
+        n_p, m_p = figures.num(paper.get("n")), figures.num(paper.get("m"))
+        k_p = figures.num(paper.get("K"))
         items.append(
-            f"Yield-velocity law from our FE crossings: {versus('n', y['n'], 4.5)}; "
-            f"{versus('m', y['m'], -3.5)}; c = {fmt(y['c']['value'], 4)} Pa "
-            f"(paper 0.05 Pa). With the exponents fixed at the paper's 4.5 and -3.5 the constant "
+            f"Yield-velocity law from our FE crossings: {versus('n', vs.get('n', {}))}; "
+            f"{versus('m', vs.get('m', {}))}; c = {fmt(y['c']['value'], 4)} Pa "
+            f"(paper {figures.num(paper.get('c')):g} Pa). With the exponents fixed at the paper's "
+            f"{n_p:g} and {m_p:g} the constant "
             f"is K = {fmt(kf.get('value'), 4)} [{fmt(kf.get('ci_lower'), 4)}, "
-            f"{fmt(kf.get('ci_upper'), 4)}] against 15.81, i.e. our crossing velocities are "
-            f"{fmt(ratio, 3)} x the paper's eq. 18. The free one-step K "
-            f"({fmt(y['K']['value'], 4)}) is not comparable: with n + m != 1 it carries the unit "
+            f"{fmt(kf.get('ci_upper'), 4)}] against {k_p:g}, i.e. our crossing velocities are "
+            f"{fmt(vs.get('crossing_velocity_ratio'), 3)} x the paper's eq. 18. The free one-step "
+            f"K ({fmt(y['K']['value'], 4)}) is not comparable: with n + m != 1 it carries the unit "
             "Pa^(1-n-m) and is an extrapolation to sigma_y = E* = 1 Pa.")
     pe = fits.get("yield_velocity_paper_eq12", {})
     if pe and "error" not in pe:
@@ -357,9 +337,12 @@ def discussion(fit, out_dir):
         items.append(
             "Self-check of the procedure: back-calculating v_y from the paper's own eq. 12 over "
             f"the same (rho, E*, sigma_y) grid and fitting (iii)-(iv) gives exactly n = "
-            f"{fmt(pe['n']['value'], 4)} (= 0.253/0.056), m = {fmt(pe['m']['value'], 4)}, K = "
-            f"{fmt(pe['K']['value'], 4)}; with the exponents rounded to 4.5 and -3.5 the constant "
-            f"becomes {fmt(kf, 4)} against the published 15.81. Eq. 18 is thus a re-expression of "
+            f"{fmt(pe['n']['value'], 4)} (= {figures.num(paper.get('beta')):g}/"
+            f"{figures.num(paper.get('slope')):g}), m = {fmt(pe['m']['value'], 4)}, K = "
+            f"{fmt(pe['K']['value'], 4)}; with the exponents rounded to "
+            f"{figures.num(paper.get('n')):g} and {figures.num(paper.get('m')):g} the constant "
+            f"becomes {fmt(kf, 4)} against the published {figures.num(paper.get('K')):g}. Eq. 18 "
+            "is thus a re-expression of "
             "the eq. 12 crossing (a fit of a fit), not an independent measurement of yield.")
     ye = fits.get("yield_velocity_eq12", {})
     if ye and "error" not in ye:
@@ -453,13 +436,13 @@ def make_report(out_dir):
 doi 10.6052/0459-1879-22-583. Our FE solver is corlab's explicit axisymmetric code, not ABAQUS.
 All numbers below are computed from the runs in this directory.</p>
 {omitted}
-<h2>Summary</h2>{discussion(fit, out_dir)}
+<h2>Summary</h2>{discussion(fit)}
 <h2>Fitted coefficients (95 % confidence intervals, Student t)</h2>
 <p>Linear least squares by SVD with standard errors from s^2 (X^T X)^-1; (iii)-(iv) in log
 space. "paper in CI?" asks whether the published value lies inside our interval. The intervals
 carry only the scatter of our points about each form, not the discretisation error of the
 solver.</p>
-{coefficient_table(fits)}
+{coefficient_table(fits, fit.get("paper", {}))}
 <h3>Goodness of fit</h3>{goodness_rows(fits)}
 <h2>Error of the paper's model against our solver, per case</h2>
 <p>Relative error (e_model - e_FE)/e_FE of Ma eq. 19 with the published constants (corlab's
@@ -467,7 +450,7 @@ solver.</p>
 {err_paper}
 <h3>Same, with our refitted constants</h3>{err_ours}
 <h2>Verification (paper section 1)</h2>
-{verification_section(out_dir, fit)}
+{verification_section(fit)}
 {img("fig2", "Fig. 2")}{img("fig3", "Fig. 3")}
 <p>Fig. 4: fields of the two 5 m/s runs at the <code>output.times</code> of the
 verification_hertz study (runs/&lt;case&gt;/fields_&lt;t&gt;.vtu, open them in ParaView),
@@ -486,7 +469,7 @@ back-calculation); E* is realised with equal bodies, nu = 0.3, E = 2(1 - nu^2) E
 <p><b>No experimental points</b>: no published numbers of Kharaz &amp; Gorham (2000) are
 available to corlab; none are shown and none were digitised.</p>
 {img("fig11_12", "Figs. 11-12")}{img("fig13", "Fig. 13")}
-<h2>Runs and time</h2>{runs_table(fit, out_dir)}
+<h2>Runs and time</h2>{runs_table(fit)}
 <p>Fitting took {fmt(fit.get('fit_wall_s'), 3)} s. Runs in parallel: {esc(fit.get('jobs'))}
 (hardware threads: {esc(fit.get('hardware_threads'))}).</p>
 <h2>Command and versions</h2>

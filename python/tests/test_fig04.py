@@ -73,7 +73,18 @@ def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path):
         if kind == "plastic":
             assert last["cells"]["plastic_strain"].max() > 0
 
-    name = figures.fig4_fields(str(out), json.loads((out / "fit.json").read_text()))
+    fit = json.loads((out / "fit.json").read_text())
+    # the Hertz reference of each run, from the C++ (fem::hertz_reference), for the report
+    hertz = {r["elastic"]: r for r in fit["verification"]["hertz"]}
+    assert set(hertz) == {True, False}
+    for r in hertz.values():
+        assert r["hertz"]["contact_time_factor"] == pytest.approx(2.943275, abs=1e-6)
+        assert r["contact_radius_fe"] > 0
+    el = hertz[True]
+    assert len(el["hertz_curve"]["delta"]) == 101
+    assert el["hertz_curve"]["force"][-1] > 0
+    assert el["F_max_vs_hertz"] == pytest.approx(el["F_max"] / el["hertz"]["max_force"] - 1)
+    name = figures.fig4_fields(str(out), fit)
     assert name == "fig04_fields.png"
     png = out / "figures" / name
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

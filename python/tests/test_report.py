@@ -74,14 +74,26 @@ def test_report_from_synthetic_directory(tmp_path):
                                         f"{float(r['sigma_y']) / 1e6:g}MPa",  # as group_label()
                                "sphere_rho": float(r["sphere_rho"]), "E_star": ES,
                                "sigma_y": float(r["sigma_y"]), "velocity": float(r["velocity"]),
-                               "e_fe": float(r["e"]), "e_paper": float(r["e"]) * 1.01,
-                               "e_ours": float(r["e"])})
+                               "k1": float(r["k1"]), "e_fe": float(r["e"]),
+                               "e_paper": float(r["e"]) * 1.01, "e_ours": float(r["e"])})
+    # What the C++ writes beside the fits (src/study/reproduce_report.cpp), by hand here.
+    error = {"groups": [{"study": "table2", "group": "g", "runs": 18, "mean_relative_error": 0.01,
+                         "rms_relative_error": 0.01, "largest_relative_error": 0.01,
+                         "largest_at_velocity": 5.0}],
+             "overall": {"runs": 18, "rms_relative_error": 0.01, "largest_relative_error": 0.01}}
     fit = {"preset": "coarse", "command": "corlab reproduce --preset coarse --out x",
            "studies": {"table2": {"total": 18, "ran": 18, "already_done": 0, "failed": 0,
-                                  "wall_s": 12.5, "description": "Table 2"}},
+                                  "wall_s": 12.5, "description": "Table 2", "runs_on_disk": 18,
+                                  "solver_s_on_disk": 11.0}},
+           "studies_total": {"ran": 18, "wall_s": 12.5, "runs_on_disk": 18,
+                             "solver_s_on_disk": 11.0},
            "fits": {"restitution_law": fits["restitution_law"], "comparison": comparison,
-                    "yield_onset": [], "curves": {}},
-           "paper": {"energy_loss_5ms_J": 12.61}}
+                    "yield_onset": [], "curves": {},
+                    "model_error": {"e_paper": error, "e_ours": error}},
+           "verification": SYNTHETIC_VERIFICATION,
+           "figure_lines": {"fig7": {"e_fe": [0.5, 0.6], "e_eq9": [0.51, 0.59]},
+                            "fig8": {"ln_k2": [-6, -4], "ours": [0.1, 0.2], "paper": [0.1, 0.2]}},
+           "paper": PAPER}
     (out / "fit.json").write_text(json.dumps(fit))
     path = report.make_report(str(out))
     text = open(path).read()
@@ -95,6 +107,60 @@ def test_report_from_synthetic_directory(tmp_path):
     assert "Coarse preset: a demo, NOT the reproduction" in text
     assert "1.00 %" in text  # the paper-model error we put in (e_paper = 1.01 e_fe)
     assert "Fig. 9: no data" in text  # missing studies are reported, not hidden
+
+
+# fit.json's "verification" and "paper" with numbers no formula of the report could give: the
+# report must print them as they are (it computes no Hertz reference and holds no constant).
+SYNTHETIC_VERIFICATION = {
+    "hertz": [{"case_id": "el", "elastic": True, "velocity": 5.0, "e": 0.998, "F_max": 1e5,
+               "delta_max": 3.7e-4, "t_contact": 1.7e-4, "F_max_vs_hertz": 0.0123,
+               "delta_max_vs_hertz": -0.0456, "t_contact_vs_hertz": 0.0789,
+               "contact_radius_fe": 1e-3,
+               "hertz": {"max_force": 98765.4, "max_overlap": 3.21098e-4,
+                         "contact_time": 1.65432e-4},
+               "hertz_curve": {"delta": [0.0, 1e-4, 3e-4], "force": [0.0, 1e4, 9e4]}},
+              {"case_id": "pl", "elastic": False, "velocity": 5.0, "e": 0.53,
+               "e_from_paper_energy_loss": 0.4321, "energy_sphere_loss": 12.5,
+               "hysteresis_area": 12.52, "hysteresis_vs_energy_loss": 0.0016,
+               "hourglass_fraction": 0.00111, "energy_balance_error": 1e-6,
+               "contact_radius_fe": 1e-3, "hertz": {}}],
+    "mesh": [{"case_id": "m1.0e-3", "h_min": 1e-3, "elements": 1000, "steps": 5000, "e": 0.53,
+              "e_minus_finest": 0.0042, "F_max": 1e5, "wall_s": 1.0},
+             {"case_id": "m0.5e-3", "h_min": 5e-4, "elements": 4000, "steps": 9000, "e": 0.5258,
+              "e_minus_finest": 0.0, "F_max": 1e5, "wall_s": 2.0}]}
+PAPER = {"slope": 0.0561, "alpha": 1.161, "beta": 0.2531, "n": 4.51, "m": -3.51, "c": 0.051,
+         "K": 15.82, "sigma0": 100e6, "E0": 100e9, "energy_loss_5ms_J": 12.62,
+         "hysteresis_area_5ms_J": 12.64, "hourglass_fraction": 0.000694,
+         "hysteresis_difference": 0.0017, "fit_error_bound": 0.06}
+
+
+def test_report_takes_hertz_and_paper_numbers_from_fit_json(tmp_path):
+    """The report prints the Hertz reference, the errors and the paper's values of fit.json: it
+    computes no Hertz reference and holds no published constant (both live in the C++)."""
+    out = tmp_path / "out"
+    synthetic_history_run(out, "verification_hertz", "el", {"substrate.sigma_y": "none"}, None)
+    synthetic_history_run(out, "verification_hertz", "pl", {"substrate.sigma_y": "5e8"}, 500e6)
+    fit = {"preset": "paper", "studies": {}, "fits": {}, "verification": SYNTHETIC_VERIFICATION,
+           "paper": PAPER}
+    (out / "fit.json").write_text(json.dumps(fit))
+    text = open(report.make_report(str(out))).read()
+    for expected in ("vs Hertz 98.765 kN (1.23 %)", "vs Hertz 0.3211 mm (-4.56 %)",
+                     "vs Hertz 165.43 us (7.89 %)", "0.432 (from the paper's 12.62 J loss)",
+                     "(paper 12.62 J)", "(paper 12.64 J)", "difference 0.16 % (paper 0.17 %)",
+                     "hourglass 0.111 % of the initial energy (paper 0.0694 %)",
+                     "e = 0.5300 at h_min = 1 mm, 0.5258 at h_min = 0.5 mm", "0.0042"):
+        assert expected in text, expected
+    assert (out / "figures" / "fig03_force_indentation.png").exists()
+    # No formula or constant of the paper or of Hertz is left on the Python side.
+    from corlab import figures
+    for name in ("PAPER", "SIGMA0", "E0", "effective_modulus", "_hertz_force"):
+        assert not hasattr(figures, name), name
+    assert not hasattr(report, "overall_error")
+    for module in (report, figures):
+        source = open(module.__file__).read()
+        for literal in ("0.056", "1.16", "0.253", "15.81", "12.61", "12.63", "2.94", "0.0693",
+                        "4 / 3", "4.0 / 3.0", "math.pi"):
+            assert literal not in source, (module.__name__, literal)
 
 
 def test_report_main_without_fit_json_fails_cleanly(tmp_path):
@@ -128,7 +194,18 @@ def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path):
     assert fit["studies"]["table2"]["ran"] == 6
     law = fit["fits"]["restitution_law"]
     assert 0.02 < law["slope"]["value"] < 0.1
+    # the numbers the report prints, computed by the C++ (src/study/reproduce_report.cpp)
+    assert fit["fits"]["versus_paper"]["slope"]["paper"] == fit["paper"]["slope"] == 0.056
+    error = fit["fits"]["model_error"]["e_paper"]
+    overall = error["overall"]
+    assert overall["runs"] == sum(g["runs"] for g in error["groups"])
+    assert fit["studies"]["table2"]["runs_on_disk"] == 6
+    assert fit["studies_total"]["ran"] == 6
+    assert "fig6" in fit["figure_lines"] and "fig8" in fit["figure_lines"]
+    assert all(c["k1"] > 0 for c in fit["fits"]["comparison"])
     assert (out / "report.html").exists()
+    html_text = (out / "report.html").read_text()
+    assert f"RMS relative error {100 * overall['rms_relative_error']:.2f} %" in html_text
     assert (out / "figures" / "fig06_e_vs_lnk1.png").exists()
     second = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     assert second.returncode == 0, second.stderr

@@ -20,6 +20,15 @@ double sphere_mass(double radius, double density) {
 }
 }  // namespace
 
+double hertz_force(double overlap, double sphere_radius, double effective_modulus) {
+  return 4.0 / 3.0 * effective_modulus * std::sqrt(sphere_radius) *
+         std::pow(std::max(overlap, 0.0), 1.5);
+}
+
+double hertz_contact_radius(double overlap, double sphere_radius) {
+  return std::sqrt(sphere_radius * std::max(overlap, 0.0));
+}
+
 HertzReference hertz_reference(double sphere_radius,
                                double effective_modulus,
                                double sphere_density,
@@ -30,8 +39,8 @@ HertzReference hertz_reference(double sphere_radius,
   ref.mass = sphere_mass(r, sphere_density);
   ref.max_overlap = std::pow(
       15.0 * ref.mass * velocity * velocity / (16.0 * effective_modulus * std::sqrt(r)), 0.4);
-  ref.max_force = 4.0 / 3.0 * effective_modulus * std::sqrt(r) * std::pow(ref.max_overlap, 1.5);
-  ref.contact_radius = std::sqrt(r * ref.max_overlap);
+  ref.max_force = hertz_force(ref.max_overlap, r, effective_modulus);
+  ref.contact_radius = hertz_contact_radius(ref.max_overlap, r);
   ref.contact_time = hertz_contact_time_factor() * ref.max_overlap / velocity;
   return ref;
 }

@@ -237,6 +237,7 @@ void compare_study_runs(const std::string& study,
                           {"E_star", p.E_star},
                           {"sigma_y", p.sigma_y},
                           {"velocity", v[i]},
+                          {"k1", k1(p.E_star, p.rho, v[i])},
                           {"e_fe", e[i]},
                           {"e_error", e_error[i]},
                           {"e_paper", paper_model_e(c, v[i])},
@@ -336,6 +337,9 @@ json onset_case(const SweepCase& c,
                       {"von_mises_max", probe.von_mises_max}});
   }
   const bool bracketed = v_el > 0 && std::isfinite(v_pl) && v_el < v_pl;
+  const double v_y_paper =
+      power_law_yield_velocity(PaperConstants::kCombined, PaperConstants::kExponentN,
+                               PaperConstants::kExponentM, p.rho, p.E_star, p.sigma_y);
   return {{"case_id", c.id},
           {"group", p.group()},
           {"sphere_rho", p.rho},
@@ -347,9 +351,9 @@ json onset_case(const SweepCase& c,
           {"v_scaled", v_scaled},
           {"bracketed", bracketed},
           {"v_hertz_onset", hertz_yield_onset_velocity(p.rho, p.E_star, p.sigma_y)},
-          {"v_y_paper_eq18", power_law_yield_velocity(PaperConstants::kCombined, 4.5, -3.5, p.rho,
-                                                      p.E_star, p.sigma_y)},
+          {"v_y_paper_eq18", v_y_paper},
           {"v_y_ours", ours.v_y(p)},
+          {"v_y_paper_over_onset", v_y_paper / (bracketed ? std::sqrt(v_el * v_pl) : kNaN)},
           {"probes", probes}};
 }
 

@@ -48,4 +48,21 @@ nlohmann::json run_onset_study(const SweepSpec& spec,
                                const std::filesystem::path& dir,
                                const ReproduceOptions& options);
 
+/// The numbers of the report beside the fits (reproduce_report.cpp); the Python report only
+/// reads, formats and plots them.
+/// fit.json's "verification": the verification_hertz runs against the Hertz reference (elastic
+/// substrate) or the paper's energies (`paper`: fit.json's "paper"), and the mesh study.
+nlohmann::json verification_numbers(const std::filesystem::path& out_dir,
+                                    const std::filesystem::path& studies_dir,
+                                    const std::string& preset,
+                                    const nlohmann::json& paper);
+/// Adds "model_error" (eq. 19 against the FE runs, per case and overall) and "versus_paper" (our
+/// coefficients against the published ones) to fit.json's "fits".
+void add_comparison_numbers(nlohmann::json& fits);
+/// fit.json's "figure_lines": the model lines of Figs. 6-10 sampled from `fits`.
+nlohmann::json figure_lines(const nlohmann::json& fits);
+/// Finished runs of a study on disk and their summed solver time: {"runs_on_disk",
+/// "solver_s_on_disk"}.
+nlohmann::json disk_runs(const std::filesystem::path& out_dir, const std::string& study);
+
 }  // namespace corlab::study::reproduce_detail

@@ -24,6 +24,13 @@ struct HertzReference {
 /// (Johnson 1985, eq. 11.24).
 double hertz_contact_time_factor();
 
+/// Hertz force F = 4/3 E* sqrt(R) delta^(3/2) [N] at the overlap delta [m] (0 for delta <= 0) of a
+/// sphere of radius R [m] on a half-space, E* [Pa] (Johnson 1985, eq. 4.23).
+double hertz_force(double overlap, double sphere_radius, double effective_modulus);
+
+/// Hertz contact radius a = sqrt(R delta) [m] at the overlap delta [m] (0 for delta <= 0).
+double hertz_contact_radius(double overlap, double sphere_radius);
+
 /// Hertz reference for the sphere (radius R [m], elastic constants, density) hitting the
 /// substrate (elastic constants only; its yield stress is ignored) at `config.impact.velocity`.
 HertzReference hertz_reference(const ImpactConfig& config);
