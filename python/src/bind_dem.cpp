@@ -15,6 +15,7 @@
 #include "corlab/dem/hysteresis_chi.hpp"
 #include "corlab/dem/lammps_mapping.hpp"
 #include "corlab/dem/law_info.hpp"
+#include "corlab/dem/viscoelastic_restitution.hpp"
 #include "corlab/materials/material_database.hpp"
 
 namespace py = pybind11;
@@ -138,6 +139,18 @@ void bind_dem(py::module_& m) {
     }
     return out;
   });
+  d.def(
+      "schwager_poeschel",
+      [](double stiffness, double damping, double mass, double velocity, const std::string& form) {
+        const dem::ViscoelasticHertzLaw law{stiffness, damping};
+        if (form == "pade") return dem::schwager_poeschel_pade(law, mass, velocity);
+        if (form == "series") return dem::schwager_poeschel_series(law, mass, velocity);
+        throw_invalid("form", form, "one of [pade, series]");
+      },
+      py::arg("stiffness"), py::arg("damping"), py::arg("effective_mass"), py::arg("velocity"),
+      py::arg("form") = "pade",
+      "Schwager-Poeschel e(v) of the viscoelastic Hertz law (K [N/m^1.5], c [N s/m^1.5], "
+      "m* [kg], v [m/s]): form 'pade' (large dissipation) or 'series' (e >= 0.9)");
   d.def("tsuji_alpha", &dem::calibrate_tsuji_alpha, py::arg("e"), "Exact alpha of TsujiLaw");
   d.def("lammps_tsuji_input", &dem::lammps_tsuji_input, py::arg("e"),
         "e_in for LAMMPS damping tsuji so that it delivers e");

@@ -32,6 +32,22 @@ def test_published_formula_and_catalog():
     assert "thornton_ning" in names and "hu_guo" in names
 
 
+def test_schwager_poeschel_matches_the_contact_ode():
+    k, m, v = 1e9, 1e-4, 1.0
+    c = 0.25 * k**0.6 * m**0.4  # x = 0.5: e = 0.76
+    params = {"stiffness": k, "damping": c}
+    e_ode = corlab.dem.simulate_impact("viscoelastic", params, m, v)["e"]
+    e_pade = corlab.dem.schwager_poeschel(k, c, m, v)
+    e_series = corlab.dem.schwager_poeschel(k, c, m, v, form="series")
+    # the papers separate at F = 0; the law as integrated separates at delta = 0 (lower e)
+    assert e_pade == pytest.approx(0.7605, abs=1e-3)
+    assert e_ode < e_pade and e_pade - e_ode < 1e-2
+    assert abs(e_series - e_pade) < 2e-3
+    assert "schwager_poeschel" in [law["name"] for law in corlab.dem.laws()]
+    with pytest.raises(ValueError, match="form"):
+        corlab.dem.schwager_poeschel(k, c, m, v, form="nope")
+
+
 def test_export_constant_e_writes_compensated_lammps_input():
     out = corlab.dem.export([("steel_ma2023", 0.005)], wall="steel_ma2023", restitution=0.5)
     data = json.loads(out["json"])

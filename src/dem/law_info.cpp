@@ -51,6 +51,18 @@ const std::vector<LawInfo>& law_catalog() {
        "Schwager T., Poeschel T. (2008), Phys. Rev. E 78:051304",
        "F = K delta^1.5 + c delta^0.5 delta_dot (LAMMPS damping viscoelastic: c = eta m* sqrt(R*))",
        Status::kVerifiedSecondSource, "form read in LAMMPS source; e(v) by ODE"},
+      {"schwager_poeschel",
+       "Ramirez R., Poeschel T., Brilliantov N.V., Schwager T. (1999), Phys. Rev. E 60:4465; "
+       "Schwager T., Poeschel T. (2008), Phys. Rev. E 78:051304; Pade: Mueller P., Poeschel T. "
+       "(2011), arXiv:1102.5247",
+       "e(v) of viscoelastic_hertz: x = beta^0.5 v^0.1, beta = c K^-0.6 m*^-0.4; series "
+       "e = 1 - 1.153449 x^2 + 0.798267 x^4; Pade e = (1 + 0.501086 x)/(1 + 0.501086 x + "
+       "1.15345 x^2 + 0.577977 x^3 + 0.532178 x^4)",
+       Status::kVerifiedSecondSource,
+       "papers' text not read: C1, C2 re-derived in closed form; Pade numbers from one public "
+       "secondary source; both checked against the contact ODE with force-free separation "
+       "(series 2.5e-4 for x <= 0.3, Pade 5e-4 for x <= 0.5; "
+       "tests/verification/schwager_poeschel_test)"},
       {"linear_spring_dashpot", "Cundall P.A., Strack O.D.L. (1979), Geotechnique 29:47-65",
        "F = k delta + c delta_dot; e = exp(-pi zeta/sqrt(1 - zeta^2)), zeta = c/(2 sqrt(m* k))",
        Status::kVerifiedSecondSource, "closed form checked against ODE integration"},

@@ -63,7 +63,8 @@ struct TsujiLaw {
 /// Viscoelastic Hertz with damping proportional to the contact radius (Kuwabara-Kono 1987,
 /// Brilliantov et al. 1996; LAMMPS `damping viscoelastic`): F = K delta^1.5 + c delta^(1/2)
 /// delta_dot. e falls with the impact speed: 1 - e ~ (c v^(1/5) K^(-3/5) m*^(-2/5)) at small
-/// damping (Schwager & Poeschel 2008). LAMMPS writes c = eta_n m* sqrt(R*).
+/// damping (Schwager & Poeschel 2008; closed-form e(v): viscoelastic_restitution.hpp). LAMMPS
+/// writes c = eta_n m* sqrt(R*).
 struct ViscoelasticHertzLaw {
   double stiffness = 0.0;  ///< K [N/m^1.5]
   double damping = 0.0;    ///< c [N s/m^1.5]
