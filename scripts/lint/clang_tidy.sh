@@ -10,7 +10,7 @@ cd "$root"
 excluded=$(sed -e 's/#.*//' -e 's/[[:space:]]*$//' scripts/lint/clang_tidy_exclude.txt | grep -v '^$' || true)
 files=$(git ls-files 'src/*.cpp' 'apps/*.cpp' 'python/src/*.cpp' | grep -vxF "$excluded" || true)
 count=$(wc -w <<< "$files")
-echo "clang-tidy: $count files ($(wc -l <<< "$excluded") excluded, see scripts/lint/clang_tidy_exclude.txt)"
+echo "clang-tidy: $count files ($(grep -c . <<< "$excluded" || true) excluded, see scripts/lint/clang_tidy_exclude.txt)"
 start=$(date +%s)
 # One clang-tidy per file, JOBS at a time; any warning fails (WarningsAsErrors in .clang-tidy).
 printf '%s\n' $files | xargs -P "$jobs" -n 1 clang-tidy -p "$build" --quiet \
