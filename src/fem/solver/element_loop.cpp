@@ -322,8 +322,15 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
   }
 }
 
-// Subcycled nodal update (element_loop.hpp): listed nodes, each with its level's step.
-CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
+namespace {
+
+// The subcycled nodal update's pass over `count` nodes: node order[k] (kListed) or k
+// (contiguous). In the contiguous pass a node of scale above due_scale is not due: it has no
+// force (none of its elements updated) and a zero step.
+template <bool kListed>
+[[gnu::always_inline]] inline NodeSums subcycled_node_pass(const SubcycledNodes& a,
+                                                           int count,
+                                                           double due_scale) {
   const int* __restrict order = a.order;
   double* __restrict pr = a.r;
   double* __restrict pz = a.z;
@@ -341,9 +348,9 @@ CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
   const double dt = a.step[0];
   double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
 #pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
-  for (int k = 0; k < a.count; ++k) {
-    const int i = order[k];
-    const double h = dt * pscale[i];
+  for (int k = 0; k < count; ++k) {
+    const int i = kListed ? order[k] : k;
+    const double h = kListed || pscale[i] <= due_scale ? dt * pscale[i] : 0.0;
     const double vr_new = (pvr[i] + dt_avg * pfr[i] * pim[i]) * pfree_r[i];
     const double vz_new = (pvz[i] + dt_avg * pfz[i] * pim[i]) * pfree_z[i];
     const double k_i = 0.5 * pm[i] * (pvr[i] * vr_new + pvz[i] * vz_new);
@@ -361,43 +368,16 @@ CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
   return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
 }
 
-// Subcycled nodal update over all nodes (element_loop.hpp): contiguous and vectorised; a node not
-// due has no force (no element of its has updated) and a zero step.
+}  // namespace
+
+// Subcycled nodal update (element_loop.hpp): listed nodes, each with its level's step.
+CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
+  return subcycled_node_pass<true>(a, a.count, 0.0);
+}
+
+// Subcycled nodal update over all nodes (element_loop.hpp): contiguous and vectorised.
 CORLAB_SIMD_CLONES NodeSums node_update_due(const SubcycledNodes& a, int nn, int due_level) {
-  double* __restrict pr = a.r;
-  double* __restrict pz = a.z;
-  double* __restrict pvr = a.vr;
-  double* __restrict pvz = a.vz;
-  double* __restrict pfr = a.fr;
-  double* __restrict pfz = a.fz;
-  const double* __restrict pm = a.m;
-  const double* __restrict pim = a.im;
-  const double* __restrict pfree_r = a.free_r;
-  const double* __restrict pfree_z = a.free_z;
-  const double* __restrict psph = a.sphere;
-  const double* __restrict pscale = a.scale;
-  const double dt_avg = a.dt_avg;
-  const double dt = a.step[0];
-  const auto due_scale = static_cast<double>(1 << due_level);
-  double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
-#pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
-  for (int i = 0; i < nn; ++i) {
-    const double h = pscale[i] <= due_scale ? dt * pscale[i] : 0.0;
-    const double vr_new = (pvr[i] + dt_avg * pfr[i] * pim[i]) * pfree_r[i];
-    const double vz_new = (pvz[i] + dt_avg * pfz[i] * pim[i]) * pfree_z[i];
-    const double k_i = 0.5 * pm[i] * (pvr[i] * vr_new + pvz[i] * vz_new);
-    ke += k_i;
-    ke_sphere += k_i * psph[i];
-    p_sphere += pm[i] * vz_new * psph[i];
-    mz_sphere += pm[i] * pz[i] * psph[i];
-    pvr[i] = vr_new;
-    pvz[i] = vz_new;
-    pr[i] += h * vr_new;
-    pz[i] += h * vz_new;
-    pfr[i] = 0.0;
-    pfz[i] = 0.0;
-  }
-  return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
+  return subcycled_node_pass<false>(a, nn, static_cast<double>(1 << due_level));
 }
 
 // Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
