@@ -34,6 +34,18 @@ bool apply_contact(
   return penetrating;
 }
 
+/// The step's element sums into the state's running energies and plastic strain; an inverted
+/// element into the report (its mesh index).
+void record_element_sums(const ImpactModel& m, ImpactState& s, ForceReport& rep) {
+  const ElementSums& sums = rep.elements;
+  if (sums.bad_element >= 0) rep.inverted_element = m.original_element[sums.bad_element];
+  s.energy.internal += sums.internal_work;
+  s.energy.plastic += sums.plastic_work;
+  s.energy.hourglass += sums.hourglass_work;
+  s.energy.viscous += sums.viscous_work;
+  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
+}
+
 /// Adds one pass's element sums to the step's.
 void add_sums(const ElementSums& a, ElementSums& sums) {
   sums.internal_work += a.internal_work;
@@ -123,12 +135,7 @@ ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
   const int top = sync_level(s.step + 1, m.levels.max_level);
   rep.elements = subcycled_elements(m, s, top);
   const ElementSums& sums = rep.elements;
-  if (sums.bad_element >= 0) rep.inverted_element = m.original_element[sums.bad_element];
-  s.energy.internal += sums.internal_work;
-  s.energy.plastic += sums.plastic_work;
-  s.energy.hourglass += sums.hourglass_work;
-  s.energy.viscous += sums.viscous_work;
-  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
+  record_element_sums(m, s, rep);
 
   double force = 0.0;
   rep.penetrating = apply_contact(m, s, s.fr.data(), s.fz.data(), force, s.energy.contact);
@@ -167,12 +174,7 @@ ForceReport compute_forces(const ImpactModel& m, ImpactState& s) {
                s.vz.data(), s.fr.data(), s.fz.data(), s.dt, sums);
   element_loop(m.substrate, s.elements, m.n_sphere_elements, m.n_elements, s.r.data(), s.z.data(),
                s.vr.data(), s.vz.data(), s.fr.data(), s.fz.data(), s.dt, sums);
-  if (sums.bad_element >= 0) rep.inverted_element = m.original_element[sums.bad_element];
-  s.energy.internal += sums.internal_work;
-  s.energy.plastic += sums.plastic_work;
-  s.energy.hourglass += sums.hourglass_work;
-  s.energy.viscous += sums.viscous_work;
-  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
+  record_element_sums(m, s, rep);
 
   double force = 0.0;
   rep.penetrating = apply_contact(m, s, s.fr.data(), s.fz.data(), force, s.energy.contact);
