@@ -13,7 +13,6 @@ constant: it only reads, formats and plots.
 """
 from __future__ import annotations
 
-import html
 import json
 import math
 import os
@@ -21,6 +20,7 @@ import platform
 import sys
 
 from . import figures
+from .html_table import esc, fmt, pct, table
 
 COARSE_OMITS = [
     "Contact mesh: h_min = 1 mm with h <= a_max/4 (paper and paper preset: 0.25 mm, h <= "
@@ -36,36 +36,6 @@ COARSE_OMITS = [
     "Table 3 pairs: velocities {0.5, 1, 2, 4, 6, 20} m/s (paper preset: 12 velocities 0.2-70 m/s).",
     "Table 4 cases: velocities {1, 2, 5, 10, 20} m/s (paper preset: 1-50 m/s).",
 ]
-
-
-def esc(x):
-    return html.escape(str(x))
-
-
-def fmt(x, digits=4):
-    try:
-        v = float(x)
-    except (TypeError, ValueError):
-        return "-"
-    if math.isnan(v) or math.isinf(v):
-        return "-"
-    return f"{v:.{digits}g}"
-
-
-def pct(x, digits=2):
-    try:
-        v = float(x)
-    except (TypeError, ValueError):
-        return "-"
-    return "-" if math.isnan(v) else f"{100 * v:.{digits}f} %"
-
-
-def table(headers, rows):
-    out = ["<table><tr>" + "".join(f"<th>{esc(h)}</th>" for h in headers) + "</tr>"]
-    for r in rows:
-        out.append("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>")
-    out.append("</table>")
-    return "\n".join(out)
 
 
 def covers(c):

@@ -1,5 +1,5 @@
 """Fig. 4 of the report: field snapshots written by `corlab reproduce` (verification_hertz with
-output.times) are read back by corlab.figures.read_vtu and drawn by fig4_fields."""
+output.times) are read back by corlab.vtu.read_vtu and drawn by fig4_fields."""
 import json
 import os
 import subprocess
@@ -7,7 +7,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from corlab import figures
+from corlab import figures, vtu
 
 TINY_HERTZ = """[study]
 name = "verification_hertz"
@@ -27,7 +27,7 @@ description = "tiny Figs. 3-5 for the test"
 
 def test_fig4_without_snapshots_is_missing(tmp_path):
     assert figures.fig4_fields(str(tmp_path), {}) is None
-    assert figures.field_snapshots(str(tmp_path / "nothing")) == []
+    assert vtu.field_snapshots(str(tmp_path / "nothing")) == []
 
 
 @pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
@@ -44,7 +44,7 @@ def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path):
     runs = {}
     for row, h, s in figures.history_runs(str(out), "verification_hertz"):
         run_dir = out / "verification_hertz" / "runs" / row["case_id"]
-        snaps = figures.field_snapshots(str(run_dir))
+        snaps = vtu.field_snapshots(str(run_dir))
         assert [round(t * 1e6) for t, _ in snaps] == [70, 110, 170], os.listdir(run_dir)
         elastic = s["config"]["substrate"]["material"]["sigma_y"] is None
         runs["elastic" if elastic else "plastic"] = (h, s, snaps)
@@ -52,7 +52,7 @@ def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path):
 
     for kind, (h, s, snaps) in runs.items():
         for t, path in snaps:
-            v = figures.read_vtu(path)
+            v = vtu.read_vtu(path)
             assert v["quads"].shape == (s["elements"], 4)
             assert v["points"].shape[1] == 3 and np.isfinite(v["points"]).all()
             assert v["quads"].min() >= 0 and v["quads"].max() < len(v["points"])
@@ -69,7 +69,7 @@ def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path):
                 sphere_nodes = np.unique(v["quads"][body == 0])
                 assert v["points"][sphere_nodes, 1].min() < 0
                 assert v["cells"]["von_mises"][body == 1].max() > 100e6
-        last = figures.read_vtu(snaps[-1][1])
+        last = vtu.read_vtu(snaps[-1][1])
         if kind == "plastic":
             assert last["cells"]["plastic_strain"].max() > 0
 

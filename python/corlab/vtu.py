@@ -1,0 +1,56 @@
+"""Field snapshots of corlab runs: the ASCII .vtu files of ``corlab simulate --set
+output.times=...`` (include/corlab/fem/vtu_writer.hpp) read back as arrays."""
+from __future__ import annotations
+
+import os
+
+
+def read_vtu(path):
+    """An ASCII .vtu of corlab's writer (include/corlab/fem/vtu_writer.hpp) as a dict:
+    ``points`` (N x 3, deformed (r, z, 0) [m]), ``quads`` (M x 4 node indices), ``cells``
+    {name: (M,) or (M x k)} and ``point_data`` {name: (N,) or (N x k)}."""
+    import xml.etree.ElementTree as ET
+
+    import numpy as np
+
+    piece = ET.parse(path).getroot().find("UnstructuredGrid/Piece")
+    if piece is None:
+        raise ValueError(f"{path}: no UnstructuredGrid/Piece")
+    n_points = int(piece.get("NumberOfPoints"))
+    n_cells = int(piece.get("NumberOfCells"))
+
+    def values(array, count):
+        dtype = float if array.get("type", "").startswith("Float") else np.int64
+        data = np.array((array.text or "").split(), dtype=dtype)
+        k = int(array.get("NumberOfComponents", "1"))
+        if data.size != count * k:
+            raise ValueError(f"{path}: {array.get('Name')}: {data.size} values, "
+                             f"{count} x {k} expected")
+        return data.reshape(count, k) if k > 1 else data
+
+    points = values(piece.find("Points/DataArray"), n_points)
+    cells = {a.get("Name"): a for a in piece.findall("Cells/DataArray")}
+    offsets = values(cells["offsets"], n_cells)
+    if not np.array_equal(offsets, 4 * np.arange(1, n_cells + 1)):
+        raise ValueError(f"{path}: only quadrilateral cells are supported")
+    quads = values(cells["connectivity"], 4 * n_cells).reshape(n_cells, 4)
+    return {"points": points.reshape(n_points, 3), "quads": quads,
+            "cells": {a.get("Name"): values(a, n_cells)
+                      for a in piece.findall("CellData/DataArray")},
+            "point_data": {a.get("Name"): values(a, n_points)
+                           for a in piece.findall("PointData/DataArray")}}
+
+
+def field_snapshots(run_dir):
+    """[(t [s], path)] of the runs/<case>/fields_<t>.vtu files of one run, by time."""
+    if not os.path.isdir(run_dir):
+        return []
+    found = []
+    for name in os.listdir(run_dir):
+        if name.startswith("fields_") and name.endswith(".vtu"):
+            try:
+                t = float(name[len("fields_"):-len(".vtu")])
+            except ValueError:
+                continue
+            found.append((t, os.path.join(run_dir, name)))
+    return sorted(found)
