@@ -7,8 +7,12 @@
 //   BM_ElementThroughput/h: the same case cut to a fixed end time (solver.t_max), for the
 //     element-loop throughput at several mesh sizes.
 //   BM_Subcycling/v/levels: the case at v = 5 and 0.1 m/s (arg 50, 1: v x 10) with
-//     solver.subcycling_levels = 0 (off) and 4 (docs/theory/solver.md section 11); compare the
+//     solver.subcycling_levels = 0 (off) and 4 (docs/theory/solver.md section 11), mass scaling
+//     off; compare the
 //     times and the e labels of levels 0 and 4 (element_updates: the element updates done).
+//   BM_MassScaling/v/F: the case at v = 0.1 and 0.02 m/s (arg: v in mm/s; 0.02 m/s is a
+//     yield-onset probe's speed) with solver.mass_scaling_max = 1 (off) and 8 (the default;
+//     docs/theory/solver.md section 12); compare the times and the e labels.
 // element_steps_per_s counts elements x base steps (what a run without subcycling would update).
 // Sample run: ./build-solver/bin/solver_benchmark --benchmark_filter=PaperCase
 #include <benchmark/benchmark.h>
@@ -81,6 +85,7 @@ void BM_Subcycling(benchmark::State& state) {
   ImpactConfig config;
   config.impact.velocity = static_cast<double>(state.range(0)) / 10.0;
   config.solver.subcycling_levels = static_cast<int>(state.range(1));
+  config.solver.mass_scaling_max = 1.0;  // subcycling alone (BM_MassScaling: with it)
   time_runs(state, config);
 }
 BENCHMARK(BM_Subcycling)
@@ -88,6 +93,21 @@ BENCHMARK(BM_Subcycling)
     ->Args({50, 4})
     ->Args({1, 0})
     ->Args({1, 4})
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
+
+void BM_MassScaling(benchmark::State& state) {
+  ImpactConfig config;
+  config.impact.velocity = static_cast<double>(state.range(0)) / 1000.0;
+  config.solver.mass_scaling_max = static_cast<double>(state.range(1));
+  time_runs(state, config);
+}
+BENCHMARK(BM_MassScaling)
+    ->Args({100, 1})
+    ->Args({100, 8})
+    ->Args({20, 1})
+    ->Args({20, 8})
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->UseRealTime();

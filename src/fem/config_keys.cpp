@@ -169,6 +169,15 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
       "element subcycling: elements step at up to 2^this x the base step (0 = off)",
       +[](ImpactConfig& c) { return &c.solver.subcycling_levels; }));
   t.push_back(entry(
+      "solver.mass_scaling_max", "[-]",
+      closed(1.0, 64.0, "dt x 64 = density x 4096 at the contact"),
+      "mass scaling: the base step may grow up to this factor (1 = off)",
+      +[](ImpactConfig& c) { return &c.solver.mass_scaling_max; }));
+  t.push_back(entry(
+      "solver.mass_scaling_inertia", "[-]", closed(0.0, 1e-2, "quasi-static contact zone"),
+      "mass scaling: bound on the added inertia (F^2 - 1) rho v^2 / p_ref",
+      +[](ImpactConfig& c) { return &c.solver.mass_scaling_inertia; }));
+  t.push_back(entry(
       "output.times", "[s]", closed(0.0, 10.0), "times at which to write VTU fields (a list)",
       +[](ImpactConfig& c) { return &c.output.field_times; }));
   t.push_back(entry(

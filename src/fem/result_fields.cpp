@@ -122,6 +122,9 @@ const std::array kFields{
         "status_detail", "-", "one line on a run that did not rebound", kSummary),
     member<&R::substrate_von_mises_max>(
         "substrate_von_mises_max", "Pa", "largest substrate von Mises stress at the end", kSummary),
+    member<&R::mass_scaling>("mass_scaling", "-", "base step / the physical one (1 = none)", kBoth),
+    member<&R::added_mass_fraction>(
+        "added_mass_fraction", "-", "mass added by mass scaling / sphere mass", kBoth),
     derived("E_star",
             "Pa",
             "effective modulus (Ma et al. 2023 eq. 3)",

@@ -75,6 +75,14 @@ struct SolverConfig {
   /// Multi-time-step integration (element subcycling, docs/theory/solver.md section 11): elements
   /// step at 2^L x the base step, L <= this (0 = every element at the base step) [-].
   int subcycling_levels = 4;
+  /// Mass scaling to a target step (docs/theory/solver.md section 12): the elements whose stable
+  /// step is below F x the smallest get their density raised until it reaches it; F is the
+  /// largest power of two <= this whose added inertia stays within mass_scaling_inertia
+  /// (1 = off) [-].
+  double mass_scaling_max = 8.0;
+  /// Bound on the inertia that mass scaling adds, (F^2 - 1) rho v^2 / p_ref, rho the larger
+  /// density, v the impact speed, p_ref the smaller of the Hertz p0 and the yield stresses [-].
+  double mass_scaling_inertia = 1e-4;
 };
 
 struct OutputConfig {

@@ -57,8 +57,11 @@ struct ImpactResult {
   int elements = 0;
   int nodes = 0;
   long long steps = 0;
-  double h_contact = 0.0;            ///< element size used at the contact [m]
-  double time_step = 0.0;            ///< initial stable time step [s]
+  double h_contact = 0.0;  ///< element size used at the contact [m]
+  double time_step = 0.0;  ///< initial stable time step [s]
+  /// Mass scaling (docs/theory/solver.md section 12): base step / the physical one (1 = none) [-]
+  double mass_scaling = 1.0;
+  double added_mass_fraction = 0.0;  ///< mass added by the scaling / the sphere's mass [-]
   double end_time = 0.0;             ///< [s]
   double wall_s = 0.0;               ///< wall-clock time of the run [s]
   double element_steps_per_s = 0.0;  ///< throughput [1/s]

@@ -59,7 +59,8 @@ struct Block {
   double* __restrict eps_p;
   double* __restrict qr;
   double* __restrict qz;
-  double* __restrict bv;  // viscous mean stress at the last update (kTrapezoid only)
+  double* __restrict bv;                // viscous mean stress at the last update (kTrapezoid only)
+  const double* __restrict step_scale;  // stable step / the physical one (mass scaling)
   double* __restrict f_r;
   double* __restrict f_z;
 };
@@ -87,6 +88,7 @@ struct BlockLanes {
                es.qr.data() + e0,
                es.qz.data() + e0,
                viscous_history ? es.bv.data() + e0 : nullptr,
+               es.step_scale.data() + e0,
                &lanes.f_r[0][0],
                &lanes.f_z[0][0]};
 }
@@ -205,7 +207,9 @@ template <bool kTrapezoid, bool kStableStep>
     }
     if constexpr (kStableStep) {
       const double xi = bulk_viscous_damping_ratio(ls.evol, c, length, p.b1, p.b2);
-      out.dt[l] = element_stable_time_step(length, c, xi);
+      // A scaled element's wave speed is c / step_scale; its viscous damping ratio is below xi,
+      // so keeping xi errs on the safe side.
+      out.dt[l] = element_stable_time_step(length, c, xi) * b.step_scale[l];
     }
   }
   add_lane_sums<kStableStep>(out, b.nb, sums);

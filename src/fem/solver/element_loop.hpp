@@ -34,8 +34,11 @@ struct ElementState {
   // e: [4 e, 4 e + 4)).
   std::vector<double> r_prev, z_prev;
   std::vector<double> bv;  // viscous mean stress at each element's last update [Pa]
+  // Mass scaling: stable step / the physical one (density factor step_scale^2) [-].
+  std::vector<double> step_scale;
   void resize(std::size_t n) {
     nodes.resize(n);
+    step_scale.assign(n, 1.0);
     for (auto* v : {&srr, &szz, &stt, &srz, &eps_p, &qr, &qz}) v->assign(n, 0.0);
   }
 };

@@ -28,6 +28,9 @@ constexpr double kDefaultDurationInContactTimes = 20.0;
 constexpr double kExpectedDurationInContactTimes = 1.3;
 /// Sphere wave transits in the shortest separation window [-].
 constexpr double kWaveTransits = 4.0;
+/// Surface nodes within this many predicted contact radii of the axis are contact nodes for
+/// mass scaling (the contact radius stays within ~1.1 of the prediction) [-].
+constexpr double kScaledContactRadii = 1.5;
 
 BodyParams body_params(const Material& m, const SolverConfig& s) {
   BodyParams p;
@@ -106,27 +109,128 @@ void sort_elements(const Mesh& mesh, ImpactModel& m) {
   }
 }
 
-/// Lumped masses (rho V / 4 per node, V = 2 pi Omega exact) and the initial stable step.
-void set_masses(ImpactModel& m) {
-  m.mass.assign(m.n_nodes, 0.0);
-  m.dt_critical = std::numeric_limits<double>::infinity();
+/// Geometry of element e at the start positions.
+Quad4Geometry initial_geometry(const ImpactModel& m, int e) {
+  const auto& nd = m.element_nodes[e];
+  double xr[4], xz[4];
+  for (int i = 0; i < 4; ++i) {
+    xr[i] = m.r0[nd[i]];
+    xz[i] = m.z0[nd[i]];
+  }
+  return quad4_geometry(xr, xz);
+}
+
+/// Physical mass [kg] and stable step [s] of each element at the start.
+struct ElementMasses {
+  std::vector<double> mass;
+  std::vector<double> step;
+  std::vector<char> at_contact;  ///< 1 for the elements of contact_zone_elements()
+  double sphere_mass = 0.0;      ///< [kg]
+  double step_min = 0.0;         ///< [s]
+};
+
+ElementMasses element_masses(const ImpactModel& m) {
+  ElementMasses em;
+  em.mass.resize(m.n_elements);
+  em.step.resize(m.n_elements);
+  em.step_min = std::numeric_limits<double>::infinity();
   for (int e = 0; e < m.n_elements; ++e) {
-    const auto& nd = m.element_nodes[e];
-    double xr[4], xz[4];
-    for (int i = 0; i < 4; ++i) {
-      xr[i] = m.r0[nd[i]];
-      xz[i] = m.z0[nd[i]];
-    }
-    const Quad4Geometry g = quad4_geometry(xr, xz);
+    const Quad4Geometry g = initial_geometry(m, e);
     if (!(g.area > 0.0 && g.omega > 0.0)) {
       throw_invalid("mesh element", m.original_element[e],
                     "counter-clockwise with positive area and volume");
     }
     const BodyParams& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
-    const double mass = p.density * kTwoPi * g.omega / 4.0;
-    for (int i = 0; i < 4; ++i) m.mass[nd[i]] += mass;
-    m.dt_critical = std::min(
-        m.dt_critical, element_stable_time_step(characteristic_length(g), p.wave_speed, p.b1));
+    em.mass[e] = p.density * kTwoPi * g.omega;
+    em.step[e] = element_stable_time_step(characteristic_length(g), p.wave_speed, p.b1);
+    em.step_min = std::min(em.step_min, em.step[e]);
+    if (e < m.n_sphere_elements) em.sphere_mass += em.mass[e];
+  }
+  return em;
+}
+
+/// Reference pressure of the mass-scaling bound [Pa]: the smaller of the Hertz p0 at the impact
+/// speed and the yield stresses (the stress scale the contact zone's inertia competes with).
+double reference_pressure(const ImpactConfig& config) {
+  const HertzReference h = hertz_reference(config);
+  double p = 1.5 * h.max_force / (units::kPi * h.contact_radius * h.contact_radius);
+  for (const auto& sy :
+       {config.sphere.material.yield_stress, config.substrate.material.yield_stress}) {
+    if (sy) p = std::min(p, *sy);
+  }
+  return p;
+}
+
+/// Elements with a node on either contact surface within kScaledContactRadii predicted contact
+/// radii of the axis: mass scaling raises their density by the full F^2, so that the contact
+/// nodes take the physical penalty stiffness at the scaled step.
+std::vector<char> contact_zone_elements(const ImpactConfig& config, const ImpactModel& m) {
+  const double r_zone = kScaledContactRadii * predicted_contact_radius(config);
+  std::vector<char> zone_node(m.n_nodes, 0);
+  for (const auto* set : {&m.slaves, &m.masters}) {
+    for (int i : *set) zone_node[i] = m.r0[i] <= r_zone ? 1 : 0;
+  }
+  std::vector<char> at(m.n_elements, 0);
+  for (int e = 0; e < m.n_elements; ++e) {
+    for (int n : m.element_nodes[e]) at[e] = static_cast<char>(at[e] | zone_node[n]);
+  }
+  return at;
+}
+
+/// Step scale of element e for the factor f: f at the contact, else what raises its stable step
+/// to f x the smallest (1 if it is already longer) [-].
+double element_step_scale(const ElementMasses& em, std::size_t e, double f) {
+  return em.at_contact[e] != 0 ? f : std::max(1.0, f * em.step_min / em.step[e]);
+}
+
+/// Mass added by the factor f [kg].
+double added_mass(const ElementMasses& em, double f) {
+  double added = 0.0;
+  for (std::size_t e = 0; e < em.mass.size(); ++e) {
+    const double s = element_step_scale(em, e, f);
+    added += (s * s - 1.0) * em.mass[e];
+  }
+  return added;
+}
+
+/// The mass-scaling factor F (a power of two, 1 = none): the largest <= solver.mass_scaling_max
+/// whose added inertia (F^2 - 1) rho v^2 / p_ref is <= solver.mass_scaling_inertia and whose
+/// added mass is <= kMaxAddedMassFraction of the sphere's.
+double mass_scaling_factor(const ImpactConfig& config, const ElementMasses& em) {
+  const SolverConfig& sc = config.solver;
+  if (sc.mass_scaling_max < 2.0) return 1.0;
+  const double rho = std::max(config.sphere.material.density, config.substrate.material.density);
+  const double v = config.impact.velocity;
+  const double inertia = rho * v * v / reference_pressure(config);
+  double f = std::exp2(std::floor(std::log2(sc.mass_scaling_max)));
+  for (; f >= 2.0; f *= 0.5) {
+    if ((f * f - 1.0) * inertia <= sc.mass_scaling_inertia &&
+        added_mass(em, f) <= kMaxAddedMassFraction * em.sphere_mass) {
+      return f;
+    }
+  }
+  return 1.0;
+}
+
+/// Lumped masses (rho V / 4 per node, V = 2 pi Omega exact, rho scaled by step_scale^2) and the
+/// initial stable step (docs/theory/solver.md section 12).
+void set_masses(const ImpactConfig& config, ImpactModel& m) {
+  ElementMasses em = element_masses(m);
+  em.at_contact = contact_zone_elements(config, m);
+  m.mass_scaling = mass_scaling_factor(config, em);
+  m.sphere_mass_physical = em.sphere_mass;
+  m.mass.assign(m.n_nodes, 0.0);
+  m.physical_mass.assign(m.n_nodes, 0.0);
+  m.step_scale.assign(m.n_elements, 1.0);
+  m.added_mass = 0.0;
+  m.dt_critical = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < m.n_elements; ++e) {
+    for (int n : m.element_nodes[e]) m.physical_mass[n] += em.mass[e] / 4.0;
+    const double s = element_step_scale(em, static_cast<std::size_t>(e), m.mass_scaling);
+    m.step_scale[e] = s;
+    m.added_mass += (s * s - 1.0) * em.mass[e];
+    for (int n : m.element_nodes[e]) m.mass[n] += s * s * em.mass[e] / 4.0;
+    m.dt_critical = std::min(m.dt_critical, s * em.step[e]);
   }
   m.inv_mass.assign(m.n_nodes, 0.0);
   m.sphere_mass = 0.0;
@@ -148,7 +252,14 @@ void set_penalties(const SolverConfig& sc, ImpactModel& m) {
     const int b = m.masters[seg + 1];
     const double xi = std::clamp((m.r0[i] - m.r0[a]) / (m.r0[b] - m.r0[a]), 0.0, 1.0);
     const double m_master = (1.0 - xi) * m.mass[a] + xi * m.mass[b];
-    m.penalty[s] = penalty_stiffness(sc.penalty_scale, m.mass[i], m_master, m.dt_critical);
+    // The physical penalty (mass scaling leaves the contact stiffness, and so e, as it was:
+    // an unscaled penalty 1/3 softer moves e by 0.4 % at 0.1 m/s), capped where the node's mass
+    // was scaled less than the step (away from the contact) so that it stays stable.
+    const double m_master_physical = (1.0 - xi) * m.physical_mass[a] + xi * m.physical_mass[b];
+    m.penalty[s] =
+        std::min(penalty_stiffness(sc.penalty_scale, m.physical_mass[i], m_master_physical,
+                                   m.dt_critical / m.mass_scaling),
+                 penalty_stiffness(sc.penalty_scale, m.mass[i], m_master, m.dt_critical));
   }
 }
 
@@ -169,17 +280,12 @@ void set_time_scales(const ImpactConfig& config, ImpactModel& m) {
   m.max_steps = sc.max_steps;
 }
 
-/// Stable step of element e at the start positions (as for dt_critical) [s].
+/// Stable step of element e at the start positions (as for dt_critical, mass scaling included)
+/// [s].
 double initial_element_step(const ImpactModel& m, int e) {
-  const auto& nd = m.element_nodes[e];
-  double xr[4], xz[4];
-  for (int i = 0; i < 4; ++i) {
-    xr[i] = m.r0[nd[i]];
-    xz[i] = m.z0[nd[i]];
-  }
   const BodyParams& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
-  return element_stable_time_step(characteristic_length(quad4_geometry(xr, xz)), p.wave_speed,
-                                  p.b1);
+  return m.step_scale[e] * element_stable_time_step(characteristic_length(initial_geometry(m, e)),
+                                                    p.wave_speed, p.b1);
 }
 
 /// Level of each node: the smallest level of its elements.
@@ -230,14 +336,17 @@ void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<in
   std::stable_sort(order.begin() + m.n_sphere_elements, order.end(), by_level);
   std::vector<std::array<int, 4>> nodes(m.n_elements);
   std::vector<int> original(m.n_elements);
+  std::vector<double> step_scale(m.n_elements);
   lv.element.assign(m.n_elements, 0);
   for (int k = 0; k < m.n_elements; ++k) {
     nodes[k] = m.element_nodes[order[k]];
     original[k] = m.original_element[order[k]];
+    step_scale[k] = m.step_scale[order[k]];
     lv.element[k] = level[order[k]];
   }
   m.element_nodes = std::move(nodes);
   m.original_element = std::move(original);
+  m.step_scale = std::move(step_scale);
   for (int l = 0; l <= kMaxSubcyclingLevels; ++l) {
     const auto below = [&](int x) { return x <= l; };
     const auto mid = lv.element.begin() + m.n_sphere_elements;
@@ -289,9 +398,9 @@ ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
   m.substrate = body_params(config.substrate.material, config.solver);
   set_nodes(config, mesh, m);
   sort_elements(mesh, m);
-  set_masses(m);
   m.slaves = mesh.sphere_surface_nodes;
   m.masters = mesh.substrate_surface_nodes;
+  set_masses(config, m);
   set_penalties(config.solver, m);
   set_levels(config.solver, m);
   set_time_scales(config, m);
@@ -327,6 +436,7 @@ ImpactState make_initial_state(const ImpactModel& m) {
   s.fz.assign(m.n_nodes, 0.0);
   s.elements.resize(static_cast<std::size_t>(m.n_elements));
   s.elements.nodes = m.element_nodes;
+  s.elements.step_scale = m.step_scale;
   s.cursor.resize(m.slaves.size());
   for (std::size_t k = 0; k < m.slaves.size(); ++k) {
     s.cursor[k] = initial_segment(m.r0.data(), m.masters, m.r0[m.slaves[k]]);

@@ -26,6 +26,10 @@ constexpr double kLevelMargin = 0.8;
 /// most of the fine mesh) would slow the run down [-].
 constexpr double kMaxUpdateFraction = 0.8;
 
+/// Mass scaling (docs/theory/solver.md section 12) adds at most this fraction of the sphere's
+/// mass, both bodies together: measured, e then moves by <= 2e-4 relative (0.1-0.5 m/s) [-].
+constexpr double kMaxAddedMassFraction = 1e-3;
+
 /// Element subcycling (docs/theory/solver.md section 11): levels and the ranges they give.
 struct SubcyclingLevels {
   int max_level = 0;               ///< largest level in use (0 = subcycling off) [-]
@@ -69,6 +73,13 @@ struct ImpactModel {
   double z_com_start = 0.0;            ///< sphere c.o.m. height at the start [m]
   long long max_steps = 0;             ///< step budget (solver.max_steps)
   SubcyclingLevels levels;             ///< all 0 unless solver.subcycling_levels > 0
+  /// Mass scaling (docs/theory/solver.md section 12): each (sorted) element's stable step is
+  /// step_scale x its physical one, its density step_scale^2 x the material's [-].
+  std::vector<double> step_scale;
+  std::vector<double> physical_mass;  ///< lumped masses without the scaling [kg]
+  double mass_scaling = 1.0;          ///< dt_critical / the physical critical step (1 = none) [-]
+  double added_mass = 0.0;            ///< mass added by the scaling, both bodies [kg]
+  double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
 };
 
 /// Builds the model; throws InputError for an invalid config or mesh (named field).
