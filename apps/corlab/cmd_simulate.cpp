@@ -41,7 +41,8 @@ int run_simulate(const SimulateOptions& opt) {
   if (ec) throw_invalid("--out", opt.out_dir, "a writable directory");
 
   fem::SimulationControl control;
-  const InterruptScope interrupt;  // Ctrl-C, SIGTERM, SIGHUP: the solver polls the flag
+  control.config_validated = true;  // above, before the output directory is made
+  const InterruptScope interrupt;   // Ctrl-C, SIGTERM, SIGHUP: the solver polls the flag
   control.cancel = interrupt.flag();
   if (!opt.quiet) control.progress = study::fraction_progress(stderr, "corlab simulate");
   std::vector<std::string> written;

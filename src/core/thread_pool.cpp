@@ -8,6 +8,19 @@
 
 namespace corlab {
 
+WorkerThreads::WorkerThreads(std::size_t threads, const std::function<void()>& work) {
+  threads_.reserve(threads);
+  for (std::size_t t = 0; t < threads; ++t) threads_.emplace_back(work);
+}
+
+WorkerThreads::~WorkerThreads() { join(); }
+
+void WorkerThreads::join() {
+  for (auto& thread : threads_) {
+    if (thread.joinable()) thread.join();
+  }
+}
+
 int worker_count(int jobs) {
   if (jobs > 0) return jobs;
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -34,11 +47,9 @@ void parallel_for(std::size_t count,
     }
   };
   const auto threads = std::min(static_cast<std::size_t>(worker_count(workers)), count);
-  std::vector<std::thread> pool;
-  pool.reserve(threads);
-  for (std::size_t t = 1; t < threads; ++t) pool.emplace_back(work);
+  WorkerThreads pool(threads > 0 ? threads - 1 : 0, work);
   work();  // this thread is one of the workers
-  for (auto& thread : pool) thread.join();
+  pool.join();
   if (first_error) std::rethrow_exception(first_error);
 }
 

@@ -102,7 +102,6 @@ ImpactConfig load_impact_config(const std::filesystem::path& file) {
   }
   ImpactConfig config;
   apply_settings(config, items, fmt::format("config file '{}'", file.string()));
-  validate(config);
   return config;
 }
 

@@ -6,6 +6,7 @@
 namespace corlab::fem {
 
 RunCost estimate_run_cost(const ImpactConfig& config) {
+  validate(config);  // a public entry point: the solver's model takes only checked configs
   const solver::ImpactModel m = solver::make_impact_model(config, build_impact_mesh(config));
   RunCost cost;
   cost.elements = m.n_elements;

@@ -7,7 +7,7 @@
 namespace corlab::fem {
 
 ImpactResult simulate(const ImpactConfig& config, const SimulationControl& control) {
-  validate(config);
+  if (!control.config_validated) validate(config);
   const Mesh mesh = build_impact_mesh(config);
   return run_impact(config, mesh, control);
 }

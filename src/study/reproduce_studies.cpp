@@ -143,6 +143,7 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
     try {
       fem::SimulationControl control;
       control.cancel = opt.cancel;
+      control.config_validated = true;  // spec.expand() validated it
       fs::create_directories(run_dir);
       if (!c.config.output.field_times.empty()) {
         // Field snapshots (Fig. 4) next to the history: runs/<case>/fields_<t>.vtu.

@@ -58,8 +58,6 @@ bool mpi_available() {
 
 namespace detail {
 
-int default_jobs() { return static_cast<int>(std::max(1U, std::thread::hardware_concurrency())); }
-
 Outcome execute_case(const std::vector<SweepCase>& cases,
                      std::size_t index,
                      const std::vector<std::string>& swept_keys,
@@ -76,6 +74,7 @@ Outcome execute_case(const std::vector<SweepCase>& cases,
   outcome.index = index;
   fem::SimulationControl control;
   control.cancel = cancel;
+  control.config_validated = true;  // SweepSpec::expand() validated every run's config
   const auto start = Clock::now();
   auto elapsed = [&start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   std::vector<std::string> row;
@@ -126,46 +125,6 @@ Outcome deserialize(std::string_view message) {
   outcome.wall_s = *wall_s;
   outcome.line = std::string(message);
   return outcome;
-}
-
-WorkerPool::WorkerPool(int threads, const Source& next, const Run& run) {
-  running_ = threads;
-  threads_.reserve(static_cast<std::size_t>(threads));
-  for (int t = 0; t < threads; ++t) {
-    threads_.emplace_back([this, next, run] {
-      while (const auto index = next()) {
-        Outcome outcome = run(*index);
-        const std::lock_guard lock(mutex_);
-        outcomes_.push_back(std::move(outcome));
-        ready_.notify_all();
-      }
-      const std::lock_guard lock(mutex_);
-      --running_;
-      ready_.notify_all();
-    });
-  }
-}
-
-WorkerPool::~WorkerPool() { join(); }
-
-std::vector<Outcome> WorkerPool::take(std::chrono::milliseconds timeout) {
-  std::unique_lock lock(mutex_);
-  ready_.wait_for(lock, timeout, [this] { return !outcomes_.empty() || running_ == 0; });
-  std::vector<Outcome> taken(std::make_move_iterator(outcomes_.begin()),
-                             std::make_move_iterator(outcomes_.end()));
-  outcomes_.clear();
-  return taken;
-}
-
-bool WorkerPool::stopped() const {
-  const std::lock_guard lock(mutex_);
-  return running_ == 0;
-}
-
-void WorkerPool::join() {
-  for (auto& thread : threads_) {
-    if (thread.joinable()) thread.join();
-  }
 }
 
 std::optional<std::size_t> CaseQueue::next() {
@@ -341,8 +300,8 @@ SweepSummary run_sweep(const SweepSpec& spec,
   detail::ensure_directory(out_dir);
   const detail::DirectoryLock lock(out_dir);
   detail::prepare_output(spec, out_dir, plan);
-  const int jobs = std::max(1, std::min(options.jobs > 0 ? options.jobs : detail::default_jobs(),
-                                        static_cast<int>(plan.pending.size())));
+  const int jobs =
+      std::max(1, std::min(worker_count(options.jobs), static_cast<int>(plan.pending.size())));
   detail::Recorder recorder(out_dir / "results.csv", plan, jobs, options.progress);
   detail::CaseQueue queue(plan.pending, cancel);
   {

@@ -1,10 +1,7 @@
 #pragma once
 // Private machinery shared by the local (sweep.cpp) and the MPI (sweep_mpi.cpp) sweep drivers.
 
-#include <chrono>
-#include <condition_variable>
 #include <cstdio>
-#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -12,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "corlab/core/thread_pool.hpp"
 #include "corlab/study/progress.hpp"
 #include "corlab/study/results_table.hpp"
 #include "corlab/study/sweep.hpp"
@@ -39,29 +37,8 @@ Outcome execute_case(const std::vector<SweepCase>& cases,
 std::string serialize(const Outcome& outcome);
 Outcome deserialize(std::string_view message);
 
-/// Threads that each take a case index from `next` (thread-safe; nullopt = stop), run it and
-/// queue the outcome for the one writer thread.
-class WorkerPool {
- public:
-  using Source = std::function<std::optional<std::size_t>()>;
-  using Run = std::function<Outcome(std::size_t)>;
-  WorkerPool(int threads, const Source& next, const Run& run);
-  ~WorkerPool();
-  WorkerPool(const WorkerPool&) = delete;
-  WorkerPool& operator=(const WorkerPool&) = delete;
-  /// Outcomes queued so far (waits up to `timeout` for the first one).
-  std::vector<Outcome> take(std::chrono::milliseconds timeout);
-  /// All threads have stopped (their outcomes may still be queued).
-  bool stopped() const;
-  void join();
-
- private:
-  mutable std::mutex mutex_;
-  std::condition_variable ready_;
-  std::deque<Outcome> outcomes_;
-  int running_ = 0;
-  std::vector<std::thread> threads_;
-};
+/// The sweep's workers: each runs cases and queues the outcomes for the one writer thread.
+using WorkerPool = StreamingPool<Outcome>;
 
 /// Hands out the pending case indices in order; stops when cancelled.
 class CaseQueue {
@@ -138,9 +115,6 @@ class Recorder {
   double wall_sum_ = 0.0;
   std::unique_ptr<ProgressBar> progress_;
 };
-
-/// Default: all cores.
-int default_jobs();
 
 #ifdef CORLAB_WITH_MPI
 /// The distributed driver (sweep_mpi.cpp).

@@ -1,4 +1,5 @@
-// Fuzz target: the impact-config readers, a TOML file (load_impact_config) and the same text as
+// Fuzz target: the impact-config readers, a TOML file (load_impact_config + validate) and the same
+// text as
 // `--set key=value` lines (apply_settings + validate).
 #include <sstream>
 #include <vector>
@@ -9,7 +10,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace corlab;
   const auto file = fuzz::scratch_file(".toml", data, size);
-  fuzz::expect_clean("config_toml", [&] { (void)fem::load_impact_config(file); });
+  fuzz::expect_clean("config_toml", [&] { fem::validate(fem::load_impact_config(file)); });
   std::vector<std::string> items;
   std::istringstream lines(std::string(reinterpret_cast<const char*>(data), size));
   for (std::string line; std::getline(lines, line);) items.push_back(line);

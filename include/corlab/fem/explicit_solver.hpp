@@ -12,7 +12,8 @@
 namespace corlab::fem {
 
 /// Runs one impact on `mesh` (laid out as mesh.hpp says: sphere above the substrate at the gap).
-/// The config's mesh.* keys are ignored here. Throws InputError for an invalid config or mesh;
+/// The config's mesh.* keys are ignored here; the config must have passed validate() (simulate()
+/// checks it: a config is validated once, where it enters). Throws InputError for an invalid mesh;
 /// every other outcome (clean rebound, no rebound by t_max, inverted element, collapsed step,
 /// non-finite state, step budget, cancel) is the result's `status` (run_status.hpp), and e is
 /// NaN unless the status is kSeparated.

@@ -115,7 +115,9 @@ void apply_settings(ImpactConfig& config,
                     const std::vector<std::string>& key_value_items,
                     std::string_view origin);
 
-/// Reads a TOML file of the keys above over the defaults; throws InputError on any problem.
+/// Reads a TOML file of the keys above over the defaults; throws InputError for a malformed file,
+/// an unknown key or a value that is not of the key's type. Ranges are checked by validate() once
+/// the overrides (--set) are applied: simulate() does it.
 ImpactConfig load_impact_config(const std::filesystem::path& file);
 
 }  // namespace corlab::fem

@@ -23,9 +23,14 @@ struct SimulationControl {
   bool stop_at_max_compression = false;
   /// Called at each requested field time with the current mesh and fields (for VTU output).
   std::function<void(double time, const struct FieldSnapshot&)> on_fields;
+  /// The caller already ran validate() on this very config (the CLI before it creates the output
+  /// directory, a sweep spec for each of its runs), so simulate() does not check it again:
+  /// a config is validated once, where it enters.
+  bool config_validated = false;
 };
 
-/// Runs one impact (validates the config first; throws InputError when it is invalid).
+/// Runs one impact (validates the config first unless control.config_validated; throws
+/// InputError when it is invalid).
 ImpactResult simulate(const ImpactConfig& config, const SimulationControl& control = {});
 
 }  // namespace corlab::fem

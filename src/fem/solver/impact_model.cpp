@@ -389,7 +389,6 @@ void set_levels(const SolverConfig& sc, ImpactModel& m) {
 }  // namespace
 
 ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
-  validate(config);
   check_mesh(mesh);
   ImpactModel m;
   m.n_nodes = mesh.num_nodes();

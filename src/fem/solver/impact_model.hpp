@@ -82,7 +82,8 @@ struct ImpactModel {
   double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
 };
 
-/// Builds the model; throws InputError for an invalid config or mesh (named field).
+/// Builds the model from a config that passed validate() (simulate() checks it); throws
+/// InputError for an invalid mesh (named field).
 ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh);
 
 }  // namespace corlab::fem::solver

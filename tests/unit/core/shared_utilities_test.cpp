@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -107,6 +110,30 @@ TEST(ParallelFor, StopsWhenCancelledAndRethrowsTheFirstError) {
                               if (i == 7) throw std::runtime_error("job 7");
                             }),
                std::runtime_error);
+}
+
+// The sweep's pool: every index from the source is run once, its result reaches the owning thread
+// through take(), and stopped() turns true once the source is empty and the workers are done.
+TEST(StreamingPool, HandsEveryResultToTheOwnerOnce) {
+  std::mutex mutex;
+  std::size_t next = 0;
+  const auto source = [&]() -> std::optional<std::size_t> {
+    const std::lock_guard lock(mutex);
+    if (next >= 200) return std::nullopt;
+    return next++;
+  };
+  StreamingPool<std::size_t> pool(3, source, [](std::size_t i) { return 10 * i; });
+  std::vector<int> seen(200, 0);
+  while (true) {
+    const bool stopped = pool.stopped();  // read before taking: no result can be missed
+    for (std::size_t r : pool.take(std::chrono::milliseconds(50))) ++seen.at(r / 10);
+    if (stopped) break;
+  }
+  pool.join();
+  for (int count : seen) EXPECT_EQ(count, 1);
+  StreamingPool<int> idle(0, source, [](std::size_t) { return 0; });
+  EXPECT_TRUE(idle.stopped());
+  EXPECT_TRUE(idle.take(std::chrono::milliseconds(1)).empty());
 }
 
 }  // namespace
