@@ -20,8 +20,8 @@
 
 #include <utility>
 
-#include "corlab/fem/explicit_solver.hpp"
-#include "corlab/fem/mesh_generator.hpp"
+#include "corlab/fem/mesh/mesh_generator.hpp"
+#include "corlab/fem/solver/explicit_solver.hpp"
 
 namespace {
 

@@ -15,9 +15,9 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
-#include "corlab/study/fit_expression.hpp"
-#include "corlab/study/fit_io.hpp"
-#include "corlab/study/fit_paper.hpp"
+#include "corlab/fit/fit_expression.hpp"
+#include "corlab/paper/fit_io.hpp"
+#include "corlab/paper/fit_paper.hpp"
 #include "corlab/study/results_table.hpp"
 
 namespace corlab::cli {

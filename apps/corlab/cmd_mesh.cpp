@@ -10,11 +10,11 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
-#include "corlab/fem/contact_estimate.hpp"
-#include "corlab/fem/impact_config.hpp"
-#include "corlab/fem/mesh_generator.hpp"
-#include "corlab/fem/mesh_quality.hpp"
-#include "corlab/fem/vtu_writer.hpp"
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/mesh_generator.hpp"
+#include "corlab/fem/mesh/mesh_quality.hpp"
+#include "corlab/fem/output/vtu_writer.hpp"
 
 namespace corlab::cli {
 namespace {

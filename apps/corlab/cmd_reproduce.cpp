@@ -22,7 +22,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/core/interrupt.hpp"
 #include "corlab/core/process.hpp"
-#include "corlab/study/reproduce.hpp"
+#include "corlab/paper/reproduce.hpp"
 
 namespace corlab::cli {
 namespace {

@@ -11,12 +11,12 @@
 #include "command.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/interrupt.hpp"
-#include "corlab/fem/config_keys.hpp"
-#include "corlab/fem/discretisation_error.hpp"
-#include "corlab/fem/impact_config.hpp"
-#include "corlab/fem/impact_output.hpp"
-#include "corlab/fem/simulate.hpp"
-#include "corlab/fem/vtu_writer.hpp"
+#include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/output/impact_output.hpp"
+#include "corlab/fem/output/vtu_writer.hpp"
+#include "corlab/fem/solver/discretisation_error.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 #include "corlab/study/progress.hpp"
 
 namespace corlab::cli {

@@ -17,7 +17,7 @@
 #include "command.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/interrupt.hpp"
-#include "corlab/fem/discretisation_error.hpp"
+#include "corlab/fem/solver/discretisation_error.hpp"
 #include "corlab/study/progress.hpp"
 #include "corlab/study/sweep.hpp"
 #include "corlab/study/sweep_spec.hpp"

@@ -1,12 +1,12 @@
 """Field snapshots of corlab runs: the ASCII .vtu files of ``corlab simulate --set
-output.times=...`` (include/corlab/fem/vtu_writer.hpp) read back as arrays."""
+output.times=...`` (include/corlab/fem/output/vtu_writer.hpp) read back as arrays."""
 from __future__ import annotations
 
 import os
 
 
 def read_vtu(path):
-    """An ASCII .vtu of corlab's writer (include/corlab/fem/vtu_writer.hpp) as a dict:
+    """An ASCII .vtu of corlab's writer (include/corlab/fem/output/vtu_writer.hpp) as a dict:
     ``points`` (N x 3, deformed (r, z, 0) [m]), ``quads`` (M x 4 node indices), ``cells``
     {name: (M,) or (M x k)} and ``point_data`` {name: (N,) or (N x k)}."""
     import xml.etree.ElementTree as ET

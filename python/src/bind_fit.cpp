@@ -4,9 +4,9 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
-#include "corlab/study/fit_expression.hpp"
-#include "corlab/study/fit_io.hpp"
-#include "corlab/study/linear_regression.hpp"
+#include "corlab/fit/fit_expression.hpp"
+#include "corlab/fit/linear_regression.hpp"
+#include "corlab/paper/fit_io.hpp"
 #include "corlab/study/results_table.hpp"
 
 namespace corlab::python {

@@ -9,11 +9,11 @@
 
 #include "bindings.hpp"
 #include "corlab/core/error.hpp"
-#include "corlab/fem/config_keys.hpp"
-#include "corlab/fem/impact_config.hpp"
-#include "corlab/fem/impact_output.hpp"
-#include "corlab/fem/result_fields.hpp"
-#include "corlab/fem/simulate.hpp"
+#include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/output/impact_output.hpp"
+#include "corlab/fem/solver/result_fields.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 
 namespace py = pybind11;
 
@@ -90,10 +90,10 @@ py::list result_fields_list() {
 
 void bind_simulate(py::module_& m) {
   m.def("result_fields", &result_fields_list,
-        "The result fields (one table in C++, src/fem/result_fields.cpp): a list of dicts with "
-        "name, unit (SI; '-' dimensionless), description, kind (real | integer | boolean | text), "
-        "in_summary (simulate()'s dict, summary.json), in_csv (a sweep's results.csv, in column "
-        "order) and machine_dependent (timings).");
+        "The result fields (one table in C++, src/fem/solver/result_fields.cpp): a list of dicts "
+        "with name, unit (SI; '-' dimensionless), description, kind (real | integer | boolean | "
+        "text), in_summary (simulate()'s dict, summary.json), in_csv (a sweep's results.csv, in "
+        "column order) and machine_dependent (timings).");
 
   m.def(
       "simulate",

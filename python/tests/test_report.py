@@ -76,7 +76,7 @@ def test_report_from_synthetic_directory(tmp_path):
                                "sigma_y": float(r["sigma_y"]), "velocity": float(r["velocity"]),
                                "k1": float(r["k1"]), "e_fe": float(r["e"]),
                                "e_paper": float(r["e"]) * 1.01, "e_ours": float(r["e"])})
-    # What the C++ writes beside the fits (src/study/reproduce_report.cpp), by hand here.
+    # What the C++ writes beside the fits (src/paper/reproduce_report.cpp), by hand here.
     error = {"groups": [{"study": "table2", "group": "g", "runs": 18, "mean_relative_error": 0.01,
                          "rms_relative_error": 0.01, "largest_relative_error": 0.01,
                          "largest_at_velocity": 5.0}],
@@ -194,7 +194,7 @@ def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path):
     assert fit["studies"]["table2"]["ran"] == 6
     law = fit["fits"]["restitution_law"]
     assert 0.02 < law["slope"]["value"] < 0.1
-    # the numbers the report prints, computed by the C++ (src/study/reproduce_report.cpp)
+    # the numbers the report prints, computed by the C++ (src/paper/reproduce_report.cpp)
     assert fit["fits"]["versus_paper"]["slope"]["paper"] == fit["paper"]["slope"] == 0.056
     error = fit["fits"]["model_error"]["e_paper"]
     overall = error["overall"]

@@ -18,7 +18,7 @@
 #include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
-#include "corlab/fem/result_fields.hpp"
+#include "corlab/fem/solver/result_fields.hpp"
 #include "corlab/materials/material.hpp"
 
 namespace corlab::study {

@@ -16,7 +16,7 @@
 #include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
-#include "corlab/fem/run_cost.hpp"
+#include "corlab/fem/solver/run_cost.hpp"
 #include "sweep_internal.hpp"
 
 namespace corlab::study {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <vector>
 
-#include "corlab/fem/impact_config.hpp"
+#include "corlab/fem/config/impact_config.hpp"
 #include "fuzz_target.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

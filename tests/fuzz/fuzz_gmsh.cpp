@@ -1,5 +1,5 @@
 // Fuzz target: the Gmsh mesh reader (read_gmsh on a .msh file).
-#include "corlab/fem/gmsh_reader.hpp"
+#include "corlab/fem/mesh/gmsh_reader.hpp"
 #include "fuzz_target.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "corlab/fem/mesh.hpp"
+#include "corlab/fem/mesh/mesh.hpp"
 
 namespace corlab::fem::testing {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "corlab/fem/contact_estimate.hpp"
-#include "corlab/fem/simulate.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -20,7 +20,7 @@ TEST_P(HertzElastic, MatchesHertz) {
   c.substrate.material.yield_stress = std::nullopt;  // elastic substrate
   const ImpactResult r = simulate(c);
   // Hertz reference (itself checked against an RK4 integration of the Hertz impact in
-  // tests/unit/fem/mesh_contact_estimate_test.cpp).
+  // tests/unit/fem/mesh/mesh_contact_estimate_test.cpp).
   const HertzReference hertz = hertz_reference(c);
   const double delta = hertz.max_overlap;
   const double force = hertz.max_force;

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "corlab/fem/discretisation_error.hpp"
-#include "corlab/fem/simulate.hpp"
+#include "corlab/fem/solver/discretisation_error.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 
 namespace corlab::fem {
 namespace {

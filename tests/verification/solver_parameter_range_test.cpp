@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "corlab/fem/config_keys.hpp"
-#include "corlab/fem/simulate.hpp"
+#include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 
 namespace corlab::fem {
 namespace {

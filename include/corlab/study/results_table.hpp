@@ -16,13 +16,13 @@
 #include <string_view>
 #include <vector>
 
-#include "corlab/fem/impact_config.hpp"
-#include "corlab/fem/impact_result.hpp"
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/solver/impact_result.hpp"
 
 namespace corlab::study {
 
 /// Result columns, in order: the fields of fem::result_fields() written to the CSV (names, units
-/// and descriptions are in that table, src/fem/result_fields.cpp).
+/// and descriptions are in that table, src/fem/solver/result_fields.cpp).
 const std::vector<std::string>& result_columns();
 
 /// Columns whose values depend on the machine (timings, `machine_dependent` in the table);

@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <functional>
 
-#include "corlab/fem/impact_result.hpp"
-#include "corlab/fem/simulate.hpp"
+#include "corlab/fem/solver/impact_result.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 #include "corlab/study/sweep_spec.hpp"
 
 namespace corlab::study {

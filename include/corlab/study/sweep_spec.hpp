@@ -31,7 +31,7 @@
 #include <utility>
 #include <vector>
 
-#include "corlab/fem/impact_config.hpp"
+#include "corlab/fem/config/impact_config.hpp"
 
 namespace corlab::study {
 

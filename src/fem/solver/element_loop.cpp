@@ -6,11 +6,11 @@
 #include <cmath>
 
 #include "corlab/core/units.hpp"
-#include "corlab/fem/axisym_quad4.hpp"
-#include "corlab/fem/bulk_viscosity.hpp"
-#include "corlab/fem/hourglass.hpp"
-#include "corlab/fem/objective_rate.hpp"
-#include "corlab/fem/stable_time_step.hpp"
+#include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/kernels/bulk_viscosity.hpp"
+#include "corlab/fem/kernels/hourglass.hpp"
+#include "corlab/fem/kernels/objective_rate.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
 
 namespace corlab::fem::solver {
 namespace {

@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "corlab/fem/j2_plasticity.hpp"
+#include "corlab/fem/kernels/j2_plasticity.hpp"
 
 namespace corlab::fem::solver {
 

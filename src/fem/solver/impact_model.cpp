@@ -11,11 +11,11 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/units.hpp"
-#include "corlab/fem/axisym_quad4.hpp"
-#include "corlab/fem/contact_estimate.hpp"
-#include "corlab/fem/contact_search.hpp"
-#include "corlab/fem/penalty_contact.hpp"
-#include "corlab/fem/stable_time_step.hpp"
+#include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/kernels/penalty_contact.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/solver/contact_search.hpp"
 #include "fem/solver/impact_state.hpp"
 
 namespace corlab::fem::solver {

@@ -8,8 +8,8 @@
 #include <array>
 #include <vector>
 
-#include "corlab/fem/impact_config.hpp"
-#include "corlab/fem/mesh.hpp"
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/mesh/mesh.hpp"
 #include "fem/solver/element_loop.hpp"
 
 namespace corlab::fem::solver {

@@ -5,8 +5,8 @@
 #include <array>
 #include <cmath>
 
-#include "corlab/fem/contact_search.hpp"
-#include "corlab/fem/penalty_contact.hpp"
+#include "corlab/fem/kernels/penalty_contact.hpp"
+#include "corlab/fem/solver/contact_search.hpp"
 
 namespace corlab::fem::solver {
 namespace {

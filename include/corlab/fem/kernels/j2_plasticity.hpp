@@ -1,0 +1,102 @@
+#pragma once
+/// @file j2_plasticity.hpp
+/// Isotropic hypoelastic material with J2 (von Mises) plasticity and linear isotropic hardening,
+/// integrated with the radial return of Wilkins (1964) / Simo & Hughes (1998, Computational
+/// Inelasticity, Box 3.1): sigma_y(eps_p) = sigma_y0 + H eps_p. H = 0 is perfectly plastic (Ma
+/// et al. 2023 eq. 1); no yield stress is purely elastic. Equivalent stress sqrt(3 J2),
+/// J2 = 1/2 (s_rr^2 + s_zz^2 + s_tt^2) + s_rz^2.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "corlab/fem/kernels/axisym_tensor.hpp"
+#include "corlab/materials/material.hpp"
+
+namespace corlab::fem {
+
+struct J2Plasticity {
+  /// Yield stress of a purely elastic material [Pa].
+  static constexpr double kNoYield = std::numeric_limits<double>::max();
+  /// Floor of the equivalent stress in the return's division [Pa].
+  static constexpr double kTiny = 1e-300;
+
+  double shear_modulus = 0.0;  ///< G [Pa]
+  double bulk_modulus = 0.0;   ///< K [Pa]
+  /// sigma_y0 [Pa]; kNoYield (the largest double) = elastic: it is never reached and keeps the
+  /// plastic work (sigma_y x 0) finite, so the return stays branch-free.
+  double yield_stress = kNoYield;
+  double hardening_modulus = 0.0;  ///< H = d sigma_y / d eps_p [Pa]
+
+  /// Internal variables of one material point.
+  struct State {
+    double eps_p = 0.0;  ///< equivalent plastic strain [-]
+  };
+
+  /// What one update did.
+  struct Increment {
+    double d_eps_p = 0.0;  ///< equivalent plastic strain increment [-]
+    double plastic_work =
+        0.0;  ///< plastic dissipation per unit volume, trapezoid in sigma_y [J/m^3]
+  };
+
+  /// From a material description (elastic when it has no yield stress).
+  static J2Plasticity from(const Material& m) {
+    J2Plasticity j;
+    j.shear_modulus = m.shear_modulus();
+    j.bulk_modulus = m.bulk_modulus();
+    if (m.yield_stress) j.yield_stress = *m.yield_stress;
+    j.hardening_modulus = m.hardening_modulus;
+    return j;
+  }
+
+  /// Current yield stress [Pa].
+  double flow_stress(const State& state) const {
+    return yield_stress + hardening_modulus * state.eps_p;
+  }
+
+  /// Adds the elastic trial increment C : d_eps to `stress` and returns it to the yield surface.
+  /// d_eps is the strain increment [-] (tensor shear component).
+  Increment update(AxisymTensor& stress, State& state, const AxisymTensor& d_eps) const {
+    const double dvol = trace(d_eps);
+    const double two_g = 2.0 * shear_modulus;
+    const double lam = bulk_modulus - two_g / 3.0;
+    stress.rr += two_g * d_eps.rr + lam * dvol;
+    stress.zz += two_g * d_eps.zz + lam * dvol;
+    stress.tt += two_g * d_eps.tt + lam * dvol;
+    stress.rz += two_g * d_eps.rz;
+    const double p = trace(stress) * (1.0 / 3.0);
+    const double srr = stress.rr - p;
+    const double szz = stress.zz - p;
+    const double stt = stress.tt - p;
+    const double q =
+        std::sqrt(1.5 * (srr * srr + szz * szz + stt * stt) + 3.0 * stress.rz * stress.rz);
+    const double sy = flow_stress(state);
+    // Branch-free (vectorisable) radial return: d_eps_p = <q - sigma_y>_+ / (3G + H), deviator
+    // scaled by 1 - 3G d_eps_p / q (= 1 when elastic).
+    const double inv_stiffness = 1.0 / (3.0 * shear_modulus + hardening_modulus);  // hoisted
+    const double dep = std::max(q - sy, 0.0) * inv_stiffness;
+    const double scale = 1.0 - 3.0 * shear_modulus * dep / std::max(q, kTiny);
+    stress.rr = p + scale * srr;
+    stress.zz = p + scale * szz;
+    stress.tt = p + scale * stt;
+    stress.rz *= scale;
+    state.eps_p += dep;
+    Increment inc;
+    inc.d_eps_p = dep;
+    inc.plastic_work = (sy + 0.5 * hardening_modulus * dep) * dep;
+    return inc;
+  }
+
+  /// Elastic strain energy density of a stress: s:s/(4G) + p^2/(2K) [J/m^3].
+  double strain_energy_density(const AxisymTensor& stress) const {
+    const double p = trace(stress) * (1.0 / 3.0);
+    const double srr = stress.rr - p;
+    const double szz = stress.zz - p;
+    const double stt = stress.tt - p;
+    const double ss = srr * srr + szz * szz + stt * stt + 2.0 * stress.rz * stress.rz;
+    return ss / (4.0 * shear_modulus) + p * p / (2.0 * bulk_modulus);
+  }
+};
+
+}  // namespace corlab::fem

@@ -1,0 +1,71 @@
+#pragma once
+/// @file impact_result.hpp
+/// What one impact simulation returns: the summary numbers and the time histories.
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "corlab/fem/solver/run_status.hpp"
+
+namespace corlab::fem {
+
+/// Time histories, one entry per output row (structure of arrays).
+struct ImpactHistory {
+  std::vector<double> time;                  ///< t [s], 0 = release at the gap
+  std::vector<double> contact_force;         ///< F, force of the substrate on the sphere [N]
+  std::vector<double> indentation;           ///< delta = sphere c.o.m. displacement - gap [m]
+  std::vector<double> sphere_velocity;       ///< sphere c.o.m. velocity, + towards substrate [m/s]
+  std::vector<double> kinetic_energy;        ///< [J] both bodies
+  std::vector<double> strain_energy;         ///< recoverable elastic strain energy [J]
+  std::vector<double> plastic_dissipation;   ///< [J]
+  std::vector<double> hourglass_energy;      ///< [J]
+  std::vector<double> viscous_dissipation;   ///< bulk viscosity [J]
+  std::vector<double> contact_energy;        ///< penalty energy [J]
+  std::vector<double> energy_balance_error;  ///< (sum of the above - initial) / initial [-]
+};
+
+struct ImpactResult {
+  RunStatus status = RunStatus::kNotSeparated;  ///< how the run ended (run_status.hpp)
+  std::string status_detail;  ///< one line on a status other than separated (else empty)
+  std::string suspect;        ///< why the run is suspect (run_quality.hpp), empty when it is not
+  double e =
+      0.0;  ///< CoR from momentum: rebound / impact c.o.m. velocity [-]; NaN unless separated
+  double e_energy =
+      0.0;  ///< CoR from the sphere's rebound kinetic energy [-]; NaN unless separated
+  /// e on the mesh twice as coarse at the contact [-] (NaN unless estimated)
+  double e_coarse = std::numeric_limits<double>::quiet_NaN();
+  /// discretisation-error estimate of e: e +/- e_error [-] (discretisation_error.hpp; NaN unless
+  /// estimated)
+  double e_error = std::numeric_limits<double>::quiet_NaN();
+  double force_max = 0.0;           ///< F_max [N]
+  double indentation_max = 0.0;     ///< delta_max [m]
+  double contact_time = 0.0;        ///< duration of contact [s]
+  double crater_depth = 0.0;        ///< residual depth of the substrate surface on the axis [m]
+  double plastic_strain_max = 0.0;  ///< largest equivalent plastic strain left [-]
+  double energy_initial = 0.0;      ///< sphere kinetic energy at impact [J]
+  double energy_sphere_loss = 0.0;  ///< initial - sphere kinetic energy after rebound [J]
+  double energy_dissipated_plastic = 0.0;  ///< [J]
+  double energy_hourglass = 0.0;           ///< at the end [J]
+  double energy_viscous = 0.0;             ///< [J]
+  double energy_balance_error = 0.0;       ///< max over the run of |balance| / initial [-]
+  double hysteresis_area = 0.0;            ///< closed integral of F d(delta) [J]
+  double penetration_max = 0.0;            ///< largest penalty penetration of a slave [m]
+  double substrate_von_mises_max =
+      0.0;                 ///< largest von Mises stress in the substrate at the end [Pa]
+  bool separated = false;  ///< status == kSeparated (kept for the output schema)
+  int elements = 0;
+  int nodes = 0;
+  long long steps = 0;
+  double h_contact = 0.0;  ///< element size used at the contact [m]
+  double time_step = 0.0;  ///< initial stable time step [s]
+  /// Mass scaling (docs/theory/solver.md section 12): base step / the physical one (1 = none) [-]
+  double mass_scaling = 1.0;
+  double added_mass_fraction = 0.0;  ///< mass added by the scaling / the sphere's mass [-]
+  double end_time = 0.0;             ///< [s]
+  double wall_s = 0.0;               ///< wall-clock time of the run [s]
+  double element_steps_per_s = 0.0;  ///< throughput [1/s]
+  ImpactHistory history;
+};
+
+}  // namespace corlab::fem

@@ -1,0 +1,36 @@
+#pragma once
+/// @file simulate.hpp
+/// Entry point of the explicit axisymmetric impact solver. Reentrant: no globals, so a study may
+/// run one simulation per thread.
+
+#include <atomic>
+#include <functional>
+
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/mesh/mesh.hpp"
+#include "corlab/fem/output/field_snapshot.hpp"
+#include "corlab/fem/solver/impact_result.hpp"
+
+namespace corlab::fem {
+
+struct SimulationControl {
+  /// Polled every few hundred steps; when it turns true the run stops with status kCancelled.
+  const std::atomic<bool>* cancel = nullptr;
+  /// Called now and then with the fraction done (estimate, 0..1).
+  std::function<void(double)> progress;
+  /// Stop at maximum compression (the sphere's c.o.m. velocity turns from approach to rebound),
+  /// with status kMaxCompression: yield-onset probes need only the loading half.
+  bool stop_at_max_compression = false;
+  /// Called at each requested field time with the current mesh and fields (for VTU output).
+  std::function<void(double time, const struct FieldSnapshot&)> on_fields;
+  /// The caller already ran validate() on this very config (the CLI before it creates the output
+  /// directory, a sweep spec for each of its runs), so simulate() does not check it again:
+  /// a config is validated once, where it enters.
+  bool config_validated = false;
+};
+
+/// Runs one impact (validates the config first unless control.config_validated; throws
+/// InputError when it is invalid).
+ImpactResult simulate(const ImpactConfig& config, const SimulationControl& control = {});
+
+}  // namespace corlab::fem

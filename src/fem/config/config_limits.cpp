@@ -1,0 +1,144 @@
+// Limits that join config keys (config_limits.hpp).
+#include "corlab/fem/config/config_limits.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "corlab/core/error.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/mesh_generator.hpp"
+
+namespace corlab::fem {
+
+namespace {
+
+double uncapped_contact_radius(const ImpactConfig& c) {
+  double a = hertz_reference(c).contact_radius;
+  if (const auto& sy = c.substrate.material.yield_stress) {
+    a = std::max(a, plastic_contact_radius(c.sphere.radius, c.sphere.material.density,
+                                           c.impact.velocity, *sy));
+  }
+  return a;
+}
+
+void check_plastic_body(const Material& m, std::string_view body) {
+  if (!m.yield_stress) return;
+  const double sy = *m.yield_stress;
+  const double strain = sy / m.youngs_modulus;
+  if (!(strain >= kMinYieldStrain && strain < kMaxYieldStrain)) {
+    throw_invalid(
+        fmt::format("{}.sigma_y", body), sy,
+        fmt::format("in [{:g}, {:g}) [Pa]: a yield strain sigma_y/E in [{:g}, {:g}) "
+                    "with {}.E = {:g} Pa",
+                    kMinYieldStrain * m.youngs_modulus, kMaxYieldStrain * m.youngs_modulus,
+                    kMinYieldStrain, kMaxYieldStrain, body, m.youngs_modulus));
+  }
+  if (!(m.hardening_modulus < m.youngs_modulus)) {
+    throw_invalid(fmt::format("{}.hardening", body), m.hardening_modulus,
+                  fmt::format("< {}.E = {:g} [Pa]", body, m.youngs_modulus));
+  }
+}
+
+void check_geometry(const ImpactConfig& c) {
+  if (c.impact.gap > c.sphere.radius) {
+    throw_invalid("impact.gap", c.impact.gap,
+                  fmt::format("<= sphere.radius = {:g} [m] (the gap is crossed in exact free "
+                              "flight; a wider one only loses precision)",
+                              c.sphere.radius));
+  }
+  if (!(c.mesh.h_max >= c.mesh.h_min)) {
+    throw_invalid("mesh.h_max", c.mesh.h_max,
+                  fmt::format(">= mesh.h_min = {:g} [m]", c.mesh.h_min));
+  }
+  if (!c.mesh.file.empty()) return;  // the file's geometry is used, not these keys
+  const double a = uncapped_contact_radius(c);
+  if (!(a <= kMaxContactRadiusFraction * c.sphere.radius)) {
+    throw_invalid(
+        "impact.velocity", c.impact.velocity,
+        fmt::format("low enough for the predicted contact radius ({:.3g} m) to stay <= "
+                    "{:g} x sphere.radius = {:.3g} m (too fast, or a too soft "
+                    "substrate: E = {:g} Pa, sigma_y = {} Pa)",
+                    a, kMaxContactRadiusFraction, kMaxContactRadiusFraction * c.sphere.radius,
+                    c.substrate.material.youngs_modulus,
+                    c.substrate.material.yield_stress
+                        ? fmt::format("{:g}", *c.substrate.material.yield_stress)
+                        : std::string("none")));
+  }
+  try {
+    validate(mesh_options_for(c));  // the generator's own limits, reported on the user's key
+  } catch (const InputError& err) {
+    throw InputError(fmt::format("invalid mesh.h_min = {}: the mesh it gives is refused ({})",
+                                 c.mesh.h_min, err.what()));
+  }
+  const double min_size = kMinSubstrateContactRadii * predicted_contact_radius(c);
+  for (const auto& [key, value] : {std::pair{"substrate.radius", c.substrate.radius},
+                                   std::pair{"substrate.depth", c.substrate.depth}}) {
+    if (value < min_size) {
+      throw_invalid(
+          key, value,
+          fmt::format(">= {:.3g} [m]: {:g} x the predicted contact radius {:.3g} m", min_size,
+                      kMinSubstrateContactRadii, min_size / kMinSubstrateContactRadii));
+    }
+  }
+}
+
+void check_solver(const ImpactConfig& c) {
+  const double max_safety = 1.0 / std::sqrt(1.0 + c.solver.penalty_scale);
+  if (c.solver.safety_factor > max_safety) {
+    throw_invalid("solver.safety_factor", c.solver.safety_factor,
+                  fmt::format("<= 1/sqrt(1 + solver.penalty_scale) = {:.4f} (the contact "
+                              "penalty stiffens the fastest mode)",
+                              max_safety));
+  }
+  const double t_contact = c.impact.gap / c.impact.velocity;
+  if (c.solver.t_max > 0.0 && !(c.solver.t_max > t_contact)) {
+    throw_invalid("solver.t_max", c.solver.t_max,
+                  fmt::format("0 (automatic) or > impact.gap / impact.velocity = {:.4g} [s], the "
+                              "moment of contact",
+                              t_contact));
+  }
+}
+
+void check_step_budget(const ImpactConfig& c) {
+  if (!c.mesh.file.empty()) return;  // element sizes unknown before reading the file
+  const RunEstimate e = estimate_run(c);
+  if (e.steps <= static_cast<double>(c.solver.max_steps)) return;
+  throw InputError(fmt::format(
+      "invalid solver.max_steps = {}: must be >= the estimated {:.3g} time steps of this run "
+      "({:.3g} s simulated / dt {:.3g} s, from h = {:.3g} m at the contact and wave speed {:.4g} "
+      "m/s); check sphere/substrate E, rho, nu, mesh.h_min and solver.t_max, or raise "
+      "solver.max_steps",
+      c.solver.max_steps, e.steps, e.simulated_time, e.time_step, e.element_size, e.wave_speed));
+}
+
+}  // namespace
+
+RunEstimate estimate_run(const ImpactConfig& c) {
+  RunEstimate e;
+  e.contact_radius = uncapped_contact_radius(c);
+  e.element_size = mesh_options_for(c).h_contact;
+  e.wave_speed = std::max(c.sphere.material.dilatational_wave_speed(),
+                          c.substrate.material.dilatational_wave_speed());
+  const double b1 = c.solver.bulk_viscosity_linear;
+  // Square element: L_e = h / sqrt 2 (stable_time_step.hpp); the hoop term next to the axis only
+  // shortens it, so this is a lower bound on the step count.
+  e.time_step = c.solver.safety_factor * e.element_size / std::sqrt(2.0) / e.wave_speed *
+                (std::sqrt(1.0 + b1 * b1) - b1);
+  // Default t_max: 20 Hertz contact times after contact (explicit_solver.cpp).
+  e.simulated_time = c.solver.t_max > 0.0 ? c.solver.t_max - c.impact.gap / c.impact.velocity
+                                          : 20.0 * hertz_reference(c).contact_time;
+  e.steps = e.simulated_time / e.time_step;
+  return e;
+}
+
+void validate_limits(const ImpactConfig& config) {
+  check_plastic_body(config.sphere.material, "sphere");
+  check_plastic_body(config.substrate.material, "substrate");
+  check_geometry(config);
+  check_solver(config);
+  check_step_budget(config);
+}
+
+}  // namespace corlab::fem

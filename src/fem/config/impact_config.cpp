@@ -1,0 +1,108 @@
+// Validation and text input (--set key=value, TOML) of ImpactConfig. The keys, their units and
+// ranges are the table of config_keys.cpp; the limits that join keys are config_limits.cpp.
+#include "corlab/fem/config/impact_config.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+
+#include "corlab/core/error.hpp"
+#include "corlab/core/text.hpp"
+#include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/config/config_limits.hpp"
+
+namespace corlab::fem {
+
+namespace {
+
+bool is_material_key(std::string_view key) {
+  constexpr std::string_view suffix = ".material";
+  return key.size() >= suffix.size() && key.substr(key.size() - suffix.size()) == suffix;
+}
+
+// The text of one TOML value for `key`: scalars as they are, arrays only for list keys.
+std::string toml_value_text(const std::string& key, const toml::node& node) {
+  const ConfigKeyInfo* info = find_config_key(key);
+  if (const auto* s = node.as_string()) return s->get();
+  if (const auto* i = node.as_integer()) return fmt::format("{}", i->get());
+  if (const auto* f = node.as_floating_point()) return fmt::format("{}", f->get());
+  if (const auto* arr = node.as_array()) {
+    if (info != nullptr && info->kind != KeyKind::number_list) {
+      throw_invalid(key, "an array", "a single value, not a list");
+    }
+    std::vector<std::string> items;
+    for (const auto& item : *arr) {
+      if (item.is_integer() || item.is_floating_point()) {
+        items.push_back(fmt::format("{}", *item.value<double>()));
+      } else {
+        throw_invalid(key, "non-number array item", "a list of numbers");
+      }
+    }
+    return fmt::format("{}", fmt::join(items, ","));
+  }
+  throw_invalid(key, "unsupported value", "a number, a string or a list of numbers");
+}
+
+}  // namespace
+
+void validate(const ImpactConfig& c) {
+  validate_key_ranges(c);
+  validate_limits(c);
+}
+
+void apply_setting(ImpactConfig& config, std::string_view key, std::string_view value) {
+  set_config_key(config, key, value);
+}
+
+void apply_settings(ImpactConfig& config,
+                    const std::vector<std::string>& key_value_items,
+                    std::string_view origin) {
+  std::vector<std::pair<std::string, std::string>> items;
+  std::set<std::string> seen;
+  for (const auto& item : key_value_items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) throw_invalid(origin, item, "key=value");
+    std::string key(trim(std::string_view(item).substr(0, eq)));
+    if (!seen.insert(key).second) {
+      throw_invalid(fmt::format("{} {}", origin, key), item.substr(eq + 1),
+                    "given once (the key is set twice)");
+    }
+    items.emplace_back(std::move(key), item.substr(eq + 1));
+  }
+  std::stable_partition(items.begin(), items.end(),
+                        [](const auto& kv) { return is_material_key(kv.first); });
+  for (const auto& [key, value] : items) apply_setting(config, key, value);
+}
+
+ImpactConfig load_impact_config(const std::filesystem::path& file) {
+  toml::table root;
+  try {
+    root = toml::parse_file(file.string());
+  } catch (const toml::parse_error& err) {
+    throw InputError(one_line(fmt::format("invalid config file '{}': {} (line {})", file.string(),
+                                          err.description(), err.source().begin.line)));
+  }
+  std::vector<std::string> items;
+  for (const auto& [group_key, group] : root) {
+    const std::string group_name(group_key.str());
+    const auto* table = group.as_table();
+    if (table == nullptr) {
+      throw_invalid("config key", group_name,
+                    "a [table] (sphere, substrate, impact, mesh, solver, output)");
+    }
+    for (const auto& [key, node] : *table) {
+      const std::string full = group_name + "." + std::string(key.str());
+      if (node.is_table()) throw_invalid(full, "a table", "a value (no deeper tables)");
+      items.push_back(full + "=" + toml_value_text(full, node));
+    }
+  }
+  ImpactConfig config;
+  apply_settings(config, items, fmt::format("config file '{}'", file.string()));
+  return config;
+}
+
+}  // namespace corlab::fem

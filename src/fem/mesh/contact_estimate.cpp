@@ -1,0 +1,78 @@
+#include "corlab/fem/mesh/contact_estimate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "corlab/materials/material.hpp"
+
+namespace corlab::fem {
+
+double hertz_contact_time_factor() {
+  // 2 int_0^1 (1 - x^(5/2))^(-1/2) dx = 2 (2/5) B(2/5, 1/2) = (4/5) sqrt(pi) G(2/5) / G(9/10).
+  return 0.8 * std::sqrt(std::numbers::pi) * std::tgamma(0.4) / std::tgamma(0.9);
+}
+
+namespace {
+// m = 4/3 pi R^3 rho [kg].
+double sphere_mass(double radius, double density) {
+  return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * density;
+}
+}  // namespace
+
+double hertz_force(double overlap, double sphere_radius, double effective_modulus) {
+  return 4.0 / 3.0 * effective_modulus * std::sqrt(sphere_radius) *
+         std::pow(std::max(overlap, 0.0), 1.5);
+}
+
+double hertz_contact_radius(double overlap, double sphere_radius) {
+  return std::sqrt(sphere_radius * std::max(overlap, 0.0));
+}
+
+HertzReference hertz_reference(double sphere_radius,
+                               double effective_modulus,
+                               double sphere_density,
+                               double velocity) {
+  HertzReference ref;
+  const double r = sphere_radius;
+  ref.effective_modulus = effective_modulus;
+  ref.mass = sphere_mass(r, sphere_density);
+  ref.max_overlap = std::pow(
+      15.0 * ref.mass * velocity * velocity / (16.0 * effective_modulus * std::sqrt(r)), 0.4);
+  ref.max_force = hertz_force(ref.max_overlap, r, effective_modulus);
+  ref.contact_radius = hertz_contact_radius(ref.max_overlap, r);
+  ref.contact_time = hertz_contact_time_factor() * ref.max_overlap / velocity;
+  return ref;
+}
+
+HertzReference hertz_reference(const ImpactConfig& config) {
+  return hertz_reference(config.sphere.radius,
+                         effective_modulus(config.sphere.material, config.substrate.material),
+                         config.sphere.material.density, config.impact.velocity);
+}
+
+double plastic_contact_radius(double sphere_radius,
+                              double sphere_density,
+                              double velocity,
+                              double yield_stress) {
+  const double r = sphere_radius;
+  const double mass = sphere_mass(r, sphere_density);
+  const double mean_pressure = kPlasticMeanPressureFactor * yield_stress;
+  // m v^2 / 2 = pi p_m R delta^2  ->  delta; then a^2 = 2 R delta.
+  const double delta =
+      std::sqrt(mass * velocity * velocity / (2.0 * std::numbers::pi * mean_pressure * r));
+  return std::sqrt(2.0 * r * delta);
+}
+
+double predicted_contact_radius(const ImpactConfig& config) {
+  const double r = config.sphere.radius;
+  double a = hertz_reference(config).contact_radius;
+  if (config.substrate.material.yield_stress) {
+    a = std::max(a,
+                 plastic_contact_radius(r, config.sphere.material.density, config.impact.velocity,
+                                        *config.substrate.material.yield_stress));
+  }
+  return std::min(a, kMaxContactRadiusFraction * r);
+}
+
+}  // namespace corlab::fem

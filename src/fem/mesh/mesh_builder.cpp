@@ -1,0 +1,37 @@
+// Adds structured blocks to a mesh, merging the nodes they share within a body.
+#include "fem/mesh/mesh_builder.hpp"
+
+#include <array>
+
+namespace corlab::fem::meshing {
+
+void MeshBuilder::start_body(Body body) {
+  body_ = body;
+  index_.clear();
+}
+
+int MeshBuilder::node(Point p) {
+  const auto [it, inserted] = index_.try_emplace({p.r, p.z}, mesh_.num_nodes());
+  if (inserted) {
+    mesh_.r.push_back(p.r);
+    mesh_.z.push_back(p.z);
+    mesh_.node_body.push_back(body_);
+  }
+  return it->second;
+}
+
+std::vector<int> MeshBuilder::block(const std::vector<Point>& pts, std::size_t ni, std::size_t nj) {
+  std::vector<int> ids(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) ids[k] = node(pts[k]);
+  for (std::size_t i = 0; i < ni; ++i) {
+    for (std::size_t j = 0; j < nj; ++j) {
+      const std::array<int, 4> q{ids[i * (nj + 1) + j], ids[(i + 1) * (nj + 1) + j],
+                                 ids[(i + 1) * (nj + 1) + j + 1], ids[i * (nj + 1) + j + 1]};
+      mesh_.quads.push_back(counter_clockwise(mesh_, q));
+      mesh_.element_body.push_back(body_);
+    }
+  }
+  return ids;
+}
+
+}  // namespace corlab::fem::meshing

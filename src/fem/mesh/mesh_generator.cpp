@@ -1,0 +1,71 @@
+// Built-in impact mesh: options, their validation, and the two bodies' generators
+// (src/fem/mesh: graded_distribution, block_geometry, mesh_builder, sphere_ogrid,
+// substrate_layout).
+#include "corlab/fem/mesh/mesh_generator.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "corlab/core/error.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/gmsh_reader.hpp"
+#include "fem/mesh/mesh_builder.hpp"
+#include "fem/mesh/sphere_ogrid.hpp"
+#include "fem/mesh/substrate_layout.hpp"
+
+namespace corlab::fem {
+
+void validate(const MeshOptions& o) {
+  require_positive("mesh.sphere_radius", o.sphere_radius, "[m]");
+  require_non_negative("mesh.gap", o.gap, "[m]");
+  require_positive("mesh.substrate_radius", o.substrate_radius, "[m]");
+  require_positive("mesh.substrate_depth", o.substrate_depth, "[m]");
+  require_positive("mesh.h_contact", o.h_contact, "[m]");
+  require_positive("mesh.zone_radius", o.zone_radius, "[m]");
+  require_positive("mesh.zone_depth", o.zone_depth, "[m]");
+  if (!(o.growth >= 1.0 && o.growth <= 2.0)) throw_invalid("mesh.growth", o.growth, "in [1, 2]");
+  require_positive("mesh.h_max", o.h_max, "[m]");
+  if (o.h_max < o.h_contact) throw_invalid("mesh.h_max", o.h_max, ">= the contact element size");
+  if (o.h_contact > 0.05 * o.sphere_radius)
+    throw_invalid("mesh.h_contact", o.h_contact, "<= R / 20 (too coarse for the sphere)");
+  const double max_elements_per_edge = 20000.0;
+  if (o.sphere_radius / o.h_contact > max_elements_per_edge ||
+      o.substrate_radius / o.h_contact > max_elements_per_edge ||
+      o.substrate_depth / o.h_contact > max_elements_per_edge)
+    throw_invalid("mesh.h_contact", o.h_contact, "coarser (more than 20000 elements per edge)");
+}
+
+MeshOptions mesh_options_for(const ImpactConfig& config) {
+  const double a = predicted_contact_radius(config);
+  MeshOptions o;
+  o.sphere_radius = config.sphere.radius;
+  o.gap = config.impact.gap;
+  o.substrate_radius = config.substrate.radius;
+  o.substrate_depth = config.substrate.depth;
+  o.h_contact = config.mesh.h_min;
+  if (config.mesh.contact_elements > 0.0)
+    o.h_contact = std::min(o.h_contact, a / config.mesh.contact_elements);
+  o.zone_radius = config.mesh.refine_factor * a;
+  o.zone_depth = config.mesh.refine_depth * a;
+  o.growth = config.mesh.growth;
+  o.h_max = std::max(config.mesh.h_max, o.h_contact);
+  return o;
+}
+
+Mesh generate_impact_mesh(const MeshOptions& options) {
+  validate(options);
+  Mesh mesh;
+  meshing::MeshBuilder builder(mesh);
+  meshing::generate_sphere(options, builder, mesh);
+  meshing::generate_substrate(options, builder, mesh);
+  for (int n = 0; n < mesh.num_nodes(); ++n)
+    if (mesh.r[static_cast<std::size_t>(n)] == 0.0) mesh.axis_nodes.push_back(n);
+  return mesh;
+}
+
+Mesh build_impact_mesh(const ImpactConfig& config) {
+  if (!config.mesh.file.empty()) return read_gmsh(config.mesh.file);
+  return generate_impact_mesh(mesh_options_for(config));
+}
+
+}  // namespace corlab::fem

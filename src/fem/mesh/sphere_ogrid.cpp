@@ -1,0 +1,257 @@
+// The sphere's O-grid: sizes and angles, the core's curved edges, the four blocks, surface nodes.
+// Points (docs/theory/mesh.md): P (lowest), Q (phi = alpha), Q' (phi = beta) and T (top) on the
+// surface; A, K, K', A' the core's corners inside them.
+#include "fem/mesh/sphere_ogrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "fem/mesh/block_geometry.hpp"
+#include "fem/mesh/graded_distribution.hpp"
+
+namespace corlab::fem::meshing {
+namespace {
+
+/// Smallest spacing allowed on edges whose distribution is derived from another edge, as a
+/// fraction of h (the smallest element sets the explicit time step; 0.95 keeps the ring
+/// elements next to the axis, where the radial lines converge, at ~h wide).
+constexpr double kMinSpacingFraction = 0.95;
+/// The core's first spacing along the axis (A -> A') as a multiple of the ring's last radial
+/// spacing, and the smallest spacing on the core's right edge (K -> K') as a multiple of the
+/// minimum spacing. The core's columns lean by up to ~35 deg near its bottom edge (they fan out
+/// from A -> K to the longer top edge A' -> K'); slightly taller rows there keep these sheared
+/// elements' characteristic length (the stable step) at ~0.97 of the contact squares' instead
+/// of 0.9 (measured: docs/theory/mesh.md).
+constexpr double kCoreFirstSpacing = 1.25;
+constexpr double kCoreRightSpacing = 1.1;
+/// Bottom-block arc angle limits [rad] and corner angle of the ring blocks at the core corners.
+constexpr double kMinBottomAngle = 10.0 * kPi / 180.0;
+constexpr double kMaxBottomAngle = 60.0 * kPi / 180.0;
+constexpr double kRingCornerAngle = 120.0 * kPi / 180.0;
+/// Depth of the uniform-h layer under the sphere's lowest point as a fraction of zone_depth (the
+/// substrate's: by default 0.5 a, where the elastic stresses peak, Johnson 1985, fig. 4.6).
+constexpr double kSphereUniformDepthFraction = 1.0;
+/// Ring thickness limits as fractions of R.
+constexpr double kMinRingFraction = 0.12;
+constexpr double kMaxRingFraction = 0.2;
+constexpr double kTopRingFraction = 0.5;
+
+/// Sizes and angles of the O-grid that do not depend on the top ring's thickness.
+struct SphereLayout {
+  double radius = 0.0;          // R [m]
+  double zc = 0.0;              // height of the centre [m]
+  double h = 0.0;               // contact element size [m]
+  double min_size = 0.0;        // smallest spacing on derived edges [m]
+  double uniform_depth = 0.0;   // depth of the uniform-h layer under P [m]
+  double alpha = 0.0;           // polar angle of Q [rad]
+  double gamma = 0.0;           // arc angle of the top block, T -> Q' [rad]
+  double beta = 0.0;            // polar angle of Q', pi - gamma [rad]
+  double d_ring = 0.0;          // ring thickness of the bottom and right blocks [m]
+  double d_top0 = 0.0;          // top ring thickness before the core's limits [m]
+  double rho_top_min = 0.0;     // smallest distance of the core's top edge from the centre [m]
+  std::vector<double> arc_b;    // arc-length positions P -> Q [m]
+  std::vector<double> depth_b;  // positions through the ring, from the surface [m]
+  std::size_t ns = 0;           // intervals on the bottom and top blocks' arcs
+  std::size_t nt = 0;           // intervals through the ring
+};
+
+/// Unit vectors at polar angle phi: outward radial and tangent (towards larger phi).
+Point e_out(double phi) { return {std::sin(phi), -std::cos(phi)}; }
+Point e_tan(double phi) { return {std::cos(phi), std::sin(phi)}; }
+
+/// Directions from a core corner at polar angle phi (K, K') at the ring corner angle from the
+/// outward radial, towards larger phi (ahead) or smaller phi (back).
+Point corner_ahead(double phi) {
+  const double ca = std::cos(kRingCornerAngle);
+  const double sa = std::sin(kRingCornerAngle);
+  return ca * e_out(phi) + sa * e_tan(phi);
+}
+Point corner_back(double phi) {
+  const double ca = std::cos(kRingCornerAngle);
+  const double sa = std::sin(kRingCornerAngle);
+  return ca * e_out(phi) - sa * e_tan(phi);
+}
+
+/// The core's bottom edge A -> K for ring thickness d: horizontal at the axis, at the ring corner
+/// angle at K.
+Curve core_bottom(const SphereLayout& s, double d) {
+  return hermite(polar(s.zc, s.radius - d, 0.0), {1.0, 0.0}, polar(s.zc, s.radius - d, s.alpha),
+                 -1.0 * corner_back(s.alpha));
+}
+
+/// The bottom ring (alpha, d_ring, the arc and depth distributions) and the top block's angle.
+SphereLayout sphere_layout(const MeshOptions& o) {
+  SphereLayout s;
+  s.radius = o.sphere_radius;
+  s.zc = o.gap + s.radius;
+  s.h = o.h_contact;
+  s.min_size = kMinSpacingFraction * s.h;
+  // bottom ring block: arc P (phi = 0) -> Q (phi = alpha), depth d_ring
+  s.alpha = std::clamp(o.zone_radius / s.radius, kMinBottomAngle, kMaxBottomAngle);
+  s.arc_b = graded_positions(s.radius * s.alpha, s.h, o.zone_radius, o.growth, o.h_max);
+  s.ns = s.arc_b.size() - 1;
+  s.uniform_depth = kSphereUniformDepthFraction * o.zone_depth;
+  // ring thickness: thin enough that the core's bottom edge (n_s intervals) stays long enough
+  // for spacings >= kMinSpacingFraction h (the radial columns converge towards the centre)
+  s.d_ring = std::clamp(s.uniform_depth, kMinRingFraction * s.radius, kMaxRingFraction * s.radius);
+  const double needed = 1.05 * kMinSpacingFraction * s.h * static_cast<double>(s.ns);
+  while (s.d_ring > 4.0 * s.h && core_bottom(s, s.d_ring).length() < needed) s.d_ring *= 0.9;
+  s.depth_b = graded_positions(s.d_ring, s.h, s.uniform_depth, o.growth, o.h_max);
+  s.nt = s.depth_b.size() - 1;
+  // top block arc: n_s intervals of roughly square elements (radial size d_top / n_t)
+  s.d_top0 = std::max(s.d_ring, kTopRingFraction * s.radius);
+  const double s_top_target = std::max(s.h, s.d_top0 / static_cast<double>(s.nt));
+  s.gamma = std::clamp(static_cast<double>(s.ns) * s_top_target / s.radius, kPi / 4.0,
+                       kPi - s.alpha - kPi / 3.0);
+  s.beta = kPi - s.gamma;
+  // the core's top edge carries n_s intervals too: keep it long enough for spacings ~h
+  s.rho_top_min = std::min(1.0 - kMinRingFraction,
+                           1.2 * static_cast<double>(s.ns) * s.h / (s.gamma * s.radius)) *
+                  s.radius;
+  return s;
+}
+
+/// What the top ring thickness d_top sets: K', A', the core's right edge K -> K', and the right
+/// block's arc and the core's axis positions, split to the same count n_r.
+struct CoreRight {
+  Point k2;
+  Point a2;
+  Curve right;
+  std::vector<double> arc_r;   // right block arc positions
+  std::vector<double> axis_x;  // core axis positions
+  std::size_t nr;
+};
+
+CoreRight core_right(const SphereLayout& s, const MeshOptions& o, double d_top) {
+  const Point a = polar(s.zc, s.radius - s.d_ring, 0.0);
+  const Point k = polar(s.zc, s.radius - s.d_ring, s.alpha);
+  const Point k2 = polar(s.zc, s.radius - d_top, s.beta);
+  const Point a2 = polar(s.zc, s.radius - d_top, kPi);
+  // right block: arc Q -> Q' (i), radial (j): Q->K to Q'->K'
+  const double s_q = spacings(s.arc_b).back();
+  const double s_top = s.radius * s.gamma / static_cast<double>(s.ns);
+  const double right_uniform = std::max(0.0, o.zone_radius - s.radius * s.alpha);
+  auto arc = positions_from_sizes(
+      two_sided_sizes(s.radius * (s.beta - s.alpha), s_q, right_uniform, s_top, o.growth, o.h_max));
+  // core axis A -> A': continues the depth refinement below the ring, then grows
+  const double depth_last = spacings(s.depth_b).back();
+  const double s_top_radial = depth_last * d_top / s.d_ring;
+  auto axis = positions_from_sizes(two_sided_sizes(norm(a2 - a), kCoreFirstSpacing * depth_last,
+                                                   std::max(0.0, s.uniform_depth - s.d_ring),
+                                                   s_top_radial, o.growth, o.h_max));
+  const std::size_t n = std::max(arc.size(), axis.size()) - 1;
+  return CoreRight{k2,
+                   a2,
+                   hermite(k, corner_ahead(s.alpha), k2, -1.0 * corner_back(s.beta)),
+                   split_to_count(arc, n),
+                   split_to_count(axis, n),
+                   n};
+}
+
+/// The top ring thickness d_top sets K' and A': as thick as d_top0 and rho_top_min allow, thinner
+/// when the core's right edge K -> K' is too short for its n_r intervals of >= min_size.
+CoreRight fit_core_right(const SphereLayout& s, const MeshOptions& o) {
+  double d_top = std::max(s.d_ring, std::min(s.d_top0, s.radius - s.rho_top_min));
+  CoreRight core = core_right(s, o, d_top);
+  while (d_top > s.d_ring &&
+         core.right.length() < 1.05 * s.min_size * static_cast<double>(core.nr)) {
+    d_top = std::max(s.d_ring, 0.9 * d_top);
+    core = core_right(s, o, d_top);
+  }
+  return core;
+}
+
+/// The blocks' edges, each shared edge once, named by their end points.
+struct SphereEdges {
+  std::vector<Point> pq;    // arc P -> Q: bottom block south
+  std::vector<Point> ak;    // A -> K: bottom block north, core south
+  std::vector<Point> pa;    // P -> A: bottom block west
+  std::vector<Point> qk;    // Q -> K: bottom block east, right block west
+  std::vector<Point> qq2;   // arc Q -> Q': right block south
+  std::vector<Point> kk2;   // K -> K': right block north, core east
+  std::vector<Point> q2k2;  // Q' -> K': right and top blocks' east
+  std::vector<Point> tq2;   // arc T -> Q': top block south
+  std::vector<Point> a2k2;  // A' -> K': top block north, core north
+  std::vector<Point> ta2;   // T -> A': top block west
+  std::vector<Point> aa2;   // A -> A': core west (the axis)
+};
+
+/// Arc-length positions T -> Q' of the top block: n_s uniform intervals [m].
+std::vector<double> top_arc_positions(const SphereLayout& s) {
+  std::vector<double> arc_t(s.ns + 1);
+  for (std::size_t k = 0; k <= s.ns; ++k)
+    arc_t[k] = s.radius * s.gamma * static_cast<double>(k) / static_cast<double>(s.ns);
+  return arc_t;
+}
+
+/// The blocks' edges: arcs on the sphere, radial lines, the core's curved edges.
+SphereEdges sphere_edges(const SphereLayout& s,
+                         const CoreRight& core,
+                         const std::vector<double>& arc_t) {
+  const double zc = s.zc;
+  const double radius = s.radius;
+  const Point pnt_a = polar(zc, radius - s.d_ring, 0.0);
+  const Point pnt_k = polar(zc, radius - s.d_ring, s.alpha);
+  const Point pnt_q2 = polar(zc, radius, s.beta);
+  const auto depth_f = fractions(s.depth_b);
+  const Curve gamma_bottom = core_bottom(s, s.d_ring);
+  const Curve gamma_top = hermite(core.a2, {1.0, 0.0}, core.k2, -1.0 * corner_ahead(s.beta));
+  SphereEdges e;
+  e.pq = arc_points(zc, radius, 0.0, s.alpha, s.arc_b);
+  e.ak = gamma_bottom.sample(fit_fractions(fractions(s.arc_b), gamma_bottom.length(), s.min_size));
+  e.pa = line_points(polar(zc, radius, 0.0), pnt_a, depth_f);
+  e.qk = line_points(polar(zc, radius, s.alpha), pnt_k, depth_f);
+  e.qq2 = arc_points(zc, radius, s.alpha, s.beta, core.arc_r);
+  e.kk2 = core.right.sample(
+      fit_fractions(fractions(core.arc_r), core.right.length(), kCoreRightSpacing * s.min_size));
+  e.q2k2 = line_points(pnt_q2, core.k2, depth_f);
+  e.tq2.resize(s.ns + 1);
+  for (std::size_t k = 0; k <= s.ns; ++k) e.tq2[k] = polar(zc, radius, kPi - arc_t[k] / radius);
+  e.tq2.back() = pnt_q2;
+  e.a2k2 = gamma_top.sample(fit_fractions(fractions(arc_t), gamma_top.length(), s.min_size));
+  e.ta2 = line_points(polar(zc, radius, kPi), core.a2, depth_f);
+  e.aa2 = line_points(pnt_a, core.a2, fractions(core.axis_x));
+  return e;
+}
+
+}  // namespace
+
+void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+  const SphereLayout s = sphere_layout(o);
+  const CoreRight core = fit_core_right(s, o);
+  const std::vector<double> arc_t = top_arc_positions(s);
+  const SphereEdges e = sphere_edges(s, core, arc_t);
+  const std::size_t ns = s.ns;
+  const std::size_t nt = s.nt;
+  const std::size_t nr = core.nr;
+
+  builder.start_body(Body::kSphere);
+  const auto ids_b = builder.block(coons(e.pq, e.ak, e.pa, e.qk), ns, nt);
+  const auto ids_r = builder.block(coons(e.qq2, e.kk2, e.qk, e.q2k2), nr, nt);
+  const auto ids_t = builder.block(coons(e.tq2, e.a2k2, e.ta2, e.q2k2), ns, nt);
+  builder.block(coons(e.ak, e.a2k2, e.aa2, e.kk2), ns, nr);
+
+  // surface nodes from the lowest point (bottom, right, then top block arcs), up to the first
+  // node past the equator
+  const double alpha = s.alpha;
+  const double beta = s.beta;
+  const auto& arc_b = s.arc_b;
+  const auto& arc_r = core.arc_r;
+  std::vector<int>& surf = mesh.sphere_surface_nodes;
+  std::vector<std::pair<int, double>> arc_nodes;  // (node, polar angle)
+  for (std::size_t i = 0; i <= ns; ++i)
+    arc_nodes.emplace_back(ids_b[i * (nt + 1)], alpha * arc_b[i] / arc_b.back());
+  for (std::size_t i = 1; i <= nr; ++i)
+    arc_nodes.emplace_back(ids_r[i * (nt + 1)], alpha + (beta - alpha) * arc_r[i] / arc_r.back());
+  for (std::size_t i = ns; i-- > 0;)
+    arc_nodes.emplace_back(ids_t[i * (nt + 1)], kPi - arc_t[i] / s.radius);
+  for (const auto& [node, phi] : arc_nodes) {
+    surf.push_back(node);
+    if (phi > 0.5 * kPi) break;
+  }
+}
+
+}  // namespace corlab::fem::meshing

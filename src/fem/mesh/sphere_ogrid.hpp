@@ -1,0 +1,17 @@
+#pragma once
+/// @file sphere_ogrid.hpp
+/// The sphere's multi-block O-grid (docs/theory/mesh.md, "Sphere: multi-block O-grid"): bottom,
+/// right and top ring blocks around a curved core. Private to the mesh generator
+/// (src/fem/mesh).
+
+#include "corlab/fem/mesh/mesh.hpp"
+#include "corlab/fem/mesh/mesh_generator.hpp"
+#include "fem/mesh/mesh_builder.hpp"
+
+namespace corlab::fem::meshing {
+
+/// Adds the sphere's blocks (bottom, right, top, core) as Body::kSphere and sets
+/// mesh.sphere_surface_nodes: from the lowest point up to the first node past the equator.
+void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh);
+
+}  // namespace corlab::fem::meshing

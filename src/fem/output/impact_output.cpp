@@ -1,0 +1,83 @@
+// History CSV and summary JSON of one impact.
+#include "corlab/fem/output/impact_output.hpp"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <stdexcept>
+#include <type_traits>
+#include <variant>
+
+#include "corlab/core/atomic_file.hpp"
+#include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/solver/result_fields.hpp"
+
+namespace corlab::fem {
+
+namespace {
+
+std::ofstream open_for_writing(const std::filesystem::path& file) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", file.string()));
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json config_to_json(const ImpactConfig& config) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const ConfigKeyInfo& key : config_keys()) {
+    nlohmann::json* node = &j;
+    for (const std::string& name : config_echo_path(key)) node = &(*node)[name];
+    *node = config_value_json(config, key.key);
+  }
+  return j;
+}
+
+nlohmann::json summary_to_json(const ImpactResult& r, const ImpactConfig& config) {
+  nlohmann::json j;
+  nlohmann::json units = nlohmann::json::object();
+  const FieldInput in{&r, &config, r.wall_s};
+  for (const ResultField& f : result_fields()) {
+    if ((f.outputs & kSummary) == 0) continue;
+    const std::string name(f.name);
+    std::visit(
+        [&](const auto& v) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) {
+            j[name] = nullptr;
+          } else {
+            j[name] = v;
+          }
+        },
+        f.value(in));
+    if (f.unit == "-") continue;
+    // The energies share one entry, as summary.json has always written them.
+    units[f.unit == "J" && name.starts_with("energy_") ? "energy_*" : name] = f.unit;
+  }
+  j["units"] = std::move(units);
+  j["config"] = config_to_json(config);
+  return j;
+}
+
+void write_summary_json(const ImpactResult& result,
+                        const ImpactConfig& config,
+                        const std::filesystem::path& file) {
+  write_file_atomically(file, summary_to_json(result, config).dump(2) + '\n');
+}
+
+void write_history_csv(const ImpactHistory& h, const std::filesystem::path& file) {
+  auto out = open_for_writing(file);
+  out << "time_s,contact_force_N,indentation_m,sphere_velocity_m_per_s,kinetic_energy_J,"
+         "strain_energy_J,plastic_dissipation_J,hourglass_energy_J,viscous_dissipation_J,"
+         "contact_energy_J,energy_balance_error\n";
+  for (std::size_t i = 0; i < h.time.size(); ++i) {
+    out << fmt::format(
+        "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g}\n", h.time[i],
+        h.contact_force[i], h.indentation[i], h.sphere_velocity[i], h.kinetic_energy[i],
+        h.strain_energy[i], h.plastic_dissipation[i], h.hourglass_energy[i],
+        h.viscous_dissipation[i], h.contact_energy[i], h.energy_balance_error[i]);
+  }
+  if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", file.string()));
+}
+
+}  // namespace corlab::fem

@@ -1,0 +1,366 @@
+// The driver of one explicit impact run: model -> state -> steps until the stop rule, the run
+// status and the result. Model, state and step: src/fem/solver/; stop rule: separation_rule.hpp;
+// theory: docs/theory/solver.md.
+#include "corlab/fem/solver/explicit_solver.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "corlab/fem/output/field_snapshot.hpp"
+#include "corlab/fem/solver/run_quality.hpp"
+#include "corlab/fem/solver/separation_rule.hpp"
+#include "fem/solver/impact_model.hpp"
+#include "fem/solver/impact_state.hpp"
+#include "fem/solver/impact_step.hpp"
+
+namespace corlab::fem {
+namespace {
+
+using solver::ForceReport;
+using solver::ImpactModel;
+using solver::ImpactState;
+using solver::NodeSums;
+
+/// The run stops as step_collapsed when dt falls below this fraction of the first step [-].
+constexpr double kMinStepFraction = 1e-6;
+/// Cancellation and progress are polled every kPollEvery steps (a power of two).
+constexpr long long kPollEvery = 256;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Appends one history row (state at t^n; ke from the kinematic half of the step).
+void record_history(
+    const ImpactState& s, double ke, double v_half_mean, double balance, ImpactHistory& h) {
+  h.time.push_back(s.t);
+  h.contact_force.push_back(s.force);
+  h.indentation.push_back(s.indentation);
+  h.sphere_velocity.push_back(-v_half_mean);
+  h.kinetic_energy.push_back(ke);
+  h.strain_energy.push_back(s.energy.internal - s.energy.plastic);
+  h.plastic_dissipation.push_back(s.energy.plastic);
+  h.hourglass_energy.push_back(s.energy.hourglass);
+  h.viscous_dissipation.push_back(s.energy.viscous);
+  h.contact_energy.push_back(s.energy.contact);
+  h.energy_balance_error.push_back(balance);
+}
+
+FieldSnapshot snapshot(const ImpactModel& m, const Mesh& mesh, const ImpactState& s, double t) {
+  FieldSnapshot f;
+  f.time = t;
+  f.mesh = mesh;
+  f.mesh.r = s.r;
+  f.mesh.z = s.z;
+  f.displacement_r.resize(m.n_nodes);
+  f.displacement_z.resize(m.n_nodes);
+  for (int i = 0; i < m.n_nodes; ++i) {
+    f.displacement_r[i] = s.r[i] - mesh.r[i];
+    f.displacement_z[i] = s.z[i] - mesh.z[i];
+  }
+  f.velocity_r = s.vr;
+  f.velocity_z = s.vz;
+  f.von_mises.assign(m.n_elements, 0.0);
+  f.pressure.assign(m.n_elements, 0.0);
+  f.plastic_strain.assign(m.n_elements, 0.0);
+  const auto& es = s.elements;
+  for (int e = 0; e < m.n_elements; ++e) {
+    const AxisymTensor st{es.srr[e], es.szz[e], es.stt[e], es.srz[e]};
+    const int k = m.original_element[e];
+    f.von_mises[k] = von_mises(st);
+    f.pressure[k] = -trace(st) / 3.0;
+    f.plastic_strain[k] = es.eps_p[e];
+  }
+  return f;
+}
+
+/// Sphere kinetic energy now [J].
+double sphere_kinetic_energy(const ImpactModel& m, const ImpactState& s) {
+  double ke = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i)
+    ke += 0.5 * m.mass[i] * (s.vr[i] * s.vr[i] + s.vz[i] * s.vz[i]) * m.is_sphere[i];
+  return ke;
+}
+
+/// Largest von Mises stress over the substrate's elements now [Pa].
+double substrate_von_mises_max(const ImpactModel& m, const ImpactState& s) {
+  const auto& es = s.elements;
+  double vm = 0.0;
+  for (int e = m.n_sphere_elements; e < m.n_elements; ++e) {
+    vm = std::max(vm, von_mises(AxisymTensor{es.srr[e], es.szz[e], es.stt[e], es.srz[e]}));
+  }
+  return vm;
+}
+
+/// The result of a run that ended with `status`.
+ImpactResult finish(const ImpactModel& m,
+                    const ImpactState& s,
+                    const SeparationRule& rule,
+                    RunStatus status,
+                    double balance_max,
+                    double z_axis_surface,
+                    ImpactResult res) {
+  const bool clean = status == RunStatus::kSeparated;
+  const double e0 = m.energy_initial;
+  const double ke_final = clean ? rule.mean_sphere_kinetic_energy() : sphere_kinetic_energy(m, s);
+  res.status = status;
+  res.separated = clean;
+  res.e = clean ? s.sphere_velocity / m.velocity : kNaN;
+  res.e_energy = clean ? std::sqrt(std::max(ke_final, 0.0) / e0) : kNaN;
+  res.contact_time = rule.contact_time();
+  res.crater_depth = z_axis_surface - s.z[m.masters[0]];
+  res.plastic_strain_max = s.eps_p_max;
+  res.energy_sphere_loss = e0 - ke_final;
+  res.energy_dissipated_plastic = s.energy.plastic;
+  res.energy_hourglass = s.energy.hourglass;
+  res.energy_viscous = s.energy.viscous;
+  res.energy_balance_error = balance_max;
+  res.hysteresis_area = s.hysteresis;
+  res.force_max = s.force_max;
+  res.indentation_max = s.indentation_max;
+  res.penetration_max = s.penetration_max;
+  res.substrate_von_mises_max = substrate_von_mises_max(m, s);
+  res.steps = s.step;
+  res.end_time = s.t;
+  if (status != RunStatus::kNonFinite && !std::isfinite(res.energy_sphere_loss)) {
+    res.status = RunStatus::kNonFinite;
+    res.status_detail = "non-finite energies at the end of the run";
+  }
+  if (res.status == RunStatus::kSeparated) res.suspect = suspect_reason(res);
+  return res;
+}
+
+/// A one-line detail for a status other than separated.
+std::string status_detail(RunStatus status,
+                          const ImpactModel& m,
+                          const ImpactState& s,
+                          const ForceReport& rep,
+                          double v_com) {
+  switch (status) {
+    case RunStatus::kElementInverted:
+      return fmt::format("element {} inverted at t = {:.6g} s (step {})", rep.inverted_element, s.t,
+                         s.step);
+    case RunStatus::kStepCollapsed:
+      return fmt::format("stable time step collapsed to {:.3g} s at t = {:.6g} s", s.dt, s.t);
+    case RunStatus::kNonFinite:
+      return fmt::format("non-finite energy at t = {:.6g} s (step {})", s.t, s.step);
+    case RunStatus::kStepBudgetExceeded:
+      return fmt::format("{} steps (solver.max_steps) reached at t = {:.6g} s", m.max_steps, s.t);
+    case RunStatus::kCancelled:
+      return "interrupted";
+    case RunStatus::kMaxCompression:
+      return fmt::format("stopped at maximum compression, t = {:.6g} s", s.t);
+    case RunStatus::kNotSeparated:
+      return v_com <= 0.0 && s.t < m.t_max
+                 ? fmt::format(
+                       "contact ended with the sphere moving into the substrate "
+                       "(v = {:.4g} m/s)",
+                       v_com)
+                 : fmt::format("no clean rebound by t_max = {:.6g} s", m.t_max);
+    case RunStatus::kSeparated:
+      break;
+  }
+  return {};
+}
+
+/// The time loop of one run: steps the state until a status ends it, keeping the energy
+/// balance, the history, field snapshots, progress and cancel polling.
+class TimeLoop {
+ public:
+  TimeLoop(const ImpactConfig& config,
+           const Mesh& mesh,
+           const SimulationControl& control,
+           const ImpactModel& m,
+           ImpactState& s,
+           ImpactHistory& history)
+      : mesh_(mesh),
+        control_(control),
+        m_(m),
+        s_(s),
+        history_(history),
+        rule_(m.t_wave, m.velocity),
+        field_times_(config.output.field_times),
+        every_(config.output.history_every),
+        v_com_prev_(s.sphere_velocity),
+        t_boundary_(s.t) {
+    std::sort(field_times_.begin(), field_times_.end());
+  }
+
+  /// Runs to the end; returns the status.
+  RunStatus run() {
+    // A run cancelled before it starts does no work (the loop polls only every kPollEvery steps).
+    if (cancelled()) return RunStatus::kCancelled;
+    if (m_.levels.max_level > 0) return run_subcycled();
+    while (true) {
+      if (auto end = kinematic_half()) return *end;
+      if (auto end = force_half()) return *end;
+      if (auto end = after_step()) return *end;
+    }
+  }
+
+  const SeparationRule& rule() const { return rule_; }
+  const ForceReport& last_forces() const { return rep_; }
+  double balance_max() const { return balance_max_; }
+
+ private:
+  bool cancelled() const {
+    return control_.cancel != nullptr && control_.cancel->load(std::memory_order_relaxed);
+  }
+
+  /// Velocities and positions, then the energy balance at t^n (kinetic energy in product form,
+  /// exact for the scheme) and the history row.
+  std::optional<RunStatus> kinematic_half() {
+    const double dt_avg = 0.5 * (s_.dt_prev + s_.dt);
+    const NodeSums ns = solver::move_nodes(m_, s_);
+    const double v_half_mean = 0.5 * (s_.sphere_velocity + v_com_prev_);
+    v_com_prev_ = s_.sphere_velocity;
+    const double total =
+        ns.ke + s_.energy.internal + s_.energy.hourglass + s_.energy.viscous + s_.energy.contact;
+    const double balance = (total - m_.energy_initial) / m_.energy_initial;
+    if (!std::isfinite(balance)) {
+      balance_max_ = kNaN;
+      return RunStatus::kNonFinite;
+    }
+    balance_max_ = std::max(balance_max_, std::abs(balance));
+    if (s_.step % every_ == 0) record_history(s_, ns.ke, v_half_mean, balance, history_);
+    rule_.accumulate(ns.ke_sphere, dt_avg);
+    return std::nullopt;
+  }
+
+  /// Element and contact forces, then the stop rule.
+  std::optional<RunStatus> force_half() {
+    rep_ = solver::compute_forces(m_, s_);
+    if (rep_.inverted_element >= 0) return RunStatus::kElementInverted;
+    if (!(s_.dt > kMinStepFraction * m_.dt_initial)) return RunStatus::kStepCollapsed;
+    const auto decision = rule_.update(s_.t, s_.dt_prev, rep_.penetrating, s_.sphere_velocity);
+    if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
+    if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
+    if (control_.stop_at_max_compression && rule_.touched() && s_.sphere_velocity >= 0.0) {
+      return RunStatus::kMaxCompression;
+    }
+    return std::nullopt;
+  }
+
+  /// Field snapshots, the time and step limits, cancel and progress.
+  std::optional<RunStatus> after_step() {
+    while (next_field_ < field_times_.size() && s_.t >= field_times_[next_field_]) {
+      if (control_.on_fields) control_.on_fields(s_.t, snapshot(m_, mesh_, s_, s_.t));
+      ++next_field_;
+    }
+    if (s_.t >= m_.t_max) return RunStatus::kNotSeparated;
+    if (s_.step >= m_.max_steps) return RunStatus::kStepBudgetExceeded;
+    if ((s_.step & (kPollEvery - 1)) == 0) {
+      if (cancelled()) return RunStatus::kCancelled;
+      if (control_.progress) {
+        control_.progress(
+            std::clamp((s_.t - m_.t_start) / (m_.t_expected - m_.t_start), 0.0, 0.99));
+      }
+    }
+    return std::nullopt;
+  }
+
+  /// The subcycled loop (docs/theory/solver.md section 11): the energy balance, history and stop
+  /// rule at major-cycle boundaries, where every node and element is in sync.
+  RunStatus run_subcycled() {
+    const long long cycle = 1LL << m_.levels.max_level;
+    const long long rows_every = std::max<long long>(1, every_ / cycle);
+    while (true) {
+      const bool boundary = s_.step % cycle == 0;
+      const NodeSums ns = solver::move_nodes_subcycled(m_, s_);
+      if (boundary) {
+        if (auto end = cycle_boundary(ns, (s_.step / cycle) % rows_every == 0)) return *end;
+      }
+      rep_ = solver::compute_forces_subcycled(m_, s_);
+      if (rep_.inverted_element >= 0) return RunStatus::kElementInverted;
+      if (!(s_.dt > kMinStepFraction * m_.dt_initial)) return RunStatus::kStepCollapsed;
+      if (s_.step % cycle == 0) {
+        if (auto end = after_step()) return *end;
+      } else if (s_.t >= m_.t_max || s_.step >= m_.max_steps) {
+        return s_.t >= m_.t_max ? RunStatus::kNotSeparated : RunStatus::kStepBudgetExceeded;
+      }
+    }
+  }
+
+  /// At a major-cycle boundary t^k: energy balance, history row, stop rule (contact over the
+  /// cycle that ended; the sphere's momentum before the nodes' update).
+  std::optional<RunStatus> cycle_boundary(const NodeSums& ns, bool row) {
+    const double cycle_dt = s_.t - t_boundary_;
+    t_boundary_ = s_.t;
+    const double v_mean = 0.5 * (s_.sphere_velocity + v_com_prev_);
+    v_com_prev_ = s_.sphere_velocity;
+    const double total = ns.ke + s_.kick_correction + s_.energy.internal + s_.energy.hourglass +
+                         s_.energy.viscous + s_.energy.contact;
+    const double balance = (total - m_.energy_initial) / m_.energy_initial;
+    if (!std::isfinite(balance)) {
+      balance_max_ = kNaN;
+      return RunStatus::kNonFinite;
+    }
+    balance_max_ = std::max(balance_max_, std::abs(balance));
+    if (row) record_history(s_, ns.ke + s_.kick_correction, v_mean, balance, history_);
+    if (s_.step == 0) return std::nullopt;
+    rule_.accumulate(ns.ke_sphere, cycle_dt);
+    const double since = s_.cycle_penetrating ? s_.t - s_.t_first_penetrating : cycle_dt;
+    const auto decision = rule_.update(s_.t, since, s_.cycle_penetrating, s_.sphere_velocity);
+    s_.cycle_penetrating = false;
+    if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
+    if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
+    if (control_.stop_at_max_compression && rule_.touched() && s_.sphere_velocity >= 0.0) {
+      return RunStatus::kMaxCompression;
+    }
+    return std::nullopt;
+  }
+
+  const Mesh& mesh_;
+  const SimulationControl& control_;
+  const ImpactModel& m_;
+  ImpactState& s_;
+  ImpactHistory& history_;
+  SeparationRule rule_;
+  std::vector<double> field_times_;
+  std::size_t next_field_ = 0;
+  int every_;
+  double v_com_prev_;
+  double t_boundary_ = 0.0;  ///< time of the last major-cycle boundary (subcycling) [s]
+  double balance_max_ = 0.0;
+  ForceReport rep_;
+};
+
+}  // namespace
+
+ImpactResult run_impact(const ImpactConfig& config,
+                        const Mesh& mesh,
+                        const SimulationControl& control) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const ImpactModel m = solver::make_impact_model(config, mesh);
+  ImpactState s = solver::make_initial_state(m);
+  const double z_axis_surface = s.z[m.masters[0]];
+  ImpactResult res;
+  res.elements = m.n_elements;
+  res.nodes = m.n_nodes;
+  res.time_step = m.dt_initial;
+  res.mass_scaling = m.mass_scaling;
+  res.added_mass_fraction = m.added_mass / m.sphere_mass_physical;
+  res.h_contact =
+      std::hypot(s.r[m.masters[1]] - s.r[m.masters[0]], s.z[m.masters[1]] - s.z[m.masters[0]]);
+  res.energy_initial = m.energy_initial;
+
+  TimeLoop loop(config, mesh, control, m, s, res.history);
+  const RunStatus status = loop.run();
+  res = finish(m, s, loop.rule(), status, loop.balance_max(), z_axis_surface, std::move(res));
+  if (res.status != RunStatus::kSeparated && res.status_detail.empty()) {
+    res.status_detail = status_detail(res.status, m, s, loop.last_forces(), s.sphere_velocity);
+  }
+  res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double element_steps =
+      m.levels.max_level > 0 ? static_cast<double>(s.element_steps)
+                             : static_cast<double>(m.n_elements) * static_cast<double>(s.step);
+  res.element_steps_per_s = element_steps / res.wall_s;
+  if (control.progress) control.progress(1.0);
+  return res;
+}
+
+}  // namespace corlab::fem

@@ -1,0 +1,157 @@
+// Inputs refused at the boundary (issue 12 item 2): every reproducer of the issue that is an
+// input problem gives one InputError line naming the field, its value and the limit.
+#include "corlab/fem/config/config_limits.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "corlab/core/error.hpp"
+#include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/materials/material_database.hpp"
+
+namespace corlab::fem {
+namespace {
+
+// The message of the InputError that applying `items` (key=value) and validating throws.
+std::string refusal(const std::vector<std::string>& items) {
+  try {
+    ImpactConfig c;
+    apply_settings(c, items, "--set");
+    validate(c);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct Reproducer {
+  std::vector<std::string> settings;
+  std::string starts_with;  // "invalid <field> = <value>: must ..."
+};
+
+TEST(ConfigLimits, IssueReproducersAreRefusedWithOneLineNamingTheField) {
+  const std::vector<Reproducer> cases{
+      {{"impact.gap=1e20", "mesh.h_min=1.5e-3", "mesh.contact_elements=0"},
+       "invalid impact.gap = 1e+20: must be in [0, 1] [m]"},
+      {{"impact.gap=1e15"}, "invalid impact.gap = 1000000000000000: must be in [0, 1] [m]"},
+      {{"impact.gap=1e10"}, "invalid impact.gap = 10000000000"},
+      {{"impact.gap=0.5"}, "invalid impact.gap = 0.5: must be <= sphere.radius = 0.035 [m]"},
+      {{"sphere.E=2.1e17"}, "invalid sphere.E = 2.1e+17: must be in [10000, 10000000000000]"},
+      {{"substrate.E=2.1e17"}, "invalid substrate.E = 2.1e+17"},
+      {{"substrate.rho=1e308"}, "invalid substrate.rho = 1e+308"},
+      {{"substrate.rho=1e-3"}, "invalid substrate.rho = 0.001"},
+      {{"sphere.rho=1e308"}, "invalid sphere.rho = 1e+308"},
+      {{"solver.hourglass=1e308"}, "invalid solver.hourglass = 1e+308: must be in [0, 0.15]"},
+      {{"solver.hourglass=10"}, "invalid solver.hourglass = 10"},
+      {{"solver.bulk_viscosity_quadratic=1e308"},
+       "invalid solver.bulk_viscosity_quadratic = 1e+308: must be in [0, 2]"},
+      {{"solver.bulk_viscosity_linear=1"}, "invalid solver.bulk_viscosity_linear = 1"},
+      {{"impact.velocity=1e308"}, "invalid impact.velocity = 1e+308: must be in (0, 1000]"},
+      {{"impact.velocity=1000"},
+       "invalid impact.velocity = 1000: must be low enough for the "
+       "predicted contact radius"},
+      {{"impact.velocity=500", "substrate.sigma_y=100e6"}, "invalid impact.velocity = 500"},
+      {{"solver.penalty_scale=1.0", "solver.safety_factor=1.0"},
+       "invalid solver.penalty_scale = 1: must be in [0.1, 0.5]"},
+      {{"solver.penalty_scale=0.5", "solver.safety_factor=0.9"},
+       "invalid solver.safety_factor = 0.9: must be <= 1/sqrt(1 + solver.penalty_scale) = 0.8165"},
+      {{"solver.penalty_scale=1e-3"}, "invalid solver.penalty_scale = 0.001"},
+      {{"substrate.radius=2e-3"}, "invalid substrate.radius = 0.002: must be >= 0.0106 [m]"},
+      {{"substrate.E=1e6", "substrate.sigma_y=1e4"}, "invalid impact.velocity = 5"},
+      {{"sphere.radius=5"}, "invalid sphere.radius = 5"},
+      {{"sphere.sigma_y=50"}, "invalid sphere.sigma_y = 50: must be in [2.1e+06, 2.1e+10)"},
+      {{"solver.t_max=1e-6"}, "invalid solver.t_max = 1e-06: must be 0 (automatic) or > "},
+      {{"substrate.sigma_y="},
+       "invalid substrate.sigma_y = '': must be a finite number, or "
+       "`none`"},
+      {{"impact.velocity=2", "impact.velocity=3"},
+       "invalid --set impact.velocity = '3': must be given once"},
+      {{"sphere.material=E=1e9,E=2e9,nu=0.3,rho=1000"},
+       "invalid sphere.E = '2e9': must be given "
+       "once"},
+      {{"substrate.material=steel_ma2023,sy=1e8,sigma_y=2e8"}, "invalid substrate.sigma_y = '2e8'"},
+      {{"substrate.hardening=3e11"}, "invalid substrate.hardening = 300000000000: must be < "},
+      {{"substrate.nu=0.4999999"}, "invalid solver.max_steps = 20000000: must be >= the estimated"},
+      {{"impact.velocity"}, "invalid --set = 'impact.velocity': must be key=value"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.settings.front());
+    const std::string message = refusal(c.settings);
+    EXPECT_EQ(message.rfind(c.starts_with, 0), 0u) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST(ConfigLimits, StepBudgetCanBeRaised) {
+  ImpactConfig c;
+  apply_settings(c, {"substrate.nu=0.4999999"}, "--set");  // near-incompressible: fast waves
+  const RunEstimate e = estimate_run(c);
+  EXPECT_GT(e.steps, static_cast<double>(c.solver.max_steps));
+  EXPECT_THROW(validate(c), InputError);
+  c.solver.max_steps = static_cast<long long>(2.0 * e.steps);
+  EXPECT_NO_THROW(validate(c));
+}
+
+TEST(ConfigLimits, EstimateOfThePaperCaseBoundsItsStepCount) {
+  // The paper case runs 11,412 steps to separation (corlab simulate, defaults); the estimate is
+  // of a run that never separates (to t_max = 20 Hertz times), so it must be larger.
+  const RunEstimate e = estimate_run(ImpactConfig{});
+  EXPECT_GT(e.steps, 11412.0);
+  EXPECT_LT(e.steps, 20.0 * 11412.0);
+  EXPECT_GT(e.time_step, 0.0);
+}
+
+TEST(ConfigLimits, MaterialKeysApplyFirstWhateverTheOrder) {
+  ImpactConfig c;
+  apply_settings(c, {"substrate.sigma_y=300e6", "substrate.material=steel_ma2023"}, "--set");
+  EXPECT_DOUBLE_EQ(*c.substrate.material.yield_stress, 300e6);
+}
+
+TEST(ConfigLimits, TomlArrayForAScalarAndEmptyNumberAreErrors) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto write = [&](const std::string& name, const std::string& text) {
+    const auto file = dir / name;
+    std::ofstream(file) << text;
+    return file;
+  };
+  auto message = [](const std::filesystem::path& f) {
+    try {
+      (void)load_impact_config(f);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message(write("corlab_cfg_a.toml", "[impact]\nvelocity = [5.0]\n")),
+            "invalid impact.velocity = 'an array': must be a single value, not a list");
+  EXPECT_EQ(message(write("corlab_cfg_b.toml", "[substrate]\nsigma_y = \"\"\n"))
+                .rfind("invalid substrate.sigma_y = ''", 0),
+            0u);
+  EXPECT_NE(message(write("corlab_cfg_c.toml", "[impact]\nvelocity = 5.0\nvelocity = 6.0\n")), "");
+  EXPECT_EQ(message(write("corlab_cfg_d.toml", "[output]\ntimes = [1e-5, 2e-5]\n")), "");
+}
+
+TEST(ConfigKeys, TableDrivesHelpAndCoversEveryKey) {
+  const std::string help = config_keys_help();
+  for (const auto& key : config_keys()) {
+    EXPECT_NE(help.find(std::string(key.key)), std::string::npos) << key.key;
+    EXPECT_FALSE(key.doc.empty()) << key.key;
+    // Every key can be set from the text of its default.
+    ImpactConfig c;
+    if (key.kind == KeyKind::material || key.kind == KeyKind::path) continue;
+    EXPECT_NO_THROW(set_config_key(c, key.key, config_value_text(ImpactConfig{}, key.key)))
+        << key.key;
+    EXPECT_NO_THROW(validate(c)) << key.key;
+  }
+  EXPECT_NE(help.find("solver.max_steps"), std::string::npos);
+  // The defaults lie inside every range.
+  EXPECT_NO_THROW(validate_key_ranges(ImpactConfig{}));
+}
+
+}  // namespace
+}  // namespace corlab::fem

@@ -1,0 +1,113 @@
+// VTU output (vtu_writer.hpp): a well-formed file with the declared arrays.
+#include "corlab/fem/output/vtu_writer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "corlab/core/error.hpp"
+#include "corlab/fem/mesh/mesh_generator.hpp"
+
+namespace corlab::fem {
+namespace {
+
+std::filesystem::path out_dir() {
+  const auto dir = std::filesystem::path(CORLAB_BINARY_DIR) / "test_output" / "vtu_writer";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+long count(const std::string& text, const std::string& what) {
+  long n = 0;
+  for (std::size_t pos = text.find(what); pos != std::string::npos;
+       pos = text.find(what, pos + what.size()))
+    ++n;
+  return n;
+}
+
+/// Numbers between the opening tag of DataArray `name` and its closing tag.
+std::vector<double> array_values(const std::string& text, const std::string& name) {
+  const std::size_t start = text.find("Name=\"" + name + "\"");
+  EXPECT_NE(start, std::string::npos) << name;
+  const std::size_t open_end = text.find('>', start);
+  const std::size_t close = text.find("</DataArray>", open_end);
+  std::istringstream in(text.substr(open_end + 1, close - open_end - 1));
+  std::vector<double> v;
+  double x = 0.0;
+  while (in >> x) v.push_back(x);
+  return v;
+}
+
+Mesh small_mesh() {
+  MeshOptions o;
+  o.sphere_radius = 10e-3;
+  o.substrate_radius = 20e-3;
+  o.substrate_depth = 20e-3;
+  o.h_contact = 0.5e-3;
+  o.zone_radius = 2e-3;
+  o.zone_depth = 2e-3;
+  o.h_max = 3e-3;
+  o.growth = 1.3;
+  return generate_impact_mesh(o);
+}
+
+TEST(VtuWriter, WritesAWellFormedFileWithFields) {
+  const Mesh m = small_mesh();
+  const auto nn = static_cast<std::size_t>(m.num_nodes());
+  const auto ne = static_cast<std::size_t>(m.num_elements());
+  FieldSnapshot snap;
+  snap.mesh = m;
+  snap.displacement_r.assign(nn, 1e-6);
+  snap.displacement_z.assign(nn, -2e-6);
+  snap.von_mises.assign(ne, 3e8);
+  snap.plastic_strain.assign(ne, 0.01);
+  const auto path = out_dir() / "snapshot.vtu";
+  write_vtu(path, snap);
+  const std::string text = read_text(path);
+  // XML well-formedness (balanced elements of this flat schema)
+  EXPECT_EQ(text.rfind("<?xml", 0), 0u);
+  EXPECT_EQ(count(text, "<DataArray"), count(text, "</DataArray>"));
+  for (const char* tag :
+       {"VTKFile", "UnstructuredGrid", "Piece", "Points", "Cells", "PointData", "CellData"})
+    EXPECT_EQ(count(text, std::string("<") + tag + ">") + count(text, std::string("<") + tag + " "),
+              count(text, std::string("</") + tag + ">"))
+        << tag;
+  EXPECT_NE(text.find("NumberOfPoints=\"" + std::to_string(nn) + "\""), std::string::npos);
+  EXPECT_NE(text.find("NumberOfCells=\"" + std::to_string(ne) + "\""), std::string::npos);
+  EXPECT_EQ(array_values(text, "connectivity").size(), 4 * ne);
+  EXPECT_EQ(array_values(text, "offsets").back(), static_cast<double>(4 * ne));
+  EXPECT_EQ(array_values(text, "types").size(), ne);
+  const auto disp = array_values(text, "displacement");
+  ASSERT_EQ(disp.size(), 3 * nn);
+  EXPECT_DOUBLE_EQ(disp[0], 1e-6);
+  EXPECT_DOUBLE_EQ(disp[1], -2e-6);
+  EXPECT_DOUBLE_EQ(disp[2], 0.0);
+  EXPECT_EQ(array_values(text, "von_mises").size(), ne);
+  EXPECT_EQ(array_values(text, "plastic_strain").size(), ne);
+  const auto body = array_values(text, "body");
+  ASSERT_EQ(body.size(), ne);
+  for (std::size_t e = 0; e < ne; ++e)
+    EXPECT_EQ(body[e], m.element_body[e] == Body::kSphere ? 0.0 : 1.0);
+  EXPECT_EQ(text.find("pressure"), std::string::npos);  // empty fields are skipped
+}
+
+TEST(VtuWriter, RejectsMisSizedFields) {
+  const Mesh m = small_mesh();
+  VtuField bad{"von_mises", 1, std::vector<double>(3, 0.0)};
+  EXPECT_THROW(write_vtu(out_dir() / "bad.vtu", m, {}, {bad}), InputError);
+  EXPECT_THROW(write_vtu(out_dir() / "no_such_dir" / "x.vtu", m), InputError);
+}
+
+}  // namespace
+}  // namespace corlab::fem

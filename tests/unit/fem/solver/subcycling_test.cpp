@@ -1,0 +1,136 @@
+// Element subcycling (solver.subcycling_levels; docs/theory/solver.md section 11): the level
+// assignment respects each element's stable step, keeps the contact zone at level 0 and gives
+// each node the smallest level of its elements; a subcycled run closes its energy balance and
+// gives the e of the run without subcycling.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
+#include "corlab/fem/mesh/mesh_generator.hpp"
+#include "corlab/fem/solver/simulate.hpp"
+#include "fem/solver/impact_model.hpp"
+#include "fem/solver/impact_step.hpp"
+
+namespace corlab::fem {
+namespace {
+
+using solver::ImpactModel;
+
+// The small built-in case of python/tests/test_simulate.py (SMALL): graded from 0.05 to 0.5 mm.
+ImpactConfig small_config(int levels) {
+  ImpactConfig c;
+  c.sphere.radius = 2.5e-3;
+  c.substrate.radius = 5e-3;
+  c.substrate.depth = 5e-3;
+  c.impact.gap = 1e-5;
+  c.mesh.h_min = 0.05e-3;
+  c.mesh.h_max = 0.5e-3;
+  c.mesh.contact_elements = 0.0;
+  c.output.history_every = 5;
+  c.solver.subcycling_levels = levels;
+  return c;
+}
+
+ImpactModel small_model(int levels) {
+  const ImpactConfig c = small_config(levels);
+  return solver::make_impact_model(c, build_impact_mesh(c));
+}
+
+double element_step(const ImpactModel& m, int e) {
+  double r[4], z[4];
+  for (int i = 0; i < 4; ++i) {
+    r[i] = m.r0[m.element_nodes[e][i]];
+    z[i] = m.z0[m.element_nodes[e][i]];
+  }
+  const auto& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
+  return element_stable_time_step(characteristic_length(quad4_geometry(r, z)), p.wave_speed, p.b1);
+}
+
+TEST(Subcycling, OffLeavesTheModelUnleveled) {
+  const ImpactModel m = small_model(0);
+  EXPECT_EQ(m.levels.max_level, 0);
+  EXPECT_TRUE(m.levels.element.empty());
+}
+
+TEST(Subcycling, LevelsRespectTheStableStepAndTheContact) {
+  const ImpactModel m = small_model(3);
+  const auto& lv = m.levels;
+  ASSERT_GT(lv.max_level, 0) << "the graded mesh should allow longer steps";
+  ASSERT_LE(lv.max_level, 3);
+  ASSERT_EQ(static_cast<int>(lv.element.size()), m.n_elements);
+  ASSERT_EQ(static_cast<int>(lv.node.size()), m.n_nodes);
+  std::vector<int> node_min(m.n_nodes, 99);
+  for (int e = 0; e < m.n_elements; ++e) {
+    const int l = lv.element[e];
+    // Stable: 2^L dt_critical within the margin of the element's own step (level 0 always is).
+    if (l > 0) {
+      EXPECT_LE(std::ldexp(m.dt_critical, l), solver::kLevelMargin * element_step(m, e) * 1.000001)
+          << "element " << e << " level " << l;
+    }
+    for (int n : m.element_nodes[e]) node_min[n] = std::min(node_min[n], l);
+  }
+  for (int n = 0; n < m.n_nodes; ++n) EXPECT_EQ(lv.node[n], node_min[n]) << "node " << n;
+  for (int n : m.slaves) EXPECT_EQ(lv.node[n], 0);
+  for (int n : m.masters) EXPECT_EQ(lv.node[n], 0);
+  // Elements touching a contact node are level 0; neighbours differ by at most one level.
+  for (int e = 0; e < m.n_elements; ++e) {
+    for (int n : m.element_nodes[e]) {
+      const bool contact = std::count(m.slaves.begin(), m.slaves.end(), n) > 0 ||
+                           std::count(m.masters.begin(), m.masters.end(), n) > 0;
+      if (contact) {
+        EXPECT_EQ(lv.element[e], 0) << "element " << e;
+      }
+      EXPECT_LE(lv.element[e], lv.node[n] + 1) << "element " << e;
+    }
+  }
+  // Sorted by (body, level): each level of each body is one range.
+  for (int l = 0; l <= lv.max_level; ++l) {
+    const int sb = l == 0 ? 0 : lv.sphere_end[l - 1];
+    const int ub = l == 0 ? m.n_sphere_elements : lv.substrate_end[l - 1];
+    for (int e = sb; e < lv.sphere_end[l]; ++e) EXPECT_EQ(lv.element[e], l);
+    for (int e = ub; e < lv.substrate_end[l]; ++e) EXPECT_EQ(lv.element[e], l);
+  }
+  EXPECT_EQ(lv.sphere_end[lv.max_level], m.n_sphere_elements);
+  EXPECT_EQ(lv.substrate_end[lv.max_level], m.n_elements);
+  EXPECT_EQ(lv.node_end[lv.max_level], m.n_nodes);
+}
+
+TEST(Subcycling, SyncLevel) {
+  EXPECT_EQ(solver::sync_level(0, 3), 3);
+  EXPECT_EQ(solver::sync_level(1, 3), 0);
+  EXPECT_EQ(solver::sync_level(2, 3), 1);
+  EXPECT_EQ(solver::sync_level(12, 3), 2);
+  EXPECT_EQ(solver::sync_level(16, 3), 3);
+  EXPECT_EQ(solver::sync_level(64, 6), 6);
+}
+
+// A subcycled elastic and plastic run: fewer element updates, the same e (0.2 %), a closed energy
+// balance (the in-run excess is the energy between an element's update and its nodes' kicks).
+TEST(Subcycling, RunClosesTheEnergyBalanceAndKeepsE) {
+  for (const bool plastic : {false, true}) {
+    ImpactConfig off = small_config(0);
+    off.impact.velocity = 5.0;
+    if (!plastic) off.substrate.material.yield_stress = std::nullopt;
+    ImpactConfig on = off;
+    on.solver.subcycling_levels = 3;
+    const ImpactResult a = simulate(off);
+    const ImpactResult b = simulate(on);
+    ASSERT_TRUE(a.separated);
+    ASSERT_TRUE(b.separated) << b.status_detail;
+    EXPECT_NEAR(b.e, a.e, 2e-3 * a.e) << "plastic " << plastic;
+    EXPECT_LT(b.energy_balance_error, 1e-3) << "plastic " << plastic;
+    EXPECT_LT(std::abs(b.history.energy_balance_error.back()), 1e-4) << "plastic " << plastic;
+    EXPECT_NEAR(b.energy_dissipated_plastic, a.energy_dissipated_plastic, 1e-3 * a.energy_initial);
+    EXPECT_NEAR(b.energy_hourglass, a.energy_hourglass, 1e-5 * a.energy_initial);
+    EXPECT_NEAR(b.penetration_max, a.penetration_max, 0.01 * a.penetration_max);
+    // Fewer element updates per base step.
+    EXPECT_LT(b.element_steps_per_s * b.wall_s,
+              0.9 * static_cast<double>(b.elements) * static_cast<double>(b.steps));
+  }
+}
+
+}  // namespace
+}  // namespace corlab::fem
