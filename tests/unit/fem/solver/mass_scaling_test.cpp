@@ -8,12 +8,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "corlab/fem/kernels/axisym_quad4.hpp"
-#include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/simulate.hpp"
 #include "fem/solver/impact_model.hpp"
+#include "support/impact_model_steps.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -39,16 +38,7 @@ ImpactModel model_of(const ImpactConfig& c) {
   return solver::make_impact_model(c, build_impact_mesh(c));
 }
 
-// Physical stable step of (sorted) element e at the start [s].
-double physical_step(const ImpactModel& m, int e) {
-  double r[4], z[4];
-  for (int i = 0; i < 4; ++i) {
-    r[i] = m.r0[m.element_nodes[e][i]];
-    z[i] = m.z0[m.element_nodes[e][i]];
-  }
-  const auto& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
-  return element_stable_time_step(characteristic_length(quad4_geometry(r, z)), p.wave_speed, p.b1);
-}
+using testing::physical_element_step;
 
 TEST(MassScaling, OffLeavesMassesAndStepsPhysical) {
   const ImpactModel m = model_of(slow_config(0.1, 1.0));
@@ -57,7 +47,7 @@ TEST(MassScaling, OffLeavesMassesAndStepsPhysical) {
   for (double s : m.step_scale) ASSERT_EQ(s, 1.0);
   for (int i = 0; i < m.n_nodes; ++i) ASSERT_EQ(m.mass[i], m.physical_mass[i]) << "node " << i;
   double step_min = 1e300;
-  for (int e = 0; e < m.n_elements; ++e) step_min = std::min(step_min, physical_step(m, e));
+  for (int e = 0; e < m.n_elements; ++e) step_min = std::min(step_min, physical_element_step(m, e));
   EXPECT_DOUBLE_EQ(m.dt_critical, step_min);
 }
 
@@ -67,7 +57,7 @@ TEST(MassScaling, RaisesEveryStepToTheTargetAndAddsLittleMass) {
   ASSERT_GE(m.mass_scaling, 2.0) << "a 0.1 m/s impact is quasi-static: scaling should apply";
   EXPECT_NEAR(m.dt_critical, m.mass_scaling * off.dt_critical, 1e-12 * m.dt_critical);
   for (int e = 0; e < m.n_elements; ++e) {
-    const double step = m.step_scale[e] * physical_step(m, e);
+    const double step = m.step_scale[e] * physical_element_step(m, e);
     ASSERT_GE(step, m.dt_critical * (1.0 - 1e-12)) << "element " << e;
     // Scaled only as far as needed, except at the contact (the whole factor).
     ASSERT_TRUE(m.step_scale[e] == 1.0 || m.step_scale[e] == m.mass_scaling ||

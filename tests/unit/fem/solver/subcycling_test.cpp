@@ -7,12 +7,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "corlab/fem/kernels/axisym_quad4.hpp"
-#include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/simulate.hpp"
 #include "fem/solver/impact_model.hpp"
 #include "fem/solver/impact_step.hpp"
+#include "support/impact_model_steps.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -39,14 +38,9 @@ ImpactModel small_model(int levels) {
   return solver::make_impact_model(c, build_impact_mesh(c));
 }
 
+// The model's stable step of element e at the start (mass scaling included) [s].
 double element_step(const ImpactModel& m, int e) {
-  double r[4], z[4];
-  for (int i = 0; i < 4; ++i) {
-    r[i] = m.r0[m.element_nodes[e][i]];
-    z[i] = m.z0[m.element_nodes[e][i]];
-  }
-  const auto& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
-  return element_stable_time_step(characteristic_length(quad4_geometry(r, z)), p.wave_speed, p.b1);
+  return m.step_scale[e] * testing::physical_element_step(m, e);
 }
 
 TEST(Subcycling, OffLeavesTheModelUnleveled) {
