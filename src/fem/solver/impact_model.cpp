@@ -29,7 +29,8 @@ constexpr double kExpectedDurationInContactTimes = 1.3;
 /// Sphere wave transits in the shortest separation window [-].
 constexpr double kWaveTransits = 4.0;
 /// Surface nodes within this many predicted contact radii of the axis are contact nodes for
-/// mass scaling (the contact radius stays within ~1.1 of the prediction) [-].
+/// mass scaling (the prediction is already the larger of the Hertz and plastic estimates,
+/// contact_estimate.hpp; 1.5 is margin; a slave beyond keeps a stable, maybe softer penalty) [-].
 constexpr double kScaledContactRadii = 1.5;
 
 BodyParams body_params(const Material& m, const SolverConfig& s) {
