@@ -29,6 +29,10 @@ double hertz_contact_radius(double overlap, double sphere_radius) {
   return std::sqrt(sphere_radius * std::max(overlap, 0.0));
 }
 
+double hertz_max_pressure(const HertzReference& hertz) {
+  return 1.5 * hertz.max_force / (std::numbers::pi * hertz.contact_radius * hertz.contact_radius);
+}
+
 HertzReference hertz_reference(double sphere_radius,
                                double effective_modulus,
                                double sphere_density,

@@ -153,8 +153,7 @@ ElementMasses element_masses(const ImpactModel& m) {
 /// Reference pressure of the mass-scaling bound [Pa]: the smaller of the Hertz p0 at the impact
 /// speed and the yield stresses (the stress scale the contact zone's inertia competes with).
 double reference_pressure(const ImpactConfig& config) {
-  const HertzReference h = hertz_reference(config);
-  double p = 1.5 * h.max_force / (units::kPi * h.contact_radius * h.contact_radius);
+  double p = hertz_max_pressure(hertz_reference(config));
   for (const auto& sy :
        {config.sphere.material.yield_stress, config.substrate.material.yield_stress}) {
     if (sy) p = std::min(p, *sy);
@@ -223,13 +222,12 @@ void set_masses(const ImpactConfig& config, ImpactModel& m) {
   m.mass.assign(m.n_nodes, 0.0);
   m.physical_mass.assign(m.n_nodes, 0.0);
   m.step_scale.assign(m.n_elements, 1.0);
-  m.added_mass = 0.0;
+  m.added_mass = added_mass(em, m.mass_scaling);
   m.dt_critical = std::numeric_limits<double>::infinity();
   for (int e = 0; e < m.n_elements; ++e) {
     for (int n : m.element_nodes[e]) m.physical_mass[n] += em.mass[e] / 4.0;
     const double s = element_step_scale(em, static_cast<std::size_t>(e), m.mass_scaling);
     m.step_scale[e] = s;
-    m.added_mass += (s * s - 1.0) * em.mass[e];
     for (int n : m.element_nodes[e]) m.mass[n] += s * s * em.mass[e] / 4.0;
     m.dt_critical = std::min(m.dt_critical, s * em.step[e]);
   }

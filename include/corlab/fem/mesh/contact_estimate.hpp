@@ -35,6 +35,9 @@ double hertz_contact_radius(double overlap, double sphere_radius);
 /// substrate (elastic constants only; its yield stress is ignored) at `config.impact.velocity`.
 HertzReference hertz_reference(const ImpactConfig& config);
 
+/// Hertz peak contact pressure p0 = 3 F_max / (2 pi a_max^2) [Pa] (Johnson 1985, eq. 4.23).
+double hertz_max_pressure(const HertzReference& hertz);
+
 /// Hertz reference from explicit values: R [m], E* [Pa], sphere density [kg/m^3], v [m/s].
 HertzReference hertz_reference(double sphere_radius,
                                double effective_modulus,
