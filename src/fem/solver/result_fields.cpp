@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "corlab/materials/material.hpp"
+#include "corlab/version.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -125,6 +126,10 @@ const std::array kFields{
     member<&R::mass_scaling>("mass_scaling", "-", "base step / the physical one (1 = none)", kBoth),
     member<&R::added_mass_fraction>(
         "added_mass_fraction", "-", "mass added by mass scaling / sphere mass", kBoth),
+    ResultField{"corlab_build", "-", "corlab version and git commit of the run (provenance)",
+                FieldKind::text,
+                [](const FieldInput&) -> FieldValue { return std::string(build_id()); }, kBoth,
+                true},
     derived("E_star",
             "Pa",
             "effective modulus (Ma et al. 2023 eq. 3)",

@@ -1,0 +1,74 @@
+#include "corlab/dataset/dataset_spec.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "corlab/core/number.hpp"
+#include "corlab/dataset/sobol_sequence.hpp"
+
+namespace corlab::dataset {
+namespace {
+
+std::string toml_value(const std::string& v) {
+  return parse_double(v) ? v : fmt::format("\"{}\"", v);
+}
+
+void append_settings(std::string& out, const study::Settings& settings) {
+  for (const auto& [key, value] : settings) {
+    out += fmt::format("\"{}\" = {}\n", key, toml_value(value));
+  }
+}
+
+}  // namespace
+
+std::vector<DesignPoint> design_points(const DatasetDesign& design) {
+  const auto u = sobol_points(kBoxDimension, design.points);
+  std::vector<DesignPoint> points;
+  points.reserve(u.size());
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    DesignPoint p{.index = i, .u = u[i], .point = box_point(design.box, u[i]), .settings = {}};
+    p.settings = point_settings(design.box, p.point);
+    points.push_back(std::move(p));
+  }
+  return points;
+}
+
+study::Settings dataset_base_settings(const ImpactBox& box) {
+  return {
+      {"substrate.E", fmt::format("{}", box.substrate_modulus)},
+      {"substrate.rho", fmt::format("{}", box.density)},
+      {"sphere.rho", fmt::format("{}", box.density)},
+      {"mesh.h_min", "0.00025"},
+      {"mesh.contact_elements", "12"},
+      // Just above first yield at k2 = 1e-3 the contact is ~0.1 mm wide and lasts ~20 ms:
+      // ~3e7 steps of 0.7 ns before mass scaling (docs/theory/dataset.md).
+      {"solver.max_steps", "100000000"},
+  };
+}
+
+std::string dataset_spec_toml(const DatasetDesign& design, std::string_view command) {
+  const ImpactBox& box = design.box;
+  std::string out = fmt::format(
+      "# corlab FE restitution dataset: design (docs/theory/dataset.md). Written by\n"
+      "#   {}\n"
+      "# Do not edit: a test checks that the command writes this file. One [[cases]] per Sobol\n"
+      "# point of the box k2 in [{}, {}], v/v_y in [{}, min({} m/s, damage number {})],\n"
+      "# E_sphere/E_substrate in [{}, {}], sphere elastic or sigma_y ratio in [{}, {}],\n"
+      "# nu in [{}, {}], H/E in [{}, {}].\n"
+      "[study]\nname = \"{}\"\ndescription = \"FE restitution dataset: {} Sobol points of the "
+      "dimensionless box\"\nmax_runs = {}\n\n[base]\n",
+      command, box.k2.min, box.k2.max, box.velocity_ratio_min, box.velocity_max,
+      box.damage_number_max, box.modulus_ratio.min, box.modulus_ratio.max,
+      box.sphere_yield_ratio.min, box.sphere_yield_ratio.max, box.nu.min, box.nu.max,
+      box.hardening_ratio.min, box.hardening_ratio.max, design.name, design.points,
+      std::max<std::size_t>(design.points, 1));
+  append_settings(out, dataset_base_settings(box));
+  for (const DesignPoint& p : design_points(design)) {
+    out += fmt::format("\n[[cases]]  # design point {}\n", p.index);
+    append_settings(out, p.settings);
+  }
+  return out;
+}
+
+}  // namespace corlab::dataset

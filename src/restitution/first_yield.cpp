@@ -1,0 +1,30 @@
+#include "corlab/restitution/first_yield.hpp"
+
+#include <limits>
+
+#include "corlab/restitution/jackson_green2005.hpp"
+#include "corlab/restitution/thornton1997.hpp"
+
+namespace corlab::restitution {
+namespace {
+
+// Hertz peak pressure at which `body` first yields; infinite for an elastic body [Pa].
+double yield_pressure(const Material& body) {
+  if (!body.yield_stress) return std::numeric_limits<double>::infinity();
+  return jackson_green_c(body.poisson_ratio) * *body.yield_stress;
+}
+
+}  // namespace
+
+FirstYield first_yield(const Material& sphere, const Material& substrate) {
+  const double p_sphere = yield_pressure(sphere);
+  const double p_substrate = yield_pressure(substrate);
+  FirstYield y;
+  y.sphere_first = p_sphere < p_substrate;
+  y.pressure = y.sphere_first ? p_sphere : p_substrate;
+  y.velocity =
+      thornton_yield_velocity(y.pressure, effective_modulus(sphere, substrate), sphere.density);
+  return y;
+}
+
+}  // namespace corlab::restitution
