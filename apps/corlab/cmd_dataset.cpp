@@ -1,9 +1,11 @@
-// `corlab dataset design`: write the FE restitution dataset's design as a `corlab sweep` spec
-// (docs/theory/dataset.md). Run it with `corlab sweep SPEC --out DIR --error-estimate`.
+// `corlab dataset`: the FE restitution dataset (docs/theory/dataset.md). `design` writes its
+// Sobol design as a `corlab sweep` spec; `export` turns the sweep's results into data/.
 //
 // Sample runs:
 //   corlab dataset design --out studies/dataset/fe_restitution.toml
 //   corlab dataset design --points 64            # the spec on stdout
+//   corlab sweep studies/dataset/fe_restitution.toml --out out/dataset --error-estimate
+//   corlab dataset export out/dataset --out data/fe_restitution
 #include <fmt/core.h>
 
 #include <filesystem>
@@ -12,6 +14,7 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/dataset/dataset_export.hpp"
 #include "corlab/dataset/dataset_spec.hpp"
 
 namespace corlab::cli {
@@ -43,8 +46,23 @@ int run_design(const DesignArgs& args) {
   return 0;
 }
 
+struct ExportArgs {
+  std::string sweep_dir;
+  std::string out = "data/fe_restitution";
+};
+
+int run_export(const ExportArgs& args) {
+  const dataset::ExportSummary s = dataset::export_dataset(args.sweep_dir, args.out);
+  fmt::print("corlab: dataset {}: {} of {} design points run, {} in the fitting set", args.out,
+             s.rows, s.design_points, s.included);
+  for (const auto& [reason, count] : s.excluded) fmt::print(", {} excluded ({})", count, reason);
+  fmt::print("; {:.0f} CPU-s; e_error/e median {:.2g}, max {:.2g}\n", s.cpu_s, s.e_error_median,
+             s.e_error_max);
+  return 0;
+}
+
 const CommandRegistration kRegistration{Command{
-    "dataset", "The FE restitution dataset: write its design as a sweep spec",
+    "dataset", "The FE restitution dataset: its design (a sweep spec) and its export to data/",
     [](CLI::App& sub) -> std::function<int()> {
       sub.require_subcommand(1);
       auto* design = sub.add_subcommand(
@@ -53,7 +71,15 @@ const CommandRegistration kRegistration{Command{
       design->add_option("--points", a->points, "Sobol points 0 .. N-1 (2^m: stratified)")
           ->capture_default_str();
       design->add_option("--out", a->out, "spec file to write (default: stdout)");
-      return [a]() { return run_design(*a); };
+      auto* exporter = sub.add_subcommand(
+          "export",
+          "Write data/ (dataset.csv, columns.json, configs.jsonl, summary.json) from a "
+          "dataset sweep's results");
+      auto x = std::make_shared<ExportArgs>();
+      exporter->add_option("SWEEP_DIR", x->sweep_dir, "the sweep's --out (results.csv, spec.toml)")
+          ->required();
+      exporter->add_option("--out", x->out, "dataset directory")->capture_default_str();
+      return [a, x, design]() { return design->parsed() ? run_design(*a) : run_export(*x); };
     },
     75}};
 

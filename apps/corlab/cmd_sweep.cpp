@@ -18,6 +18,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/core/interrupt.hpp"
 #include "corlab/fem/solver/discretisation_error.hpp"
+#include "corlab/fem/solver/run_cost.hpp"
 #include "corlab/study/progress.hpp"
 #include "corlab/study/sweep.hpp"
 #include "corlab/study/sweep_spec.hpp"
@@ -32,16 +33,27 @@ struct SweepArgs {
   bool quiet = false;
   bool dry_run = false;
   bool error_estimate = false;
+  bool in_order = false;
+  std::string only;
+  bool estimate = false;
 };
 
-int list_cases(const study::SweepSpec& spec) {
+// The dry run's list: case id, swept values and, with `estimate`, the estimated cost.
+int list_cases(const study::SweepSpec& spec, bool estimate) {
   const auto cases = spec.expand();
   const auto keys = spec.swept_keys();
   fmt::print("case_id");
+  if (estimate) fmt::print("  element_steps");
   for (const auto& key : keys) fmt::print("  {}", key);
   fmt::print("\n");
+  double total = 0.0;
   for (const auto& run : cases) {
     fmt::print("{}", run.id);
+    if (estimate) {
+      const double cost = fem::estimate_run_cost(run.config).element_steps();
+      total += cost;
+      fmt::print("  {:.4g}", cost);
+    }
     for (const auto& key : keys) {
       std::string value;
       for (const auto& [k, v] : run.settings) {
@@ -53,6 +65,7 @@ int list_cases(const study::SweepSpec& spec) {
   }
   std::fprintf(stderr, "corlab: sweep %s: %zu cases (dry run, nothing was run)\n",
                spec.name.c_str(), cases.size());
+  if (estimate) std::fprintf(stderr, "corlab: estimated cost %.4g element-steps\n", total);
   return 0;
 }
 
@@ -68,7 +81,7 @@ study::SweepSpec load_spec(const std::string& file) {
 
 int run(const SweepArgs& args) {
   const study::SweepSpec spec = load_spec(args.spec);
-  if (args.dry_run) return list_cases(spec);
+  if (args.dry_run) return list_cases(spec, args.estimate);
   if (args.out.empty()) {
     throw_invalid("--out", args.out, "given (the directory for results.csv)");
   }
@@ -76,6 +89,10 @@ int run(const SweepArgs& args) {
   study::SweepOptions options;
   options.jobs = args.jobs;
   options.progress = !args.quiet;
+  options.spec_order = args.in_order;
+  if (!args.only.empty()) {
+    options.only = study::parse_case_selection(args.only, spec.run_count(), "--only");
+  }
   // Ctrl-C, SIGTERM or SIGHUP: stop after the running cases (their rows are written); a second
   // signal stops at once (finished rows are on disk).
   const InterruptScope interrupt;
@@ -130,6 +147,14 @@ const CommandRegistration kRegistration{Command{
                      "cases at a time per process (0 = all cores; under mpirun 1 per rank)");
       sub.add_flag("--quiet,-q", args->quiet, "no progress bar");
       sub.add_flag("--dry-run", args->dry_run, "list the expanded cases and exit");
+      sub.add_flag("--in-order", args->in_order,
+                   "run the cases in the spec's order (default: longest first); for designs "
+                   "whose every prefix is balanced");
+      sub.add_option("--only", args->only,
+                     "only these cases: indices in the spec's order and ranges, e.g. 0-99,512");
+      sub.add_flag("--estimate", args->estimate,
+                   "with --dry-run: each case's estimated cost (elements x expected steps, "
+                   "before subcycling and mass scaling)");
       sub.add_flag("--error-estimate", args->error_estimate,
                    "also run each case at 2h for its error bar (e_error, e_coarse columns)");
       return [args] { return run(*args); };

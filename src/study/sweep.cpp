@@ -6,9 +6,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -133,11 +135,24 @@ std::optional<std::size_t> CaseQueue::next() {
   return pending_[next_++];
 }
 
-Plan make_plan(const SweepSpec& spec) {
+Plan make_plan(const SweepSpec& spec, const SweepOptions& options) {
   Plan plan;
   plan.cases = spec.expand();
   plan.swept_keys = spec.swept_keys();
   plan.header = results_header(plan.swept_keys);
+  plan.spec_order = options.spec_order;
+  for (const std::size_t i : options.only) {
+    if (i >= plan.cases.size()) {
+      throw_invalid("case index", static_cast<double>(i),
+                    fmt::format("< {} (the spec's runs)", plan.cases.size()));
+    }
+  }
+  if (options.only.empty()) {
+    plan.selected.resize(plan.cases.size());
+    std::iota(plan.selected.begin(), plan.selected.end(), std::size_t{0});
+  } else {
+    plan.selected = options.only;
+  }
   return plan;
 }
 
@@ -182,14 +197,14 @@ void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir,
   }
   plan.pending.clear();
   plan.already_done = 0;
-  for (std::size_t i = 0; i < plan.cases.size(); ++i) {
+  for (const std::size_t i : plan.selected) {
     if (existing.status.count(plan.cases[i].id) != 0) {
       ++plan.already_done;
     } else {
       plan.pending.push_back(i);
     }
   }
-  longest_first(plan);
+  if (!plan.spec_order) longest_first(plan);
 }
 
 void longest_first(Plan& plan) {
@@ -226,7 +241,7 @@ DirectoryLock::~DirectoryLock() {
 
 Recorder::Recorder(const std::filesystem::path& csv, const Plan& plan, int workers, bool progress)
     : appender_(csv, plan.header),
-      total_(static_cast<int>(plan.cases.size())),
+      total_(static_cast<int>(plan.selected.size())),
       already_done_(plan.already_done),
       workers_(workers) {
   if (progress) {
@@ -296,7 +311,7 @@ SweepSummary run_sweep(const SweepSpec& spec,
   }
 
   const auto start = Clock::now();
-  detail::Plan plan = detail::make_plan(spec);
+  detail::Plan plan = detail::make_plan(spec, options);
   detail::ensure_directory(out_dir);
   const detail::DirectoryLock lock(out_dir);
   detail::prepare_output(spec, out_dir, plan);
@@ -323,6 +338,36 @@ SweepSummary run_sweep(const SweepSpec& spec,
   recorder.finish();
   return recorder.summary(std::chrono::duration<double>(Clock::now() - start).count(),
                           cancel->load());
+}
+
+std::vector<std::size_t> parse_case_selection(std::string_view text,
+                                              std::size_t runs,
+                                              std::string_view field) {
+  std::vector<std::size_t> out;
+  std::set<std::size_t> seen;
+  const std::string constraint = fmt::format(
+      "comma-separated case indices or ranges a-b, each in [0, {}] (the spec's runs)", runs - 1);
+  auto index = [&](std::string_view token) {
+    const auto v = parse_double(token);
+    if (!v || *v < 0.0 || *v != std::floor(*v) || *v >= static_cast<double>(runs)) {
+      throw_invalid(field, text, constraint);
+    }
+    return static_cast<std::size_t>(*v);
+  };
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    const std::string_view token = text.substr(begin, end - begin);
+    const std::size_t dash = token.find('-');
+    const std::size_t lo = index(token.substr(0, dash));
+    const std::size_t hi = dash == std::string_view::npos ? lo : index(token.substr(dash + 1));
+    if (hi < lo) throw_invalid(field, text, constraint);
+    for (std::size_t i = lo; i <= hi; ++i) {
+      if (seen.insert(i).second) out.push_back(i);
+    }
+    begin = end + 1;
+  }
+  return out;
 }
 
 }  // namespace corlab::study

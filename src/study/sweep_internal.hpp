@@ -61,10 +61,12 @@ struct Plan {
   std::vector<std::string> header;
   std::vector<std::size_t> pending;
   int already_done = 0;
+  std::vector<std::size_t> selected;  ///< the cases this sweep runs (SweepOptions::only or all)
+  bool spec_order = false;            ///< SweepOptions::spec_order
 };
 
-/// Expands the spec (every process).
-Plan make_plan(const SweepSpec& spec);
+/// Expands the spec (every process) and applies the options' case selection and order.
+Plan make_plan(const SweepSpec& spec, const SweepOptions& options);
 /// Orders plan.pending by decreasing estimated cost (fem::estimate_run_cost), so that a sweep
 /// does not end waiting for one long run (longest-processing-time-first scheduling).
 void longest_first(Plan& plan);

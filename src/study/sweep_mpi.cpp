@@ -229,7 +229,7 @@ SweepSummary run_sweep_mpi(const SweepSpec& spec,
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   const int jobs = options.jobs > 0 ? options.jobs : 1;  // one run per rank by default
 
-  Plan plan = make_plan(spec);
+  Plan plan = make_plan(spec, options);
   // Every rank must have expanded the same cases (same spec file on every node).
   std::string ids;
   for (const auto& c : plan.cases) ids += c.id;

@@ -8,6 +8,8 @@
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <string_view>
+#include <vector>
 
 #include "corlab/fem/solver/impact_result.hpp"
 #include "corlab/fem/solver/simulate.hpp"
@@ -27,7 +29,20 @@ struct SweepOptions {
   CaseRunner runner;     ///< empty = fem::simulate (the production path)
   /// When it turns true: no new case starts, running ones are cancelled, finished rows are kept.
   const std::atomic<bool>* cancel = nullptr;
+  /// Run the pending cases in the spec's order instead of longest first: for a space-filling
+  /// design (Sobol) finished over several sessions, whose every prefix is balanced.
+  bool spec_order = false;
+  /// Only these cases (indices in the spec's order, 0-based); empty = all. The summary's total
+  /// counts them only. To rerun some rows of a study (e.g. a subset of a dataset).
+  std::vector<std::size_t> only;
 };
+
+/// Parses a case selection: comma-separated indices and inclusive ranges ("0-99,512,1000-1023")
+/// of a spec with `runs` cases. Throws InputError naming `field` for a bad token or an index out
+/// of range.
+std::vector<std::size_t> parse_case_selection(std::string_view text,
+                                              std::size_t runs,
+                                              std::string_view field);
 
 struct SweepSummary {
   int total = 0;             ///< cases in the spec

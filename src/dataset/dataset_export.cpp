@@ -1,0 +1,239 @@
+#include "corlab/dataset/dataset_export.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
+#include "corlab/dataset/impact_box.hpp"
+#include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/output/impact_output.hpp"
+#include "corlab/fem/solver/result_fields.hpp"
+#include "corlab/study/sweep_spec.hpp"
+
+namespace corlab::dataset {
+namespace {
+
+using fem::FieldKind;
+using fem::FieldValue;
+using nlohmann::json;
+
+/// A column computed from a run's dimensionless inputs.
+struct InputColumn {
+  std::string_view name;
+  std::string_view unit;
+  FieldKind kind;
+  std::string_view description;
+  FieldValue (*value)(const DimensionlessInputs&);
+};
+
+// The dataset's input columns (one place: dataset.csv, columns.json and the datasheet's list).
+const std::array<InputColumn, 13> kInputColumns{{
+    {"k1", "-", FieldKind::real, "E* / (rho_sphere v^2) (Ma et al. 2023 eq. 5)",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.k1; }},
+    {"k2", "-", FieldKind::real, "sigma_y,substrate / E* (Ma et al. 2023 eq. 6)",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.k2; }},
+    {"velocity_ratio", "-", FieldKind::real, "v / v_y, v_y the pair's first-yield speed",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.velocity_ratio; }},
+    {"first_yield_velocity", "m/s", FieldKind::real,
+     "v_y: Hertz p0 = C(nu) sigma_y in the weaker body (restitution/first_yield.hpp)",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.first_yield_velocity; }},
+    {"sphere_yields_first", "-", FieldKind::boolean, "the sphere reaches first yield first",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.sphere_yields_first; }},
+    {"modulus_ratio", "-", FieldKind::real, "E_sphere / E_substrate",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.modulus_ratio; }},
+    {"sphere_yield_ratio", "-", FieldKind::real,
+     "sigma_y,sphere / sigma_y,substrate (inf: elastic sphere)",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.sphere_yield_ratio; }},
+    {"nu_sphere", "-", FieldKind::real, "Poisson's ratio of the sphere",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.nu_sphere; }},
+    {"nu_substrate", "-", FieldKind::real, "Poisson's ratio of the substrate",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.nu_substrate; }},
+    {"hardening_ratio_sphere", "-", FieldKind::real, "H / E of the sphere (0 if elastic)",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.hardening_ratio_sphere; }},
+    {"hardening_ratio_substrate", "-", FieldKind::real, "H / E of the substrate",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.hardening_ratio_substrate; }},
+    {"density_ratio", "-", FieldKind::real, "rho_sphere / rho_substrate",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.density_ratio; }},
+    {"damage_number", "-", FieldKind::real,
+     "Johnson's damage number rho_sphere v^2 / sigma_y,substrate",
+     [](const DimensionlessInputs& d) -> FieldValue { return d.damage_number; }},
+}};
+
+std::string_view kind_name(FieldKind k) {
+  switch (k) {
+    case FieldKind::real:
+      return "real";
+    case FieldKind::integer:
+      return "integer";
+    case FieldKind::boolean:
+      return "boolean";
+    case FieldKind::text:
+      return "text";
+  }
+  return "text";
+}
+
+json column(std::string_view name, std::string_view unit, FieldKind kind, std::string_view doc) {
+  return json{{"name", name}, {"unit", unit}, {"kind", kind_name(kind)}, {"description", doc}};
+}
+
+/// columns.json entries of the columns before the inputs, of the inputs, of the swept keys.
+json leading_columns() {
+  json out = json::array();
+  out.push_back(column("design_index", "-", FieldKind::integer,
+                       "index of the Sobol point (studies/dataset/fe_restitution.toml)"));
+  out.push_back(column("case_id", "-", FieldKind::text, "the sweep's case id (hash of settings)"));
+  out.push_back(column("status", "-", FieldKind::text,
+                       "ok (a clean rebound), a run status or failed (docs/user/sweeps.md)"));
+  out.push_back(column("included", "-", FieldKind::boolean, "in the fitting set"));
+  out.push_back(column("exclusion_reason", "-", FieldKind::text,
+                       "why not (empty if included): status, no e, energy balance > 0.5 %, "
+                       "hourglass energy, penetration"));
+  for (const auto& c : kInputColumns) out.push_back(column(c.name, c.unit, c.kind, c.description));
+  return out;
+}
+
+json swept_key_column(const std::string& key) {
+  const fem::ConfigKeyInfo* info = fem::find_config_key(key);
+  std::string unit = info ? std::string(info->unit) : "";
+  if (unit.size() >= 2 && unit.front() == '[') unit = unit.substr(1, unit.size() - 2);
+  return column(key, unit, FieldKind::real,
+                fmt::format("input setting {} ({})", key, info ? info->doc : "impact config key"));
+}
+
+json result_column(const std::string& name) {
+  if (const fem::ResultField* f = fem::find_result_field(name)) {
+    return column(name, f->unit, f->kind, f->description);
+  }
+  return column(name, "-", FieldKind::text, "one-line message of a failed run");  // `error`
+}
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  if (!out) throw_invalid("dataset output", file.string(), "a writable file");
+  out << text;
+}
+
+/// The first words of a reason (numbers cut), to count reasons of one kind together.
+std::string reason_kind(const std::string& reason) {
+  const auto cut = reason.find_first_of("0123456789");
+  std::string kind = reason.substr(0, cut);
+  while (!kind.empty() && (kind.back() == ' ' || kind.back() == '=')) kind.pop_back();
+  return kind;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+std::string exclusion_reason(const study::ResultsTable& results,
+                             std::size_t row,
+                             const InclusionLimits& limits) {
+  const std::string& status = results.cell(row, "status");
+  if (status != study::kStatusOk) return fmt::format("status {}", status);
+  const auto e = parse_double(results.cell(row, "e"));
+  if (!e || !std::isfinite(*e) || *e <= 0.0 || *e > 1.0) {
+    return fmt::format("e = {} not in (0, 1]", results.cell(row, "e"));
+  }
+  const auto balance = parse_double(results.cell(row, "energy_balance_error"));
+  if (!balance || !(*balance <= limits.energy_balance)) {
+    return fmt::format("energy balance error {} > {}", results.cell(row, "energy_balance_error"),
+                       limits.energy_balance);
+  }
+  return results.cell(row, "suspect");
+}
+
+ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
+                             const std::filesystem::path& out_dir,
+                             const InclusionLimits& limits) {
+  const study::SweepSpec spec = study::load_sweep_spec(sweep_dir / "spec.toml");
+  const std::vector<study::SweepCase> runs = spec.expand();
+  const study::ResultsTable results = study::read_results(sweep_dir / "results.csv");
+  std::map<std::string, std::size_t> row_of;
+  for (std::size_t r = 0; r < results.size(); ++r) {
+    const std::string& id = results.cell(r, "case_id");
+    if (std::none_of(runs.begin(), runs.end(), [&](const auto& c) { return c.id == id; })) {
+      throw_invalid("case_id", id,
+                    fmt::format("a case of {} (results of another spec?)",
+                                (sweep_dir / "spec.toml").string()));
+    }
+    row_of[id] = r;
+  }
+  // Columns: leading, inputs, then the results.csv columns after case_id and status.
+  json columns = leading_columns();
+  std::vector<std::string> copied;
+  const std::vector<std::string> swept = spec.swept_keys();
+  for (const auto& name : results.columns()) {
+    if (name == "case_id" || name == "status") continue;
+    copied.push_back(name);
+    const bool is_key = std::find(swept.begin(), swept.end(), name) != swept.end();
+    columns.push_back(is_key ? swept_key_column(name) : result_column(name));
+  }
+  std::vector<std::string> header;
+  for (const auto& c : columns) header.push_back(c["name"].get<std::string>());
+
+  std::filesystem::create_directories(out_dir);
+  ExportSummary summary;
+  summary.design_points = runs.size();
+  std::string csv = study::csv_line(header) + "\n";
+  std::string configs;
+  std::vector<double> rel_errors;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto it = row_of.find(runs[i].id);
+    if (it == row_of.end()) continue;
+    const std::size_t r = it->second;
+    const std::string reason = exclusion_reason(results, r, limits);
+    std::vector<std::string> fields{std::to_string(i), runs[i].id, results.cell(r, "status"),
+                                    reason.empty() ? "true" : "false", reason};
+    const DimensionlessInputs d = dimensionless_inputs(runs[i].config);
+    for (const auto& c : kInputColumns) fields.push_back(fem::field_text(c.value(d)));
+    for (const auto& name : copied) fields.push_back(results.cell(r, name));
+    csv += study::csv_line(fields) + "\n";
+    json line{{"case_id", runs[i].id},
+              {"design_index", i},
+              {"config", fem::config_to_json(runs[i].config)}};
+    configs += line.dump() + "\n";
+    ++summary.rows;
+    summary.cpu_s += parse_double(results.cell(r, "wall_s")).value_or(0.0);
+    summary.builds.insert(results.has_column("corlab_build") ? results.cell(r, "corlab_build")
+                                                             : "unknown (before corlab_build)");
+    if (reason.empty()) {
+      ++summary.included;
+      const double e = *parse_double(results.cell(r, "e"));
+      const auto err = parse_double(results.cell(r, "e_error"));
+      if (err && std::isfinite(*err)) rel_errors.push_back(*err / e);
+    } else {
+      ++summary.excluded[reason_kind(reason)];
+    }
+  }
+  summary.e_error_max =
+      rel_errors.empty() ? std::nan("") : *std::max_element(rel_errors.begin(), rel_errors.end());
+  summary.e_error_median = median(rel_errors);
+  write_text(out_dir / "dataset.csv", csv);
+  write_text(out_dir / "columns.json", columns.dump(2) + "\n");
+  write_text(out_dir / "configs.jsonl", configs);
+  json s{{"design_points", summary.design_points},
+         {"rows", summary.rows},
+         {"included", summary.included},
+         {"excluded", summary.excluded},
+         {"cpu_s", summary.cpu_s},
+         {"e_error_relative_max", summary.e_error_max},
+         {"e_error_relative_median", summary.e_error_median},
+         {"builds", summary.builds},
+         {"energy_balance_limit", limits.energy_balance}};
+  write_text(out_dir / "summary.json", s.dump(2) + "\n");
+  return summary;
+}
+
+}  // namespace corlab::dataset
