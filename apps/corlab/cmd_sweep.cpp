@@ -39,8 +39,13 @@ struct SweepArgs {
 };
 
 // The dry run's list: case id, swept values and, with `estimate`, the estimated cost.
-int list_cases(const study::SweepSpec& spec, bool estimate) {
-  const auto cases = spec.expand();
+int list_cases(const study::SweepSpec& spec, const std::vector<std::size_t>& only, bool estimate) {
+  std::vector<study::SweepCase> cases = spec.expand();
+  if (!only.empty()) {
+    std::vector<study::SweepCase> selected;
+    for (const std::size_t i : only) selected.push_back(cases[i]);
+    cases = std::move(selected);
+  }
   const auto keys = spec.swept_keys();
   fmt::print("case_id");
   if (estimate) fmt::print("  element_steps");
@@ -81,7 +86,10 @@ study::SweepSpec load_spec(const std::string& file) {
 
 int run(const SweepArgs& args) {
   const study::SweepSpec spec = load_spec(args.spec);
-  if (args.dry_run) return list_cases(spec, args.estimate);
+  const std::vector<std::size_t> only =
+      args.only.empty() ? std::vector<std::size_t>{}
+                        : study::parse_case_selection(args.only, spec.run_count(), "--only");
+  if (args.dry_run) return list_cases(spec, only, args.estimate);
   if (args.out.empty()) {
     throw_invalid("--out", args.out, "given (the directory for results.csv)");
   }
@@ -90,9 +98,7 @@ int run(const SweepArgs& args) {
   options.jobs = args.jobs;
   options.progress = !args.quiet;
   options.spec_order = args.in_order;
-  if (!args.only.empty()) {
-    options.only = study::parse_case_selection(args.only, spec.run_count(), "--only");
-  }
+  options.only = only;
   // Ctrl-C, SIGTERM or SIGHUP: stop after the running cases (their rows are written); a second
   // signal stops at once (finished rows are on disk).
   const InterruptScope interrupt;

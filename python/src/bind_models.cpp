@@ -68,6 +68,17 @@ py::dict info_dict(const restitution::ModelInfo& info) {
   d["status"] = std::string(restitution::to_string(info.status));
   d["status_note"] = info.status_note;
   d["clamped_by_default"] = info.clamped_by_default;
+  if (info.calibrated) {
+    const auto& b = *info.calibrated;
+    py::dict box;
+    box["k1_min"] = b.k1_min;
+    box["k1_max"] = b.k1_max;
+    box["k2_min"] = b.k2_min;
+    box["k2_max"] = b.k2_max;
+    d["calibrated"] = box;
+  } else {
+    d["calibrated"] = py::none();
+  }
   return d;
 }
 
@@ -82,7 +93,8 @@ void bind_models(py::module_& m) {
         return out;
       },
       "List of dicts (name, title, citation, equation, validity, status, status_note, "
-      "clamped_by_default) of every analytic CoR model. status is 'verified-paper', "
+      "clamped_by_default, calibrated: the (k1, k2) calibration box {k1_min, k1_max, k2_min, "
+      "k2_max} or None) of every analytic CoR model. status is 'verified-paper', "
       "'verified-second-source' or 'unverified'.");
   m.def("model_names", &restitution::model_names, "Names of the analytic CoR models.");
   m.def(

@@ -6,12 +6,12 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/dataset/impact_box.hpp"
-#include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/output/impact_output.hpp"
 #include "corlab/fem/solver/result_fields.hpp"
 #include "corlab/study/sweep_spec.hpp"
@@ -23,47 +23,87 @@ using fem::FieldKind;
 using fem::FieldValue;
 using nlohmann::json;
 
-/// A column computed from a run's dimensionless inputs.
+/// What an input column is computed from: the run's config and its dimensionless inputs.
+struct RunInputs {
+  const fem::ImpactConfig& config;
+  const DimensionlessInputs& d;
+};
+
+/// A column computed from a run's inputs.
 struct InputColumn {
   std::string_view name;
   std::string_view unit;
   FieldKind kind;
   std::string_view description;
-  FieldValue (*value)(const DimensionlessInputs&);
+  FieldValue (*value)(const RunInputs&);
 };
 
+FieldValue yield_or_inf(const Material& m) {
+  return m.yield_stress ? *m.yield_stress : std::numeric_limits<double>::infinity();
+}
+
 // The dataset's input columns (one place: dataset.csv, columns.json and the datasheet's list).
-const std::array<InputColumn, 13> kInputColumns{{
+const std::array<InputColumn, 25> kInputColumns{{
     {"k1", "-", FieldKind::real, "E* / (rho_sphere v^2) (Ma et al. 2023 eq. 5)",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.k1; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.k1; }},
     {"k2", "-", FieldKind::real, "sigma_y,substrate / E* (Ma et al. 2023 eq. 6)",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.k2; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.k2; }},
     {"velocity_ratio", "-", FieldKind::real, "v / v_y, v_y the pair's first-yield speed",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.velocity_ratio; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.velocity_ratio; }},
     {"first_yield_velocity", "m/s", FieldKind::real,
      "v_y: Hertz p0 = C(nu) sigma_y in the weaker body (restitution/first_yield.hpp)",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.first_yield_velocity; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.first_yield_velocity; }},
     {"sphere_yields_first", "-", FieldKind::boolean, "the sphere reaches first yield first",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.sphere_yields_first; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.sphere_yields_first; }},
     {"modulus_ratio", "-", FieldKind::real, "E_sphere / E_substrate",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.modulus_ratio; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.modulus_ratio; }},
     {"sphere_yield_ratio", "-", FieldKind::real,
      "sigma_y,sphere / sigma_y,substrate (inf: elastic sphere)",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.sphere_yield_ratio; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.sphere_yield_ratio; }},
     {"nu_sphere", "-", FieldKind::real, "Poisson's ratio of the sphere",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.nu_sphere; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.nu_sphere; }},
     {"nu_substrate", "-", FieldKind::real, "Poisson's ratio of the substrate",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.nu_substrate; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.nu_substrate; }},
     {"hardening_ratio_sphere", "-", FieldKind::real, "H / E of the sphere (0 if elastic)",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.hardening_ratio_sphere; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.hardening_ratio_sphere; }},
     {"hardening_ratio_substrate", "-", FieldKind::real, "H / E of the substrate",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.hardening_ratio_substrate; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.hardening_ratio_substrate; }},
     {"density_ratio", "-", FieldKind::real, "rho_sphere / rho_substrate",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.density_ratio; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.density_ratio; }},
     {"damage_number", "-", FieldKind::real,
      "Johnson's damage number rho_sphere v^2 / sigma_y,substrate",
-     [](const DimensionlessInputs& d) -> FieldValue { return d.damage_number; }},
+     [](const RunInputs& in) -> FieldValue { return in.d.damage_number; }},
+    // The dimensional inputs, every one (a row is self-contained without configs.jsonl).
+    {"sphere_E", "Pa", FieldKind::real, "Young's modulus of the sphere",
+     [](const RunInputs& in) -> FieldValue { return in.config.sphere.material.youngs_modulus; }},
+    {"sphere_nu", "-", FieldKind::real, "Poisson's ratio of the sphere",
+     [](const RunInputs& in) -> FieldValue { return in.config.sphere.material.poisson_ratio; }},
+    {"sphere_rho", "kg/m^3", FieldKind::real, "density of the sphere",
+     [](const RunInputs& in) -> FieldValue { return in.config.sphere.material.density; }},
+    {"sphere_sigma_y", "Pa", FieldKind::real, "yield stress of the sphere (inf: elastic)",
+     [](const RunInputs& in) -> FieldValue { return yield_or_inf(in.config.sphere.material); }},
+    {"sphere_H", "Pa", FieldKind::real, "linear hardening modulus of the sphere",
+     [](const RunInputs& in) -> FieldValue { return in.config.sphere.material.hardening_modulus; }},
+    {"substrate_E", "Pa", FieldKind::real, "Young's modulus of the substrate",
+     [](const RunInputs& in) -> FieldValue { return in.config.substrate.material.youngs_modulus; }},
+    {"substrate_nu", "-", FieldKind::real, "Poisson's ratio of the substrate",
+     [](const RunInputs& in) -> FieldValue { return in.config.substrate.material.poisson_ratio; }},
+    {"substrate_rho", "kg/m^3", FieldKind::real, "density of the substrate",
+     [](const RunInputs& in) -> FieldValue { return in.config.substrate.material.density; }},
+    {"substrate_sigma_y", "Pa", FieldKind::real, "yield stress of the substrate",
+     [](const RunInputs& in) -> FieldValue { return yield_or_inf(in.config.substrate.material); }},
+    {"substrate_H", "Pa", FieldKind::real, "linear hardening modulus of the substrate",
+     [](const RunInputs& in) -> FieldValue {
+       return in.config.substrate.material.hardening_modulus;
+     }},
+    {"sphere_radius", "m", FieldKind::real, "sphere radius R",
+     [](const RunInputs& in) -> FieldValue { return in.config.sphere.radius; }},
+    {"velocity", "m/s", FieldKind::real, "impact speed v",
+     [](const RunInputs& in) -> FieldValue { return in.config.impact.velocity; }},
 }};
+
+// Result columns that repeat an input column under another name.
+constexpr std::array<std::string_view, 1> kRepeatedInputs{"sigma_y"};
 
 std::string_view kind_name(FieldKind k) {
   switch (k) {
@@ -97,14 +137,6 @@ json leading_columns() {
                        "hourglass energy, penetration"));
   for (const auto& c : kInputColumns) out.push_back(column(c.name, c.unit, c.kind, c.description));
   return out;
-}
-
-json swept_key_column(const std::string& key) {
-  const fem::ConfigKeyInfo* info = fem::find_config_key(key);
-  std::string unit = info ? std::string(info->unit) : "";
-  if (unit.size() >= 2 && unit.front() == '[') unit = unit.substr(1, unit.size() - 2);
-  return column(key, unit, FieldKind::real,
-                fmt::format("input setting {} ({})", key, info ? info->doc : "impact config key"));
 }
 
 json result_column(const std::string& name) {
@@ -170,15 +202,20 @@ ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
     }
     row_of[id] = r;
   }
-  // Columns: leading, inputs, then the results.csv columns after case_id and status.
+  // Columns: leading, inputs, then the results.csv columns that are results (not case_id,
+  // status, the swept settings or a repeated input).
   json columns = leading_columns();
   std::vector<std::string> copied;
   const std::vector<std::string> swept = spec.swept_keys();
   for (const auto& name : results.columns()) {
-    if (name == "case_id" || name == "status") continue;
-    copied.push_back(name);
+    const bool is_input =
+        std::any_of(kInputColumns.begin(), kInputColumns.end(),
+                    [&name](const InputColumn& c) { return c.name == name; }) ||
+        std::find(kRepeatedInputs.begin(), kRepeatedInputs.end(), name) != kRepeatedInputs.end();
     const bool is_key = std::find(swept.begin(), swept.end(), name) != swept.end();
-    columns.push_back(is_key ? swept_key_column(name) : result_column(name));
+    if (name == "case_id" || name == "status" || is_input || is_key) continue;
+    copied.push_back(name);
+    columns.push_back(result_column(name));
   }
   std::vector<std::string> header;
   for (const auto& c : columns) header.push_back(c["name"].get<std::string>());
@@ -197,7 +234,9 @@ ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
     std::vector<std::string> fields{std::to_string(i), runs[i].id, results.cell(r, "status"),
                                     reason.empty() ? "true" : "false", reason};
     const DimensionlessInputs d = dimensionless_inputs(runs[i].config);
-    for (const auto& c : kInputColumns) fields.push_back(fem::field_text(c.value(d)));
+    for (const auto& c : kInputColumns) {
+      fields.push_back(fem::field_text(c.value(RunInputs{runs[i].config, d})));
+    }
     for (const auto& name : copied) fields.push_back(results.cell(r, name));
     csv += study::csv_line(fields) + "\n";
     json line{{"case_id", runs[i].id},

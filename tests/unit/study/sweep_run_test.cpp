@@ -333,3 +333,66 @@ TEST(Progress, PlainLinesWhenNotATerminal) {
 
 }  // namespace
 }  // namespace corlab::study
+
+namespace corlab::study {
+namespace {
+
+TEST(Sweep, OnlyRunsTheSelectedCasesAndCountsThemAsTheTotal) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const fs::path out = fresh_dir("only");
+  FakeSolver solver;
+  SweepOptions options = quiet(solver, 1);
+  options.only = parse_case_selection("0,2-3,11", spec.run_count(), "--only");
+  const SweepSummary summary = run_sweep(spec, out, options);
+  EXPECT_EQ(summary.total, 4);
+  EXPECT_EQ(summary.ran, 4);
+  const auto runs = spec.expand();
+  std::set<std::string> expected{runs[0].id, runs[2].id, runs[3].id, runs[11].id};
+  const ResultsTable table = read_results(out / "results.csv");
+  EXPECT_EQ(std::set<std::string>(table.text("case_id").begin(), table.text("case_id").end()),
+            expected);
+  // The whole study afterwards runs the other 8 only.
+  FakeSolver rest;
+  const SweepSummary all = run_sweep(spec, out, quiet(rest, 1));
+  EXPECT_EQ(all.already_done, 4);
+  EXPECT_EQ(rest.calls.load(), 8);
+}
+
+TEST(Sweep, InOrderRunsTheSpecsOrderElseLongestFirst) {
+  const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
+  const auto runs = spec.expand();
+  for (const bool in_order : {true, false}) {
+    const fs::path out = fresh_dir(in_order ? "in_order" : "longest_first");
+    FakeSolver solver;
+    SweepOptions options = quiet(solver, 1);  // one worker: rows in the order run
+    options.spec_order = in_order;
+    run_sweep(spec, out, options);
+    const ResultsTable table = read_results(out / "results.csv");
+    const auto& ids = table.text("case_id");
+    ASSERT_EQ(ids.size(), runs.size());
+    std::vector<std::string> spec_ids;
+    for (const auto& r : runs) spec_ids.push_back(r.id);
+    // Longest first (estimate_run_cost) puts the slow 1 m/s runs before the spec's 5 m/s one.
+    if (in_order) {
+      EXPECT_EQ(ids, spec_ids);
+    } else {
+      EXPECT_NE(ids, spec_ids);
+    }
+  }
+}
+
+TEST(Sweep, CaseSelectionRejectsBadTokensAndIndicesOutOfRange) {
+  EXPECT_EQ(parse_case_selection("3,1-2,2", 10, "--only"), (std::vector<std::size_t>{3, 1, 2}));
+  for (const char* bad : {"", "1,", "a", "5-2", "10", "-1", "1.5", "0-10"}) {
+    try {
+      (void)parse_case_selection(bad, 10, "--only");
+      ADD_FAILURE() << bad;
+    } catch (const InputError& err) {
+      EXPECT_NE(std::string(err.what()).find("--only"), std::string::npos) << err.what();
+      EXPECT_NE(std::string(err.what()).find("[0, 9]"), std::string::npos) << err.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace corlab::study

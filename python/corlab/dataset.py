@@ -1,0 +1,112 @@
+"""The FE restitution dataset (data/fe_restitution/, docs/theory/dataset.md): reading it,
+its regimes, and scoring the registered CoR models against it.
+
+    from corlab import dataset
+    table = dataset.read("data/fe_restitution/dataset.csv")       # included rows only
+    scores = dataset.score_models(table)                          # every registered model
+
+All quantities SI; errors are relative to the FE value: (e_model - e_FE) / e_FE.
+"""
+import math
+import warnings
+
+import numpy as np
+
+from . import _core
+
+#: Regimes by v / v_y (first yield of the pair), upper bounds. Near yield the plastic zone is
+#: small and subsurface; by ~300 v_y (interference ~110 x the critical one, Jackson & Green
+#: 2005's fully plastic limit, with delta ~ v^(4/5)) the contact is fully plastic.
+REGIMES = (("near-yield", 3.0), ("elastic-plastic", 300.0), ("fully plastic", math.inf))
+
+#: Perfect plasticity for the analytic models' own box: H / E below this [-].
+PERFECTLY_PLASTIC = 0.005
+
+
+def read(path, included_only=True):
+    """dataset.csv as a dict of numpy arrays (numbers) and lists (text columns); with
+    `included_only`, the rows of the fitting set only."""
+    table = _core.read_results(str(path))
+    if included_only:
+        keep = np.array([flag == "true" for flag in table["included"]])
+        table = {k: (v[keep] if isinstance(v, np.ndarray) else [x for x, f in zip(v, keep) if f])
+                 for k, v in table.items()}
+    return table
+
+
+def regime(velocity_ratio):
+    """Regime names of v / v_y values (numpy array in, list out)."""
+    out = []
+    for x in np.atleast_1d(velocity_ratio):
+        out.append(next(name for name, upper in REGIMES if x <= upper))
+    return out
+
+
+def material_specs(table, i):
+    """The sphere and substrate of row i as corlab material specs."""
+    def spec(body):
+        text = (f"E={table[body + '_E'][i]!r},nu={table[body + '_nu'][i]!r},"
+                f"rho={table[body + '_rho'][i]!r}")
+        sy = table[body + "_sigma_y"][i]
+        if math.isfinite(sy):
+            text += f",sy={sy!r},H={table[body + '_H'][i]!r}"
+        return text
+    return spec("sphere"), spec("substrate")
+
+
+def predictions(table, model):
+    """e of `model` at every row (nan where the model cannot be evaluated)."""
+    out = np.full(len(table["e"]), np.nan)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # unverified models: scored all the same
+        for i in range(len(out)):
+            sphere, substrate = material_specs(table, i)
+            try:
+                out[i] = _core.predict(model, sphere, substrate, float(table["velocity"][i]))
+            except ValueError:
+                pass
+    return out
+
+
+def in_model_box(table, info):
+    """Rows inside a model's own validity: an elastic sphere, a perfectly plastic substrate
+    (H/E < PERFECTLY_PLASTIC) and, when the model has one, its calibration box in (k1, k2)."""
+    ok = ~np.isfinite(table["sphere_sigma_y"])
+    ok &= table["hardening_ratio_substrate"] < PERFECTLY_PLASTIC
+    box = info.get("calibrated")
+    if box:
+        ok &= (table["k1"] >= box["k1_min"]) & (table["k1"] <= box["k1_max"])
+        ok &= (table["k2"] >= box["k2_min"]) & (table["k2"] <= box["k2_max"])
+    return ok
+
+
+def error_stats(relative_errors):
+    """n, RMS, worst (largest magnitude, signed) and mean (bias) of relative errors."""
+    r = np.asarray(relative_errors, dtype=float)
+    r = r[np.isfinite(r)]
+    if r.size == 0:
+        return {"n": 0, "rms": math.nan, "worst": math.nan, "bias": math.nan}
+    return {"n": int(r.size), "rms": float(np.sqrt(np.mean(r * r))),
+            "worst": float(r[np.argmax(np.abs(r))]), "bias": float(np.mean(r))}
+
+
+def score(table, e_model, mask=None):
+    """Error statistics of predictions e_model against the FE e, overall and per regime."""
+    rel = (e_model - table["e"]) / table["e"]
+    mask = np.ones(rel.size, dtype=bool) if mask is None else mask
+    names = np.array(regime(table["velocity_ratio"]))
+    out = {"all": error_stats(rel[mask])}
+    for name, _ in REGIMES:
+        out[name] = error_stats(rel[mask & (names == name)])
+    return out
+
+
+def score_models(table, names=None):
+    """{model: {"all cases": score, "own box": score}} for the registered models (or `names`)."""
+    infos = {m["name"]: m for m in _core.models()}
+    out = {}
+    for name in names or list(infos):
+        e = predictions(table, name)
+        out[name] = {"all cases": score(table, e), "own box": score(table, e,
+                                                                    in_model_box(table, infos[name]))}
+    return out
