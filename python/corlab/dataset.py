@@ -107,6 +107,6 @@ def score_models(table, names=None):
     out = {}
     for name in names or list(infos):
         e = predictions(table, name)
-        out[name] = {"all cases": score(table, e), "own box": score(table, e,
-                                                                    in_model_box(table, infos[name]))}
+        own = in_model_box(table, infos[name])
+        out[name] = {"all cases": score(table, e), "own box": score(table, e, own)}
     return out
