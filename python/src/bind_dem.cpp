@@ -1,10 +1,13 @@
 // DEM hand-off (issue 11): corlab.dem.* - contact laws, exact chi(e), impact integration, exports.
+#include <fmt/format.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <string>
 
 #include "bindings.hpp"
@@ -84,7 +87,9 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     double v_min,
                     double v_max,
                     bool wall_only,
-                    int fit_points) {
+                    int fit_points,
+                    const std::optional<std::pair<std::vector<double>, std::vector<double>>>& table,
+                    const std::string& table_source) {
   dem::ExportSpec spec;
   for (const auto& [material, radius] : types) {
     spec.types.push_back({parse_material_spec(material, "type"), radius});
@@ -96,6 +101,24 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
   spec.v_max = v_max;
   spec.wall_only = wall_only;
   spec.fit_points = fit_points;
+  if (table) {
+    if (table->first.size() != table->second.size()) {
+      throw_invalid("table", static_cast<double>(table->second.size()),
+                    fmt::format("{} restitution values (one per velocity)", table->first.size()));
+    }
+    // Sorted by speed, as the CLI's --table (FE results rows come in finishing order).
+    std::vector<std::size_t> order(table->first.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return table->first[a] < table->first[b]; });
+    std::vector<double> v, e;
+    for (const std::size_t i : order) {
+      v.push_back(table->first[i]);
+      e.push_back(table->second[i]);
+    }
+    spec.table = dem::tabulated_curve(v, e);
+    spec.table_source = table_source.empty() ? "table given in Python" : table_source;
+  }
   const auto pairs = dem::calibrate_pairs(spec);
   py::dict out;
   out["lammps"] = dem::write_lammps(spec, pairs);
@@ -170,7 +193,11 @@ void bind_dem(py::module_& m) {
   d.def("export", &export_dem, py::arg("types"), py::arg("wall") = "",
         py::arg("restitution") = std::nullopt, py::arg("model") = "", py::arg("v_min") = 0.1,
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
-        "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables");
+        py::arg("table") = std::nullopt, py::arg("table_source") = "",
+        "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables. "
+        "table = (velocities [m/s], e [-]): an FE e(v) table instead of `restitution` or "
+        "`model` (e.g. t = corlab.read_results('results.csv'); table=(t['velocity'], t['e'])); "
+        "table_source names it in the exported files");
 }
 
 }  // namespace corlab::python

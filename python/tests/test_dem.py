@@ -57,6 +57,23 @@ def test_export_constant_e_writes_compensated_lammps_input():
     assert "coefficientRestitution" in out["liggghts"]
 
 
+def test_export_from_an_fe_table_matches_it_at_its_points():
+    # An FE e(v) table (rows unsorted, as a sweep writes them) instead of a model or constant.
+    velocities, e = [4.0, 0.5, 1.0], [0.55, 0.8, 0.7]
+    out = corlab.dem.export([("steel_ma2023", 0.004)], wall="steel_ma2023", wall_only=True,
+                            table=(velocities, e), table_source="my results.csv",
+                            v_min=0.5, v_max=4.0, fit_points=4)
+    assert "my results.csv" in out["json"]
+    rows = [line.split(",") for line in out["csv"].splitlines() if not line.startswith("#")]
+    header = rows[0]
+    v_col, e_col = header.index("velocity_m_s"), header.index("e_target")
+    table = {float(r[v_col]): float(r[e_col]) for r in rows[1:]}
+    for v, expected in zip(velocities, e):  # the table's end points and a node it passes
+        assert table[v] == pytest.approx(expected, rel=1e-7)
+    with pytest.raises(ValueError, match="table"):
+        corlab.dem.export([("steel_ma2023", 0.004)], wall="steel_ma2023", table=([1.0, 2.0], [0.9]))
+
+
 def test_bad_input_is_value_error():
     with pytest.raises(ValueError, match="restitution"):
         corlab.dem.exact_chi(1.5)
