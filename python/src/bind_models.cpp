@@ -7,7 +7,10 @@
 #include <variant>
 
 #include "bindings.hpp"
+#include "corlab/core/error.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/corlab2026.hpp"
+#include "corlab/restitution/impact_pair.hpp"
 #include "corlab/restitution/registry.hpp"
 #include "corlab/restitution/validity.hpp"
 
@@ -82,9 +85,85 @@ py::dict info_dict(const restitution::ModelInfo& info) {
   return d;
 }
 
+// The coefficient struct as a dict and back (names as in corlab2026.hpp).
+py::dict coefficients_dict(const restitution::Corlab2026Coefficients& k) {
+  py::dict d;
+  d["c1"] = k.c1;
+  d["phi_max"] = k.phi_max;
+  d["kappa"] = k.kappa;
+  d["b"] = k.b;
+  d["c"] = k.c;
+  d["gamma_sphere"] = k.gamma_sphere;
+  d["gamma_substrate"] = k.gamma_substrate;
+  return d;
+}
+
+restitution::Corlab2026Coefficients coefficients_from(const py::dict& d) {
+  auto get = [&d](const char* key) {
+    if (!d.contains(key)) throw_invalid("coefficients", key, "a key of the dict (missing)");
+    return d[key].cast<double>();
+  };
+  return {.c1 = get("c1"),
+          .phi_max = get("phi_max"),
+          .kappa = get("kappa"),
+          .b = get("b"),
+          .c = get("c"),
+          .gamma_sphere = get("gamma_sphere"),
+          .gamma_substrate = get("gamma_substrate")};
+}
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// corlab2026_restitution over arrays of inputs (the fit's inner loop).
+py::array_t<double> corlab2026_over(const py::dict& inputs, const py::dict& coefficients) {
+  const auto k = coefficients_from(coefficients);
+  const auto column = [&inputs](const char* key) { return inputs[key].cast<Array>(); };
+  const Array x = column("velocity_ratio"), xo = column("velocity_ratio_other");
+  const Array hw = column("hardening_first"), ho = column("hardening_other");
+  const Array dy = column("damage_at_yield"), sph = column("other_is_sphere");
+  py::array_t<double> out(x.size());
+  double* e = out.mutable_data();
+  for (py::ssize_t i = 0; i < x.size(); ++i) {
+    const restitution::Corlab2026Inputs in{.velocity_ratio = x.data()[i],
+                                           .velocity_ratio_other = xo.data()[i],
+                                           .hardening_first = hw.data()[i],
+                                           .hardening_other = ho.data()[i],
+                                           .damage_at_yield = dy.data()[i],
+                                           .other_is_sphere = sph.data()[i] != 0.0};
+    e[i] = restitution::corlab2026_restitution(in, k);
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_models(py::module_& m) {
+  m.def(
+      "corlab2026_inputs",
+      [](const MaterialArg& sphere, const MaterialArg& substrate, double v) {
+        restitution::require_velocity(v);
+        const auto in = restitution::corlab2026_inputs(to_material(sphere, "sphere"),
+                                                       to_material(substrate, "substrate"), v);
+        py::dict d;
+        d["velocity_ratio"] = in.velocity_ratio;
+        d["velocity_ratio_other"] = in.velocity_ratio_other;
+        d["hardening_first"] = in.hardening_first;
+        d["hardening_other"] = in.hardening_other;
+        d["damage_at_yield"] = in.damage_at_yield;
+        d["other_is_sphere"] = in.other_is_sphere ? 1.0 : 0.0;
+        return d;
+      },
+      py::arg("sphere"), py::arg("substrate"), py::arg("v"),
+      "The dimensionless inputs of corlab's model (corlab2026) for one impact at v [m/s]: "
+      "velocity_ratio, velocity_ratio_other, hardening_first, hardening_other, "
+      "damage_at_yield, other_is_sphere (1 or 0).");
+  m.def("corlab2026_restitution", &corlab2026_over, py::arg("inputs"), py::arg("coefficients"),
+        "e of corlab's model for inputs (a dict of equal-length arrays, keys of "
+        "corlab2026_inputs) and coefficients (a dict: c1, phi_max, kappa, b, c, gamma_sphere, "
+        "gamma_substrate); the fit's inner loop (python/corlab/model_fit.py).");
+  m.def(
+      "corlab2026_fitted", [] { return coefficients_dict(restitution::corlab2026_fitted()); },
+      "The shipped coefficients of corlab's model (data/fe_restitution/model_fit.json).");
   m.def(
       "models",
       [] {
@@ -95,7 +174,8 @@ void bind_models(py::module_& m) {
       "List of dicts (name, title, citation, equation, validity, status, status_note, "
       "clamped_by_default, calibrated: the (k1, k2) calibration box {k1_min, k1_max, k2_min, "
       "k2_max} or None) of every analytic CoR model. status is 'verified-paper', "
-      "'verified-second-source' or 'unverified'.");
+      "'verified-second-source', 'verified-dataset' (corlab's own model, scored on held-out FE "
+      "runs) or 'unverified'.");
   m.def("model_names", &restitution::model_names, "Names of the analytic CoR models.");
   m.def(
       "predict",

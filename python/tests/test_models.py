@@ -21,7 +21,8 @@ def test_models_lists_every_model_with_metadata():
                      "johnson1985"):
         assert required in names
     for m in infos:
-        assert m["status"] in ("verified-paper", "verified-second-source", "unverified")
+        assert m["status"] in ("verified-paper", "verified-second-source", "verified-dataset",
+                               "unverified")
         assert m["citation"] and m["equation"] and m["validity"] and m["status_note"]
     by_name = {m["name"]: m for m in infos}
     assert by_name["wu2003"]["status"] == "unverified"

@@ -8,6 +8,8 @@ std::string_view to_string(Status status) {
       return "verified-paper";
     case Status::kVerifiedSecondSource:
       return "verified-second-source";
+    case Status::kVerifiedDataset:
+      return "verified-dataset";
     case Status::kUnverified:
       return "unverified";
   }

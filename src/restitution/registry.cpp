@@ -38,8 +38,16 @@ constexpr const char* kJgFitEquation =
     "e = 1 - 0.0361 eps^-0.114 ln(V') (V' - 1)^(9.5 eps), V' = v/V_c, "
     "V_c = 1.5605 (C S_y)^2.5/(E*^2 sqrt(rho)), C = 1.295 exp(0.736 nu); e = 1 for V' <= 1";
 
+/// What a model is bound to besides the pair quantities: the options and both materials (a model
+/// of a yielding sphere or of hardening reads them whole).
+struct FactoryContext {
+  const ModelOptions& options;
+  const Material& sphere;
+  const Material& substrate;
+};
+
 /// Builds a model's kernel for a material pair (`clamp` already resolved from the options).
-using Factory = Model::Kernel (*)(const ImpactPair& pair, bool clamp, const ModelOptions& options);
+using Factory = Model::Kernel (*)(const ImpactPair& pair, bool clamp, const FactoryContext& ctx);
 
 /// One row of the registry: the model's metadata and its factory.
 struct Registration {
@@ -65,7 +73,7 @@ void add_ma2023(std::vector<Registration>& r) {
                      "clamp; for sigma_y/E* < ~0.0047 a downward step < ~1e-3 at v_y)",
                  .clamped_by_default = true,
                  .calibrated = kMaCalibration},
-       [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
+       [](const ImpactPair& pair, bool clamp, const FactoryContext&) -> Model::Kernel {
          return Ma2023{.pair = pair, .exact_crossing = false, .clamp = clamp};
        }});
   r.push_back(
@@ -82,13 +90,13 @@ void add_ma2023(std::vector<Registration>& r) {
                      "velocity replaced by the exact e = 1 crossing (checked numerically)",
                  .clamped_by_default = true,
                  .calibrated = kMaCalibration},
-       [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
+       [](const ImpactPair& pair, bool clamp, const FactoryContext&) -> Model::Kernel {
          return Ma2023{.pair = pair, .exact_crossing = true, .clamp = clamp};
        }});
 }
 
 template <ThorntonPressure Pressure>
-Model::Kernel thornton(const ImpactPair& pair, bool /*clamp*/, const ModelOptions& /*options*/) {
+Model::Kernel thornton(const ImpactPair& pair, bool /*clamp*/, const FactoryContext& /*ctx*/) {
   return Thornton1997{.pair = pair, .pressure = Pressure};
 }
 
@@ -140,10 +148,10 @@ void add_jackson_green2010(std::vector<Registration>& r) {
                           "UNCONFIRMED (recollection, not read in a public text; the normalised "
                           "JCG-2005 form is used so that w_res = 0 at w* = 1)",
            .clamped_by_default = true},
-       [](const ImpactPair& pair, bool clamp, const ModelOptions& options) -> Model::Kernel {
+       [](const ImpactPair& pair, bool clamp, const FactoryContext& ctx) -> Model::Kernel {
          return JacksonGreen2010{.pair = pair,
                                  .residual = JacksonGreenResidual::kEtsion2005,
-                                 .radius = options.radius,
+                                 .radius = ctx.options.radius,
                                  .clamp = clamp};
        }});
   r.push_back(
@@ -161,10 +169,10 @@ void add_jackson_green2010(std::vector<Registration>& r) {
                      "derivation); that JGM 2010's J-G2 uses exactly this residual law is "
                      "unconfirmed",
                  .clamped_by_default = true},
-       [](const ImpactPair& pair, bool clamp, const ModelOptions& options) -> Model::Kernel {
+       [](const ImpactPair& pair, bool clamp, const FactoryContext& ctx) -> Model::Kernel {
          return JacksonGreen2010{.pair = pair,
                                  .residual = JacksonGreenResidual::kContinuousContactRadius,
-                                 .radius = options.radius,
+                                 .radius = ctx.options.radius,
                                  .clamp = clamp};
        }});
   r.push_back(
@@ -176,7 +184,7 @@ void add_jackson_green2010(std::vector<Registration>& r) {
                  .status = Status::kUnverified,
                  .status_note = "one source; the definition of eps is unconfirmed (S_y/E* here)",
                  .clamped_by_default = true},
-       [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
+       [](const ImpactPair& pair, bool clamp, const FactoryContext&) -> Model::Kernel {
          return JacksonGreen2010Fit{
              .pair = pair, .strain = JacksonGreenFitStrain::kYieldOverModulus, .clamp = clamp};
        }});
@@ -189,7 +197,7 @@ void add_jackson_green2010(std::vector<Registration>& r) {
                          .status_note =
                              "one source; the definition of eps is unconfirmed (C(nu) S_y/E* here)",
                          .clamped_by_default = true},
-               [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
+               [](const ImpactPair& pair, bool clamp, const FactoryContext&) -> Model::Kernel {
                  return JacksonGreen2010Fit{
                      .pair = pair,
                      .strain = JacksonGreenFitStrain::kCTimesYieldOverModulus,
@@ -212,7 +220,7 @@ void add_wu2003_johnson1985(std::vector<Registration>& r) {
                "unconfirmed: no text, abstract or implementation of the paper found; form "
                "B and its V_y definition are candidates only. Do not treat as exact",
            .clamped_by_default = false},
-       [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
+       [](const ImpactPair& pair, bool clamp, const FactoryContext&) -> Model::Kernel {
          return Wu2003{.pair = pair, .clamp = clamp};
        }});
   r.push_back(
@@ -230,8 +238,36 @@ void add_wu2003_johnson1985(std::vector<Registration>& r) {
                "confirmed (two sources, via Thornton) but the printed constant 26 and "
                "Johnson's equation numbers are unconfirmed",
            .clamped_by_default = true},
-       [](const ImpactPair& pair, bool clamp, const ModelOptions&) -> Model::Kernel {
+       [](const ImpactPair& pair, bool clamp, const FactoryContext&) -> Model::Kernel {
          return Johnson1985{.pair = pair, .clamp = clamp};
+       }});
+}
+
+void add_corlab2026(std::vector<Registration>& r) {
+  r.push_back(
+      {ModelInfo{
+           .name = "corlab2026",
+           .title = "corlab 2026: Thornton with the cavity-model contact pressure, fitted to "
+                    "corlab's FE dataset",
+           .citation = "corlab project, docs/theory/corlab_model.md; fitted to the FE restitution "
+                       "dataset data/fe_restitution (coefficients: model_fit.json)",
+           .equation =
+               "e = T(x, h_w) T(x_o, h_o)^gamma / (1 + b (D_y (x^2 - 1))^c), x = v/v_y (first "
+               "yield of the pair), T = e_Thornton(phi^2.5/x), phi = min((1 + c1 ln x) "
+               "g^(1 - c1/0.39), phi_max g), g = (1 + kappa h x^0.4)/(1 + kappa h), h = H/E*; "
+               "e = 1 for v <= v_y",
+           .validity = "the dataset's box: sigma_y/E* 1e-3-1.5e-2, v from 1.1 v_y to 100 m/s and "
+                       "rho v^2/sigma_y <= 0.26, E_sphere/E_substrate 0.2-5, nu 0.2-0.45, elastic "
+                       "or yielding sphere (sigma_y ratio 0.5-5), H/E 0-0.05, equal densities",
+           .status = Status::kVerifiedDataset,
+           .status_note = "fitted by this project to its own FE dataset; held-out errors in "
+                          "data/fe_restitution/model_fit.json and the README. The form is "
+                          "derived from Thornton 1997, Johnson 1985 (cavity model, damage "
+                          "number) and Tabor's representative strain",
+           .clamped_by_default = true},
+       [](const ImpactPair&, bool, const FactoryContext& ctx) -> Model::Kernel {
+         return Corlab2026{
+             .sphere = ctx.sphere, .substrate = ctx.substrate, .coefficients = corlab2026_fitted()};
        }});
 }
 
@@ -243,6 +279,7 @@ const std::vector<Registration>& registry() {
     add_thornton1997(r);
     add_jackson_green2010(r);
     add_wu2003_johnson1985(r);
+    add_corlab2026(r);
     return r;
   }();
   return entries;
@@ -314,7 +351,8 @@ Model make_model(std::string_view name,
   require_positive("radius", options.radius, "[m]");
   const ImpactPair pair = make_impact_pair(sphere, substrate, info.name);
   const bool clamp = options.clamp.value_or(info.clamped_by_default);
-  return {info, registry()[index_of(name)].factory(pair, clamp, options), clamp};
+  const FactoryContext ctx{options, sphere, substrate};
+  return {info, registry()[index_of(name)].factory(pair, clamp, ctx), clamp};
 }
 
 }  // namespace corlab::restitution

@@ -19,10 +19,12 @@ namespace corlab::restitution {
 enum class Status {
   kVerifiedPaper,         ///< formula read in the seed paper's text (and re-derived)
   kVerifiedSecondSource,  ///< confirmed by a second public source or an independent derivation
+  /// corlab's own model: fitted to and scored on held-out runs of corlab's FE dataset
+  kVerifiedDataset,
   kUnverified,            ///< constants or form not confirmed; do not treat as exact
 };
 
-/// "verified-paper", "verified-second-source" or "unverified".
+/// "verified-paper", "verified-second-source", "verified-dataset" or "unverified".
 std::string_view to_string(Status status);
 
 /// Calibration range of a model in the dimensionless groups of Ma et al. 2023:

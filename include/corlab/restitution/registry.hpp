@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "corlab/materials/material.hpp"
+#include "corlab/restitution/corlab2026.hpp"
 #include "corlab/restitution/jackson_green2010.hpp"
 #include "corlab/restitution/johnson1985.hpp"
 #include "corlab/restitution/ma2023.hpp"
@@ -33,8 +34,13 @@ struct ModelOptions {
 /// A model bound to a material pair. Cheap to copy.
 class Model {
  public:
-  using Kernel = std::
-      variant<Ma2023, Thornton1997, JacksonGreen2010, JacksonGreen2010Fit, Wu2003, Johnson1985>;
+  using Kernel = std::variant<Ma2023,
+                              Thornton1997,
+                              JacksonGreen2010,
+                              JacksonGreen2010Fit,
+                              Wu2003,
+                              Johnson1985,
+                              Corlab2026>;
 
   Model(const ModelInfo& info, Kernel kernel, bool clamped);
 

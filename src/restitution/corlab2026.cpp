@@ -1,0 +1,86 @@
+#include "corlab/restitution/corlab2026.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "corlab/restitution/first_yield.hpp"
+#include "corlab/restitution/jackson_green2005.hpp"
+#include "corlab/restitution/thornton1997.hpp"
+
+namespace corlab::restitution {
+namespace {
+
+// phi^(5/2)/x decreases while d ln phi / d ln x < 2/5; the hardening exponent below keeps the
+// rate under this bound (c1 <= it: the fit's bound).
+constexpr double kMaxPressureSlope = 0.39;
+
+// Hertz peak pressure at which `body` first yields; infinite for an elastic body [Pa].
+double body_yield_pressure(const Material& body) {
+  if (!body.yield_stress) return std::numeric_limits<double>::infinity();
+  return jackson_green_c(body.poisson_ratio) * *body.yield_stress;
+}
+
+// Thornton's factor of one body at x = v / v_y of that body and its hardening h = H / E*.
+double thornton_factor(double x, double h, const Corlab2026Coefficients& k) {
+  if (!(x > 1.0)) return 1.0;
+  // Flow stress at the representative strain over the yield stress (rate < 2/5 in ln x).
+  const double hardening = (1.0 + k.kappa * h * std::pow(x, 0.4)) / (1.0 + k.kappa * h);
+  // Before the cap the cavity-model growth (rate <= c1) takes hardening at the power
+  // 1 - c1/0.39 (rate < 0.4 (1 - c1/0.39)): the sum stays below 2/5.
+  const double c1 = std::min(k.c1, kMaxPressureSlope);
+  const double phi =
+      std::min((1.0 + c1 * std::log(x)) * std::pow(hardening, 1.0 - c1 / kMaxPressureSlope),
+               k.phi_max * hardening);
+  return thornton_closed_form(std::pow(phi, 2.5) / x);
+}
+
+}  // namespace
+
+Corlab2026Coefficients corlab2026_fitted() {
+  // data/fe_restitution/model_fit.json, "coefficients" (python/corlab/model_fit.py).
+  return Corlab2026Coefficients{.c1 = 0.28,
+                                .phi_max = 3.7,
+                                .kappa = 0.41,
+                                .b = 1.15,
+                                .c = 0.49,
+                                .gamma_sphere = 0.16,
+                                .gamma_substrate = 0.24};
+}
+
+Corlab2026Inputs corlab2026_inputs(const Material& sphere,
+                                   const Material& substrate,
+                                   double velocity) {
+  const FirstYield y = first_yield(sphere, substrate);
+  const Material& first = y.sphere_first ? sphere : substrate;
+  const Material& other = y.sphere_first ? substrate : sphere;
+  const double e_star = effective_modulus(sphere, substrate);
+  const double p_other = body_yield_pressure(other);
+  Corlab2026Inputs in;
+  in.velocity_ratio = velocity / y.velocity;
+  in.velocity_ratio_other =
+      std::isfinite(p_other) ? velocity / thornton_yield_velocity(p_other, e_star, sphere.density)
+                             : 0.0;
+  in.hardening_first = first.hardening_modulus / e_star;
+  in.hardening_other = other.yield_stress ? other.hardening_modulus / e_star : 0.0;
+  in.damage_at_yield = sphere.density * y.velocity * y.velocity / y.pressure;
+  in.other_is_sphere = !y.sphere_first;
+  return in;
+}
+
+double corlab2026_restitution(const Corlab2026Inputs& in, const Corlab2026Coefficients& k) {
+  const double x = in.velocity_ratio;
+  if (!(x > 1.0)) return 1.0;
+  const double gamma = in.other_is_sphere ? k.gamma_sphere : k.gamma_substrate;
+  const double crater = 1.0 + k.b * std::pow(in.damage_at_yield * (x * x - 1.0), k.c);
+  return thornton_factor(x, in.hardening_first, k) *
+         std::pow(thornton_factor(in.velocity_ratio_other, in.hardening_other, k), gamma) / crater;
+}
+
+double Corlab2026::yield_velocity() const { return first_yield(sphere, substrate).velocity; }
+
+double Corlab2026::cor(double velocity) const {
+  return corlab2026_restitution(corlab2026_inputs(sphere, substrate, velocity), coefficients);
+}
+
+}  // namespace corlab::restitution
