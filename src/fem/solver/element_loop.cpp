@@ -244,15 +244,16 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
     const BlockNodes nd = block_nodes(es, e0);
+    // lanes.*, not the bindings: clang rejects structured bindings inside omp simd.
     for (int i = 0; i < 4; ++i) {
       const int* __restrict ni = nd[i];
 #pragma omp simd
       for (int l = 0; l < nb; ++l) {
         const int n = ni[l];
-        xr[i][l] = r[n];
-        xz[i][l] = z[n];
-        ur[i][l] = vr[n];
-        uz[i][l] = vz[n];
+        lanes.xr[i][l] = r[n];
+        lanes.xz[i][l] = z[n];
+        lanes.ur[i][l] = vr[n];
+        lanes.uz[i][l] = vz[n];
       }
     }
     const double omega_before = sums.omega_min;
@@ -302,10 +303,10 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
         const int n = ni[l];
         const double rn = r[n];
         const double zn = z[n];
-        xr[i][l] = rn;
-        xz[i][l] = zn;
-        ur[i][l] = (rn - rp[l]) * inv_dt;
-        uz[i][l] = (zn - zp[l]) * inv_dt;
+        lanes.xr[i][l] = rn;
+        lanes.xz[i][l] = zn;
+        lanes.ur[i][l] = (rn - rp[l]) * inv_dt;
+        lanes.uz[i][l] = (zn - zp[l]) * inv_dt;
         rp[l] = rn;
         zp[l] = zn;
       }
