@@ -93,6 +93,13 @@ struct BlockLanes {
                &lanes.f_z[0][0]};
 }
 
+// The node indices of the block from element e0, per corner: nd[i][l] is node i of lane l.
+using BlockNodes = std::array<const int*, 4>;
+[[gnu::always_inline]] inline BlockNodes block_nodes(const ElementState& es, int e0) {
+  return {es.corner[0].data() + e0, es.corner[1].data() + e0, es.corner[2].data() + e0,
+          es.corner[3].data() + e0};
+}
+
 // Per-lane results of a block (no reductions inside the lane loop, so it vectorises without
 // reassociation).
 struct LaneResults {
@@ -236,25 +243,28 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
   auto& [xr, xz, ur, uz, f_r, f_z] = lanes;
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
-    const std::array<int, 4>* nd = es.nodes.data() + e0;
-    for (int l = 0; l < nb; ++l) {
-#pragma GCC unroll 4
-      for (int i = 0; i < 4; ++i) {
-        const int n = nd[l][i];
-        xr[i][l] = r[n];
-        xz[i][l] = z[n];
-        ur[i][l] = vr[n];
-        uz[i][l] = vz[n];
+    const BlockNodes nd = block_nodes(es, e0);
+    // lanes.*, not the bindings: clang rejects structured bindings inside omp simd.
+    for (int i = 0; i < 4; ++i) {
+      const int* __restrict ni = nd[i];
+#pragma omp simd
+      for (int l = 0; l < nb; ++l) {
+        const int n = ni[l];
+        lanes.xr[i][l] = r[n];
+        lanes.xz[i][l] = z[n];
+        lanes.ur[i][l] = vr[n];
+        lanes.uz[i][l] = vz[n];
       }
     }
     const double omega_before = sums.omega_min;
     const Block b = block_at(es, e0, nb, lanes, false);
     element_block<false, true>(p, b, dt, sums);
     if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
+    // Element by element (nodes are shared): the order of each node's sum is the element order.
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
       for (int i = 0; i < 4; ++i) {
-        const int n = nd[l][i];
+        const int n = nd[i][l];
         fr_out[n] -= f_r[i][l];
         fz_out[n] -= f_z[i][l];
       }
@@ -283,19 +293,22 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
   const double inv_dt = 1.0 / dt;
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
-    const std::array<int, 4>* nd = es.nodes.data() + e0;
-    double* __restrict rp = es.r_prev.data() + 4 * static_cast<std::size_t>(e0);
-    double* __restrict zp = es.z_prev.data() + 4 * static_cast<std::size_t>(e0);
-    for (int l = 0; l < nb; ++l) {
-#pragma GCC unroll 4
-      for (int i = 0; i < 4; ++i) {
-        const int n = nd[l][i];
-        xr[i][l] = r[n];
-        xz[i][l] = z[n];
-        ur[i][l] = (r[n] - rp[4 * l + i]) * inv_dt;
-        uz[i][l] = (z[n] - zp[4 * l + i]) * inv_dt;
-        rp[4 * l + i] = r[n];
-        zp[4 * l + i] = z[n];
+    const BlockNodes nd = block_nodes(es, e0);
+    for (int i = 0; i < 4; ++i) {
+      const int* __restrict ni = nd[i];
+      double* __restrict rp = es.r_prev[i].data() + e0;
+      double* __restrict zp = es.z_prev[i].data() + e0;
+#pragma omp simd
+      for (int l = 0; l < nb; ++l) {
+        const int n = ni[l];
+        const double rn = r[n];
+        const double zn = z[n];
+        lanes.xr[i][l] = rn;
+        lanes.xz[i][l] = zn;
+        lanes.ur[i][l] = (rn - rp[l]) * inv_dt;
+        lanes.uz[i][l] = (zn - zp[l]) * inv_dt;
+        rp[l] = rn;
+        zp[l] = zn;
       }
     }
     const double omega_before = sums.omega_min;
@@ -309,7 +322,7 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
       for (int i = 0; i < 4; ++i) {
-        const int n = nd[l][i];
+        const int n = nd[i][l];
         fr_out[n] -= scale * f_r[i][l];
         fz_out[n] -= scale * f_z[i][l];
       }
@@ -318,7 +331,7 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
     double c = 0.0;
     for (int l = 0; l < nb; ++l) {
       for (int i = 0; i < 4; ++i) {
-        const int n = nd[l][i];
+        const int n = nd[i][l];
         c += f_r[i][l] * (ur[i][l] - v_r[n]) + f_z[i][l] * (uz[i][l] - v_z[n]);
       }
     }

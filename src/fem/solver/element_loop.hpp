@@ -26,18 +26,28 @@ struct BodyParams {
 
 // Structure-of-arrays element state, elements of one body contiguous.
 struct ElementState {
-  std::vector<std::array<int, 4>> nodes;
+  // Node i (0..3, counter-clockwise) of element e: corner[i][e]. One array per corner, so that a
+  // block's indices, and below its stored positions, are contiguous per corner: the gather into
+  // the lane arrays vectorises without the transposition an element-major layout needs.
+  std::array<std::vector<int>, 4> corner;
   std::vector<double> srr, szz, stt, srz;  // Cauchy stress [Pa]
   std::vector<double> eps_p;               // equivalent plastic strain [-]
   std::vector<double> qr, qz;              // hourglass generalised forces [N]
-  // Subcycling only: nodal positions at each element's last update [m], 4 per element (element
-  // e: [4 e, 4 e + 4)).
-  std::vector<double> r_prev, z_prev;
+  // Subcycling only: position of node i at element e's last update, r_prev[i][e] [m].
+  std::array<std::vector<double>, 4> r_prev, z_prev;
   std::vector<double> bv;  // viscous mean stress at each element's last update [Pa]
   // Mass scaling: stable step / the physical one (density factor step_scale^2) [-].
   std::vector<double> step_scale;
+  // Sets the element nodes (n = nodes.size() elements) and sizes the element state.
+  void set_nodes(const std::vector<std::array<int, 4>>& nodes) {
+    const std::size_t n = nodes.size();
+    for (int i = 0; i < 4; ++i) {
+      corner[i].resize(n);
+      for (std::size_t e = 0; e < n; ++e) corner[i][e] = nodes[e][i];
+    }
+    resize(n);
+  }
   void resize(std::size_t n) {
-    nodes.resize(n);
     step_scale.assign(n, 1.0);
     for (auto* v : {&srr, &szz, &stt, &srz, &eps_p, &qr, &qz}) v->assign(n, 0.0);
   }

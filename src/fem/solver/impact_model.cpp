@@ -408,14 +408,14 @@ ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
 /// Subcycling state: each element's last positions (the start) and viscous stress (none).
 void init_subcycling(const ImpactModel& m, ImpactState& s) {
   ElementState& es = s.elements;
-  const auto n4 = 4 * static_cast<std::size_t>(m.n_elements);
-  es.r_prev.resize(n4);
-  es.z_prev.resize(n4);
-  es.bv.assign(static_cast<std::size_t>(m.n_elements), 0.0);
-  for (int e = 0; e < m.n_elements; ++e) {
-    for (int i = 0; i < 4; ++i) {
-      es.r_prev[4 * e + i] = m.r0[m.element_nodes[e][i]];
-      es.z_prev[4 * e + i] = m.z0[m.element_nodes[e][i]];
+  const auto ne = static_cast<std::size_t>(m.n_elements);
+  es.bv.assign(ne, 0.0);
+  for (int i = 0; i < 4; ++i) {
+    es.r_prev[i].resize(ne);
+    es.z_prev[i].resize(ne);
+    for (std::size_t e = 0; e < ne; ++e) {
+      es.r_prev[i][e] = m.r0[m.element_nodes[e][i]];
+      es.z_prev[i][e] = m.z0[m.element_nodes[e][i]];
     }
   }
   s.level_dt_min.fill(std::numeric_limits<double>::infinity());
@@ -432,8 +432,7 @@ ImpactState make_initial_state(const ImpactModel& m) {
   }
   s.fr.assign(m.n_nodes, 0.0);
   s.fz.assign(m.n_nodes, 0.0);
-  s.elements.resize(static_cast<std::size_t>(m.n_elements));
-  s.elements.nodes = m.element_nodes;
+  s.elements.set_nodes(m.element_nodes);
   s.elements.step_scale = m.step_scale;
   s.cursor.resize(m.slaves.size());
   for (std::size_t k = 0; k < m.slaves.size(); ++k) {
