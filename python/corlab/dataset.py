@@ -69,8 +69,11 @@ def predictions(table, model):
 
 
 def in_model_box(table, info):
-    """Rows inside a model's own validity: an elastic sphere, a perfectly plastic substrate
+    """Rows inside a model's own validity: the whole dataset for corlab's own model (status
+    verified-dataset: fitted to this box); else an elastic sphere, a perfectly plastic substrate
     (H/E < PERFECTLY_PLASTIC) and, when the model has one, its calibration box in (k1, k2)."""
+    if info["status"] == "verified-dataset":
+        return np.ones(len(table["e"]), dtype=bool)
     ok = ~np.isfinite(table["sphere_sigma_y"])
     ok &= table["hardening_ratio_substrate"] < PERFECTLY_PLASTIC
     box = info.get("calibrated")
@@ -110,3 +113,66 @@ def score_models(table, names=None):
         own = in_model_box(table, infos[name])
         out[name] = {"all cases": score(table, e), "own box": score(table, e, own)}
     return out
+
+
+def error_figure(table, path):
+    """Relative error of every registered model against k1 and k2 (one row of panels each)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    names = [m["name"] for m in _core.models()]
+    fig, axes = plt.subplots(len(names), 2, figsize=(8, 1.6 * len(names)), sharex="col",
+                             sharey=True, squeeze=False)
+    for row, name in enumerate(names):
+        rel = (predictions(table, name) - table["e"]) / table["e"]
+        for col, key in enumerate(("k1", "k2")):
+            ax = axes[row][col]
+            ax.axhline(0.0, color="0.6", lw=0.8)
+            ax.scatter(table[key], 100.0 * rel, s=5, c=np.log10(table["velocity_ratio"]),
+                       cmap="viridis")
+            ax.set_xscale("log")
+            ax.set_ylim(-60, 60)
+            if col == 0:
+                ax.set_ylabel(f"{name}\n% error", fontsize=7)
+        axes[row][0].tick_params(labelsize=7)
+        axes[row][1].tick_params(labelsize=7)
+    axes[-1][0].set_xlabel("k1 = E*/(rho v^2)")
+    axes[-1][1].set_xlabel("k2 = sigma_y/E*")
+    fig.suptitle("Error of each model against corlab's FE dataset (colour: log10 v/v_y)",
+                 fontsize=9)
+    fig.tight_layout(rect=(0, 0, 1, 0.985))
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main(argv=None):
+    import argparse
+    import json
+    parser = argparse.ArgumentParser(
+        description="Scores every registered CoR model against the FE dataset")
+    parser.add_argument("dataset", help="dataset.csv (corlab dataset export)")
+    parser.add_argument("--out", required=True, help="model_scores.json to write")
+    parser.add_argument("--figure", help="PNG of the errors against k1 and k2")
+    args = parser.parse_args(argv)
+    table = read(args.dataset)
+    scores = score_models(table)
+
+    def safe(obj):
+        if isinstance(obj, dict):
+            return {k: safe(v) for k, v in obj.items()}
+        return None if isinstance(obj, float) and not math.isfinite(obj) else obj
+    with open(args.out, "w") as f:
+        json.dump({"dataset": args.dataset, "rows": int(table["e"].size), "regimes": {
+            name: upper if math.isfinite(upper) else None for name, upper in REGIMES},
+            "scores": safe(scores)}, f, indent=2, sort_keys=True)
+        f.write("\n")
+    if args.figure:
+        error_figure(table, args.figure)
+    for name, s in scores.items():
+        a = s["all cases"]["all"]
+        print(f"{name:<15} RMS {a['rms']:.3f} worst {a['worst']:+.3f} bias {a['bias']:+.3f} "
+              f"(n {a['n']}); own box n {s['own box']['all']['n']}")
+
+
+if __name__ == "__main__":
+    main()

@@ -14,6 +14,7 @@ same data give the same coefficients). The model is evaluated by the C++ kernel
 import argparse
 import json
 import math
+import pathlib
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -135,17 +136,31 @@ def _finite(obj):
     return obj
 
 
+def write_cpp_coefficients(path, coefficients):
+    """Replaces the initializer of corlab2026_fitted() in the C++ source with `coefficients`
+    (shortest round-trip text: the C++ doubles are the JSON's, bit for bit)."""
+    text = pathlib.Path(path).read_text()
+    begin = text.index("return Corlab2026Coefficients{")
+    end = text.index("};", begin) + 2
+    fields = ",\n".join(f"      .{n} = {coefficients[n]!r}" for n in NAMES)
+    text = text[:begin] + "return Corlab2026Coefficients{\n" + fields + "};" + text[end:]
+    pathlib.Path(path).write_text(text)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dataset", help="dataset.csv (corlab dataset export)")
     parser.add_argument("--out", required=True, help="model_fit.json to write")
     parser.add_argument("--bootstrap", type=int, default=BOOTSTRAP, help="resamples")
+    parser.add_argument("--cpp-source", help="corlab2026.cpp whose corlab2026_fitted() to update")
     args = parser.parse_args(argv)
     result = run(args.dataset, args.bootstrap)
     with open(args.out, "w") as f:
         json.dump(_finite(result), f, indent=2, sort_keys=True)
         f.write("\n")
     s = result["scores"]
+    if args.cpp_source:
+        write_cpp_coefficients(args.cpp_source, result["coefficients"])
     print(f"corlab2026: {result['rows_train']} rows fitted; RMS / worst relative error: train "
           f"{s['train']['all']['rms']:.4f} / {s['train']['all']['worst']:+.4f}, random holdout "
           f"{s['random holdout']['all']['rms']:.4f} / {s['random holdout']['all']['worst']:+.4f},"

@@ -39,13 +39,13 @@ double thornton_factor(double x, double h, const Corlab2026Coefficients& k) {
 
 Corlab2026Coefficients corlab2026_fitted() {
   // data/fe_restitution/model_fit.json, "coefficients" (python/corlab/model_fit.py).
-  return Corlab2026Coefficients{.c1 = 0.28,
-                                .phi_max = 3.7,
-                                .kappa = 0.41,
-                                .b = 1.15,
-                                .c = 0.49,
-                                .gamma_sphere = 0.16,
-                                .gamma_substrate = 0.24};
+  return Corlab2026Coefficients{.c1 = 0.23021535563336337,
+                                .phi_max = 2.5500402766010444,
+                                .kappa = 3.1259063352955083,
+                                .b = 1.2359114096151496,
+                                .c = 0.5329964523962101,
+                                .gamma_sphere = 0.15918171526984826,
+                                .gamma_substrate = 0.23848170740223848};
 }
 
 Corlab2026Inputs corlab2026_inputs(const Material& sphere,

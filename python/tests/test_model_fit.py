@@ -1,0 +1,58 @@
+"""corlab's model (corlab2026) and its fit: the shipped coefficients are what refitting the
+shipped dataset gives; the kernel through Python is the library's; the split is fixed; and on
+the paper's corner the model's form recovers the cavity-model and Tabor values."""
+import json
+import math
+import pathlib
+
+import numpy as np
+import pytest
+
+import corlab
+from corlab import dataset, model_fit
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+DATA = ROOT / "data" / "fe_restitution"
+
+
+def test_refitting_the_shipped_dataset_gives_the_shipped_coefficients():
+    shipped = json.loads((DATA / "model_fit.json").read_text())
+    table = dataset.read(DATA / "dataset.csv")
+    inputs = model_fit.model_inputs(table)
+    train, random_out, corner = model_fit.split(table)
+    assert train.sum() == shipped["rows_train"]
+    assert random_out.sum() == shipped["rows_random_holdout"]
+    assert corner.sum() == shipped["rows_corner_holdout"]
+    refit = model_fit.fit(table, inputs, train)
+    for name in model_fit.NAMES:
+        assert refit[name] == pytest.approx(shipped["coefficients"][name], rel=1e-6), name
+    # The library's coefficients are the file's (the C++ test checks the same to the last bit).
+    assert corlab.corlab2026_fitted() == pytest.approx(shipped["coefficients"], rel=1e-15)
+
+
+def test_kernel_through_python_is_the_registered_model():
+    k = corlab.corlab2026_fitted()
+    sphere, substrate = "E=300e9,nu=0.25,rho=7850,sy=900e6,H=3e9", "E=210e9,nu=0.3,rho=7850,sy=5e8"
+    for v in (0.05, 0.5, 5.0, 50.0):
+        inputs = {key: np.array([val]) for key, val in
+                  corlab.corlab2026_inputs(sphere, substrate, v).items()}
+        e = corlab.corlab2026_restitution(inputs, k)[0]
+        assert e == corlab.predict("corlab2026", sphere, substrate, v)
+    assert corlab.predict("corlab2026", sphere, substrate, 1e-4) == 1.0
+
+
+def test_split_is_a_fifth_by_case_id_and_the_stiff_sphere_corner():
+    table = {"case_id": ["c0000000005", "c0000000006", "c000000000a"],
+             "modulus_ratio": np.array([1.0, 4.5, 1.0])}
+    train, random_out, corner = model_fit.split(table)
+    assert list(random_out) == [True, False, True]
+    assert list(corner) == [False, True, False]
+    assert list(train) == [False, False, False]
+
+
+def test_error_stats_and_regimes():
+    s = dataset.error_stats([0.01, -0.03, math.nan, 0.02])
+    assert s["n"] == 3 and s["worst"] == -0.03
+    assert s["rms"] == pytest.approx(math.sqrt((1 + 9 + 4) / 3) / 100)
+    assert dataset.regime(np.array([1.5, 3.0, 10.0, 300.0, 301.0])) == [
+        "near-yield", "near-yield", "elastic-plastic", "elastic-plastic", "fully plastic"]
