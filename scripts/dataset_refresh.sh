@@ -16,4 +16,5 @@ build/bin/corlab dataset export "$sweep" --out data/fe_restitution
 clang-format -i src/restitution/corlab2026.cpp
 cmake --build build --target corlab _core >/dev/null
 /usr/bin/python3 -m corlab.dataset data/fe_restitution/dataset.csv \
-  --out data/fe_restitution/model_scores.json --figure docs/img/dataset_model_errors.png
+  --out data/fe_restitution/model_scores.json --figure docs/img/dataset_model_errors.png \
+  --markdown data/fe_restitution/model_scores.md

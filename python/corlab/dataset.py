@@ -145,6 +145,24 @@ def error_figure(table, path):
     plt.close(fig)
 
 
+def markdown_table(scores):
+    """Markdown rows: each model's RMS / worst / bias on all cases and per regime, and on its own
+    box (percent of e)."""
+    def cell(s):
+        if s["n"] == 0:
+            return "-"
+        return f"{100 * s['rms']:.1f} / {100 * s['worst']:+.0f} / {100 * s['bias']:+.1f}"
+    regimes = [name for name, _ in REGIMES]
+    lines = ["| model | all cases (n) | " + " | ".join(regimes) + " | own box (n) |",
+             "|---" * (3 + len(regimes)) + "|"]
+    for name, s in scores.items():
+        a, own = s["all cases"], s["own box"]["all"]
+        lines.append(f"| `{name}` | {cell(a['all'])} ({a['all']['n']}) | "
+                     + " | ".join(cell(a[r]) for r in regimes)
+                     + f" | {cell(own)} ({own['n']}) |")
+    return "\n".join(lines) + "\n"
+
+
 def main(argv=None):
     import argparse
     import json
@@ -153,6 +171,7 @@ def main(argv=None):
     parser.add_argument("dataset", help="dataset.csv (corlab dataset export)")
     parser.add_argument("--out", required=True, help="model_scores.json to write")
     parser.add_argument("--figure", help="PNG of the errors against k1 and k2")
+    parser.add_argument("--markdown", help="the scores as a Markdown table (for the README)")
     args = parser.parse_args(argv)
     table = read(args.dataset)
     scores = score_models(table)
@@ -168,6 +187,9 @@ def main(argv=None):
         f.write("\n")
     if args.figure:
         error_figure(table, args.figure)
+    if args.markdown:
+        with open(args.markdown, "w") as f:
+            f.write(markdown_table(scores))
     for name, s in scores.items():
         a = s["all cases"]["all"]
         print(f"{name:<15} RMS {a['rms']:.3f} worst {a['worst']:+.3f} bias {a['bias']:+.3f} "

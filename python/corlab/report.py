@@ -18,8 +18,11 @@ import math
 import os
 import platform
 import sys
+import warnings
 
-from . import figures
+import numpy as np
+
+from . import _core, dataset, figures
 from .html_table import esc, fmt, pct, table
 
 COARSE_OMITS = [
@@ -343,6 +346,77 @@ def discussion(fit):
     return "<ul>" + "".join(f"<li>{i}</li>" for i in items) + "</ul>"
 
 
+def _score_cells(s):
+    return [str(s["n"]), pct(s["rms"], 1), pct(s["worst"], 1), pct(s["bias"], 1)]
+
+
+def table2_versus_eq19(out_dir):
+    """Per Table 2 run of this directory: |error| of corlab2026 against Ma eq. 19 (ma2023).
+    Returns (rows of the summary table, cases where corlab2026 is at least as close, cases)."""
+    path = os.path.join(out_dir, "table2", "results.csv")
+    if not os.path.exists(path):
+        return [], 0, 0
+    t = _core.read_results(path)
+    errs = {"corlab2026": [], "ma2023": []}
+    for i, status in enumerate(t["status"]):
+        if status != "ok" or not math.isfinite(t["sigma_y"][i]):
+            continue
+        # Table 2: E = 210 GPa, nu = 0.3 for both bodies (E* = E / (2 (1 - nu^2))).
+        sphere = f"E={t['E_star'][i] * 2 * (1 - 0.09)!r},nu=0.3,rho={t['sphere_rho'][i]!r}"
+        substrate = f"E={t['E_star'][i] * 2 * (1 - 0.09)!r},nu=0.3,rho=7850,sy={t['sigma_y'][i]!r}"
+        for name in errs:
+            with warnings.catch_warnings():  # ma2023 outside its box: scored all the same
+                warnings.simplefilter("ignore", UserWarning)
+                e = _core.predict(name, sphere, substrate, float(t["velocity"][i]))
+            errs[name].append((e - t["e"][i]) / t["e"][i])
+    ours, paper = (np.abs(np.array(errs[n])) for n in ("corlab2026", "ma2023"))
+    rows = [[esc(n), *_score_cells(dataset.error_stats(errs[n]))] for n in errs]
+    return rows, int(np.sum(ours <= paper)), int(ours.size)
+
+
+def dataset_section(fit, out_dir):
+    """Beyond the paper: corlab's FE dataset, its model and every model's scores on it."""
+    folder = fit.get("dataset_dir") or ""
+    try:
+        with open(os.path.join(folder, "model_fit.json")) as f:
+            model = json.load(f)
+        with open(os.path.join(folder, "model_scores.json")) as f:
+            scores = json.load(f)
+    except OSError:
+        return "<p><i>No FE dataset found (data/fe_restitution).</i></p>"
+    head = ["model", "cases", "RMS", "worst", "bias"]
+    rows = []
+    for name, s in scores["scores"].items():
+        for scope in ("all cases", "own box"):
+            rows.append([esc(f"{name} ({scope})"), *_score_cells(s[scope]["all"])])
+    regimes = []
+    for scope in ("random holdout", "corner holdout"):
+        for regime, s in model["scores"][scope].items():
+            regimes.append([esc(f"{scope}: {regime}"), *_score_cells(s)])
+    coef = [[esc(n), fmt(v, 5), f"[{fmt(model['confidence_95'][n][0], 4)}, "
+             f"{fmt(model['confidence_95'][n][1], 4)}]"] for n, v in model["coefficients"].items()]
+    t2_rows, better, cases = table2_versus_eq19(out_dir)
+    t2 = ""
+    if cases:
+        t2 = (f"<h3>The paper's corner: the Table 2 runs of this directory</h3><p>corlab2026 is "
+              f"at least as close to the FE value as Ma eq. 19 in {better} of {cases} cases.</p>"
+              + table(["model", "cases", "RMS", "worst", "bias"], t2_rows))
+    return f"""<p>{scores['rows']} FE runs of corlab's open dataset (<code>{esc(folder)}</code>,
+docs/theory/dataset.md): a Sobol design over k2, v/v_y, the modulus ratio, both Poisson ratios,
+a yielding sphere and linear hardening. corlab's own model <code>corlab2026</code>
+(docs/theory/corlab_model.md) is fitted on {model['rows_train']} of them; a random
+{model['rows_random_holdout']} and a corner of {model['rows_corner_holdout']}
+({esc(model['corner'])}) are held out. Relative errors (e_model - e_FE)/e_FE; a model's own box
+is its calibration box and its assumptions (elastic sphere, perfectly plastic substrate).</p>
+{table(head, rows)}
+<h3>corlab2026: held-out errors by regime</h3>
+{table(["held-out set: regime", "cases", "RMS", "worst", "bias"], regimes)}
+<p>95 % prediction interval: +-{pct(model['prediction_interval_95'], 1)} of e.</p>
+<h3>corlab2026 coefficients (95 % bootstrap intervals)</h3>
+{table(["coefficient", "value", "95 % interval"], coef)}
+{t2}"""
+
+
 def versions():
     import matplotlib
     import numpy
@@ -439,6 +513,8 @@ back-calculation); E* is realised with equal bodies, nu = 0.3, E = 2(1 - nu^2) E
 <p><b>No experimental points</b>: no published numbers of Kharaz &amp; Gorham (2000) are
 available to corlab; none are shown and none were digitised.</p>
 {img("fig11_12", "Figs. 11-12")}{img("fig13", "Fig. 13")}
+<h2>Beyond the paper: corlab's FE dataset and its model</h2>
+{dataset_section(fit, out_dir)}
 <h2>Runs and time</h2>{runs_table(fit)}
 <p>Fitting took {fmt(fit.get('fit_wall_s'), 3)} s. Runs in parallel: {esc(fit.get('jobs'))}
 (hardware threads: {esc(fit.get('hardware_threads'))}).</p>

@@ -15,6 +15,7 @@
 #include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/thread_pool.hpp"
+#include "corlab/materials/material_database.hpp"
 #include "corlab/paper/fit_paper.hpp"
 #include "corlab/study/sweep_spec.hpp"
 #include "corlab/version.hpp"
@@ -97,6 +98,9 @@ json provenance(const ReproduceOptions& opt) {
   out["preset"] = opt.preset;
   out["command"] = opt.command_line;
   out["corlab_version"] = std::string(kVersion);
+  out["corlab_build"] = std::string(build_id());
+  // The FE restitution dataset and corlab's model (the report's "beyond the paper" section).
+  out["dataset_dir"] = (data_directory() / "fe_restitution").string();
   out["compiler"] = fmt::format("{} {}", "gcc", __VERSION__);
 #ifdef NDEBUG
   out["build_type"] = "Release";

@@ -39,13 +39,13 @@ double thornton_factor(double x, double h, const Corlab2026Coefficients& k) {
 
 Corlab2026Coefficients corlab2026_fitted() {
   // data/fe_restitution/model_fit.json, "coefficients" (python/corlab/model_fit.py).
-  return Corlab2026Coefficients{.c1 = 0.23021535563336337,
-                                .phi_max = 2.5500402766010444,
-                                .kappa = 3.1259063352955083,
-                                .b = 1.2359114096151496,
-                                .c = 0.5329964523962101,
-                                .gamma_sphere = 0.15918171526984826,
-                                .gamma_substrate = 0.23848170740223848};
+  return Corlab2026Coefficients{.c1 = 0.22774821147951427,
+                                .phi_max = 2.6235768195844917,
+                                .kappa = 3.2101830957089295,
+                                .b = 1.4778660040395613,
+                                .c = 0.5632442331274097,
+                                .gamma_sphere = 0.1525459364295191,
+                                .gamma_substrate = 0.25262638479258015};
 }
 
 Corlab2026Inputs corlab2026_inputs(const Material& sphere,
