@@ -39,13 +39,13 @@ double thornton_factor(double x, double h, const Corlab2026Coefficients& k) {
 
 Corlab2026Coefficients corlab2026_fitted() {
   // data/fe_restitution/model_fit.json, "coefficients" (python/corlab/model_fit.py).
-  return Corlab2026Coefficients{.c1 = 0.22774821147951427,
-                                .phi_max = 2.6235768195844917,
-                                .kappa = 3.2101830957089295,
-                                .b = 1.4778660040395613,
-                                .c = 0.5632442331274097,
-                                .gamma_sphere = 0.1525459364295191,
-                                .gamma_substrate = 0.25262638479258015};
+  return Corlab2026Coefficients{.c1 = 0.2294103898434331,
+                                .phi_max = 2.574849878827054,
+                                .kappa = 3.3058320536630252,
+                                .b = 1.2221713125232803,
+                                .c = 0.5065122294211695,
+                                .gamma_sphere = 0.15651214710140718,
+                                .gamma_substrate = 0.25104609918956017};
 }
 
 Corlab2026Inputs corlab2026_inputs(const Material& sphere,
