@@ -63,6 +63,11 @@ refused "not expected: --bogus" simulate --bogus --out "$work/sim"
 refused "--out is required" simulate
 refused "subcommand" frobnicate
 refused "--velocity" predict --model ma2023 --sphere steel_ma2023 --substrate steel_ma2023
+# The dataset commands and the sweep's case selection.
+refused "--points = 0" dataset design --points 0
+refused "spec = .*nowhere/spec.toml" dataset export "$work/nowhere"
+refused "--only = '3-x'" sweep "$(dirname "$0")/../data/sweeps/tiny.toml" --out "$work/sw" --only 3-x
+refused "--only = '99'" sweep "$(dirname "$0")/../data/sweeps/tiny.toml" --out "$work/sw" --only 99
 
 # A valid run is still accepted; its progress off a terminal is plain lines (no '\r').
 "$corlab" simulate --set sphere.radius=2.5e-3 --set substrate.radius=2.5e-3 \
