@@ -43,6 +43,7 @@ int list_cases(const study::SweepSpec& spec, const std::vector<std::size_t>& onl
   std::vector<study::SweepCase> cases = spec.expand();
   if (!only.empty()) {
     std::vector<study::SweepCase> selected;
+    selected.reserve(only.size());
     for (const std::size_t i : only) selected.push_back(cases[i]);
     cases = std::move(selected);
   }

@@ -135,9 +135,8 @@ py::array_t<double> corlab2026_over(const py::dict& inputs, const py::dict& coef
   return out;
 }
 
-}  // namespace
-
-void bind_models(py::module_& m) {
+// corlab's model: its inputs, its kernel over arrays and its shipped coefficients.
+void bind_corlab2026(py::module_& m) {
   m.def(
       "corlab2026_inputs",
       [](const MaterialArg& sphere, const MaterialArg& substrate, double v) {
@@ -164,6 +163,12 @@ void bind_models(py::module_& m) {
   m.def(
       "corlab2026_fitted", [] { return coefficients_dict(restitution::corlab2026_fitted()); },
       "The shipped coefficients of corlab's model (data/fe_restitution/model_fit.json).");
+}
+
+}  // namespace
+
+void bind_models(py::module_& m) {
+  bind_corlab2026(m);
   m.def(
       "models",
       [] {

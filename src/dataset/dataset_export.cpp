@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
@@ -186,27 +187,36 @@ std::string exclusion_reason(const study::ResultsTable& results,
   return results.cell(row, "suspect");
 }
 
-ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
-                             const std::filesystem::path& out_dir,
-                             const InclusionLimits& limits) {
-  const study::SweepSpec spec = study::load_sweep_spec(sweep_dir / "spec.toml");
-  const std::vector<study::SweepCase> runs = spec.expand();
-  const study::ResultsTable results = study::read_results(sweep_dir / "results.csv");
+namespace {
+
+/// Row of each case id in the results; InputError for a case the spec does not have.
+std::map<std::string, std::size_t> rows_by_case(const study::ResultsTable& results,
+                                                const std::vector<study::SweepCase>& runs,
+                                                const std::filesystem::path& spec_file) {
+  std::set<std::string> ids;
+  for (const auto& run : runs) ids.insert(run.id);
   std::map<std::string, std::size_t> row_of;
   for (std::size_t r = 0; r < results.size(); ++r) {
     const std::string& id = results.cell(r, "case_id");
-    if (std::none_of(runs.begin(), runs.end(), [&](const auto& c) { return c.id == id; })) {
+    if (ids.count(id) == 0) {
       throw_invalid("case_id", id,
-                    fmt::format("a case of {} (results of another spec?)",
-                                (sweep_dir / "spec.toml").string()));
+                    fmt::format("a case of {} (results of another spec?)", spec_file.string()));
     }
     row_of[id] = r;
   }
-  // Columns: leading, inputs, then the results.csv columns that are results (not case_id,
-  // status, the swept settings or a repeated input).
-  json columns = leading_columns();
-  std::vector<std::string> copied;
-  const std::vector<std::string> swept = spec.swept_keys();
+  return row_of;
+}
+
+/// The dataset's columns: leading, inputs, then the results.csv columns that are results (not
+/// case_id, status, the swept settings or a repeated input), which are copied as written.
+struct ExportColumns {
+  json described;                   ///< columns.json
+  std::vector<std::string> copied;  ///< result columns copied from results.csv
+};
+
+ExportColumns export_columns(const study::ResultsTable& results,
+                             const std::vector<std::string>& swept) {
+  ExportColumns out{leading_columns(), {}};
   for (const auto& name : results.columns()) {
     const bool is_input =
         std::any_of(kInputColumns.begin(), kInputColumns.end(),
@@ -214,11 +224,59 @@ ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
         std::find(kRepeatedInputs.begin(), kRepeatedInputs.end(), name) != kRepeatedInputs.end();
     const bool is_key = std::find(swept.begin(), swept.end(), name) != swept.end();
     if (name == "case_id" || name == "status" || is_input || is_key) continue;
-    copied.push_back(name);
-    columns.push_back(result_column(name));
+    out.copied.push_back(name);
+    out.described.push_back(result_column(name));
   }
+  return out;
+}
+
+/// Counts row r in the summary; an included row adds its e_error / e to rel_errors.
+void count_row(const study::ResultsTable& results,
+               std::size_t r,
+               const std::string& reason,
+               ExportSummary& summary,
+               std::vector<double>& rel_errors) {
+  ++summary.rows;
+  summary.cpu_s += parse_double(results.cell(r, "wall_s")).value_or(0.0);
+  summary.builds.insert(results.has_column("corlab_build") ? results.cell(r, "corlab_build")
+                                                           : "unknown (before corlab_build)");
+  if (!reason.empty()) {
+    ++summary.excluded[reason_kind(reason)];
+    return;
+  }
+  ++summary.included;
+  const double e = *parse_double(results.cell(r, "e"));
+  const auto err = parse_double(results.cell(r, "e_error"));
+  if (err && std::isfinite(*err)) rel_errors.push_back(*err / e);
+}
+
+void write_summary(const std::filesystem::path& file,
+                   const ExportSummary& summary,
+                   const InclusionLimits& limits) {
+  const json s{{"design_points", summary.design_points},
+               {"rows", summary.rows},
+               {"included", summary.included},
+               {"excluded", summary.excluded},
+               {"cpu_s", summary.cpu_s},
+               {"e_error_relative_max", summary.e_error_max},
+               {"e_error_relative_median", summary.e_error_median},
+               {"builds", summary.builds},
+               {"energy_balance_limit", limits.energy_balance}};
+  write_text(file, s.dump(2) + "\n");
+}
+
+}  // namespace
+
+ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
+                             const std::filesystem::path& out_dir,
+                             const InclusionLimits& limits) {
+  const study::SweepSpec spec = study::load_sweep_spec(sweep_dir / "spec.toml");
+  const std::vector<study::SweepCase> runs = spec.expand();
+  const study::ResultsTable results = study::read_results(sweep_dir / "results.csv");
+  const auto row_of = rows_by_case(results, runs, sweep_dir / "spec.toml");
+  const ExportColumns columns = export_columns(results, spec.swept_keys());
   std::vector<std::string> header;
-  for (const auto& c : columns) header.push_back(c["name"].get<std::string>());
+  for (const auto& c : columns.described) header.push_back(c["name"].get<std::string>());
 
   std::filesystem::create_directories(out_dir);
   ExportSummary summary;
@@ -237,41 +295,22 @@ ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
     for (const auto& c : kInputColumns) {
       fields.push_back(fem::field_text(c.value(RunInputs{runs[i].config, d})));
     }
-    for (const auto& name : copied) fields.push_back(results.cell(r, name));
+    for (const auto& name : columns.copied) fields.push_back(results.cell(r, name));
     csv += study::csv_line(fields) + "\n";
-    json line{{"case_id", runs[i].id},
-              {"design_index", i},
-              {"config", fem::config_to_json(runs[i].config)}};
-    configs += line.dump() + "\n";
-    ++summary.rows;
-    summary.cpu_s += parse_double(results.cell(r, "wall_s")).value_or(0.0);
-    summary.builds.insert(results.has_column("corlab_build") ? results.cell(r, "corlab_build")
-                                                             : "unknown (before corlab_build)");
-    if (reason.empty()) {
-      ++summary.included;
-      const double e = *parse_double(results.cell(r, "e"));
-      const auto err = parse_double(results.cell(r, "e_error"));
-      if (err && std::isfinite(*err)) rel_errors.push_back(*err / e);
-    } else {
-      ++summary.excluded[reason_kind(reason)];
-    }
+    configs += json{{"case_id", runs[i].id},
+                    {"design_index", i},
+                    {"config", fem::config_to_json(runs[i].config)}}
+                   .dump() +
+               "\n";
+    count_row(results, r, reason, summary, rel_errors);
   }
   summary.e_error_max =
       rel_errors.empty() ? std::nan("") : *std::max_element(rel_errors.begin(), rel_errors.end());
   summary.e_error_median = median(rel_errors);
   write_text(out_dir / "dataset.csv", csv);
-  write_text(out_dir / "columns.json", columns.dump(2) + "\n");
+  write_text(out_dir / "columns.json", columns.described.dump(2) + "\n");
   write_text(out_dir / "configs.jsonl", configs);
-  json s{{"design_points", summary.design_points},
-         {"rows", summary.rows},
-         {"included", summary.included},
-         {"excluded", summary.excluded},
-         {"cpu_s", summary.cpu_s},
-         {"e_error_relative_max", summary.e_error_max},
-         {"e_error_relative_median", summary.e_error_median},
-         {"builds", summary.builds},
-         {"energy_balance_limit", limits.energy_balance}};
-  write_text(out_dir / "summary.json", s.dump(2) + "\n");
+  write_summary(out_dir / "summary.json", summary, limits);
   return summary;
 }
 

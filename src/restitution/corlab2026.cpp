@@ -48,24 +48,36 @@ Corlab2026Coefficients corlab2026_fitted() {
                                 .gamma_substrate = 0.25104609918956017};
 }
 
-Corlab2026Inputs corlab2026_inputs(const Material& sphere,
-                                   const Material& substrate,
-                                   double velocity) {
+Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate) {
   const FirstYield y = first_yield(sphere, substrate);
   const Material& first = y.sphere_first ? sphere : substrate;
   const Material& other = y.sphere_first ? substrate : sphere;
   const double e_star = effective_modulus(sphere, substrate);
   const double p_other = body_yield_pressure(other);
-  Corlab2026Inputs in;
-  in.velocity_ratio = velocity / y.velocity;
-  in.velocity_ratio_other =
-      std::isfinite(p_other) ? velocity / thornton_yield_velocity(p_other, e_star, sphere.density)
-                             : 0.0;
-  in.hardening_first = first.hardening_modulus / e_star;
-  in.hardening_other = other.yield_stress ? other.hardening_modulus / e_star : 0.0;
-  in.damage_at_yield = sphere.density * y.velocity * y.velocity / y.pressure;
-  in.other_is_sphere = !y.sphere_first;
-  return in;
+  return Corlab2026Pair{
+      .yield_velocity = y.velocity,
+      .yield_velocity_other = std::isfinite(p_other)
+                                  ? thornton_yield_velocity(p_other, e_star, sphere.density)
+                                  : std::numeric_limits<double>::infinity(),
+      .hardening_first = first.hardening_modulus / e_star,
+      .hardening_other = other.yield_stress ? other.hardening_modulus / e_star : 0.0,
+      .damage_at_yield = sphere.density * y.velocity * y.velocity / y.pressure,
+      .other_is_sphere = !y.sphere_first};
+}
+
+Corlab2026Inputs corlab2026_inputs(const Corlab2026Pair& pair, double velocity) {
+  return Corlab2026Inputs{.velocity_ratio = velocity / pair.yield_velocity,
+                          .velocity_ratio_other = velocity / pair.yield_velocity_other,
+                          .hardening_first = pair.hardening_first,
+                          .hardening_other = pair.hardening_other,
+                          .damage_at_yield = pair.damage_at_yield,
+                          .other_is_sphere = pair.other_is_sphere};
+}
+
+Corlab2026Inputs corlab2026_inputs(const Material& sphere,
+                                   const Material& substrate,
+                                   double velocity) {
+  return corlab2026_inputs(corlab2026_pair(sphere, substrate), velocity);
 }
 
 double corlab2026_restitution(const Corlab2026Inputs& in, const Corlab2026Coefficients& k) {
@@ -77,10 +89,10 @@ double corlab2026_restitution(const Corlab2026Inputs& in, const Corlab2026Coeffi
          std::pow(thornton_factor(in.velocity_ratio_other, in.hardening_other, k), gamma) / crater;
 }
 
-double Corlab2026::yield_velocity() const { return first_yield(sphere, substrate).velocity; }
+double Corlab2026::yield_velocity() const { return pair.yield_velocity; }
 
 double Corlab2026::cor(double velocity) const {
-  return corlab2026_restitution(corlab2026_inputs(sphere, substrate, velocity), coefficients);
+  return corlab2026_restitution(corlab2026_inputs(pair, velocity), coefficients);
 }
 
 }  // namespace corlab::restitution

@@ -266,8 +266,8 @@ void add_corlab2026(std::vector<Registration>& r) {
                           "number) and Tabor's representative strain",
            .clamped_by_default = true},
        [](const ImpactPair&, bool, const FactoryContext& ctx) -> Model::Kernel {
-         return Corlab2026{
-             .sphere = ctx.sphere, .substrate = ctx.substrate, .coefficients = corlab2026_fitted()};
+         return Corlab2026{.pair = corlab2026_pair(ctx.sphere, ctx.substrate),
+                           .coefficients = corlab2026_fitted()};
        }});
 }
 

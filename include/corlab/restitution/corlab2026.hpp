@@ -49,7 +49,23 @@ struct Corlab2026Inputs {
   bool other_is_sphere = false;       ///< the sphere yields second (else the substrate)
 };
 
-/// The inputs of a sphere hitting a substrate at v > 0 [m/s] (materials not validated).
+/// What the model needs of a material pair, independent of the speed.
+struct Corlab2026Pair {
+  double yield_velocity = 0.0;        ///< v_y of the pair [m/s]
+  double yield_velocity_other = 0.0;  ///< v_y,o of the other body [m/s] (inf: elastic)
+  double hardening_first = 0.0;       ///< H / E* of the body that yields first [-]
+  double hardening_other = 0.0;       ///< H / E* of the other body [-]
+  double damage_at_yield = 0.0;       ///< rho_sphere v_y^2 / p_y [-]
+  bool other_is_sphere = false;       ///< the sphere yields second
+};
+
+/// The pair quantities of a sphere and a substrate (materials not validated).
+Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate);
+
+/// The inputs of the pair at speed v > 0 [m/s].
+Corlab2026Inputs corlab2026_inputs(const Corlab2026Pair& pair, double velocity);
+
+/// Same from the materials.
 Corlab2026Inputs corlab2026_inputs(const Material& sphere,
                                    const Material& substrate,
                                    double velocity);
@@ -57,10 +73,9 @@ Corlab2026Inputs corlab2026_inputs(const Material& sphere,
 /// e [-] for the given inputs and coefficients.
 double corlab2026_restitution(const Corlab2026Inputs& in, const Corlab2026Coefficients& k);
 
-/// The model bound to a material pair (registry name "corlab2026").
+/// The model bound to a material pair (registry name "corlab2026"). Cheap to copy.
 struct Corlab2026 {
-  Material sphere;
-  Material substrate;
+  Corlab2026Pair pair;
   Corlab2026Coefficients coefficients;
   /// First yield of the pair [m/s] (e = 1 at and below it).
   double yield_velocity() const;

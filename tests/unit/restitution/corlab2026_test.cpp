@@ -46,7 +46,7 @@ TEST(Corlab2026, OneAtFirstYieldAndContinuousThere) {
   const Corlab2026Coefficients k = corlab2026_fitted();
   for (int i = 0; i < 200; ++i) {
     const RandomPair p = random_pair(rng);
-    const Corlab2026 m{.sphere = p.sphere, .substrate = p.substrate, .coefficients = k};
+    const Corlab2026 m{.pair = corlab2026_pair(p.sphere, p.substrate), .coefficients = k};
     const double vy = m.yield_velocity();
     EXPECT_DOUBLE_EQ(vy, first_yield(p.sphere, p.substrate).velocity);
     EXPECT_EQ(m.cor(vy), 1.0);
@@ -61,7 +61,7 @@ TEST(Corlab2026, WithinBoundsAndNonIncreasingInVelocity) {
   const Corlab2026Coefficients k = corlab2026_fitted();
   for (int i = 0; i < 300; ++i) {
     const RandomPair p = random_pair(rng);
-    const Corlab2026 m{.sphere = p.sphere, .substrate = p.substrate, .coefficients = k};
+    const Corlab2026 m{.pair = corlab2026_pair(p.sphere, p.substrate), .coefficients = k};
     double previous = 1.0;
     for (double x = 1.0; x < 1e6; x *= 1.05) {
       const double e = m.cor(x * m.yield_velocity());
@@ -91,8 +91,8 @@ TEST(Corlab2026, RegisteredWithItsStatusAndTheShippedCoefficients) {
   const Material sphere = body(210e9, 0.3, std::nullopt, 0.0);
   const Material substrate = body(210e9, 0.3, 500e6, 0.0);
   const Model m = make_model("corlab2026", sphere, substrate);
-  const Corlab2026 direct{
-      .sphere = sphere, .substrate = substrate, .coefficients = corlab2026_fitted()};
+  const Corlab2026 direct{.pair = corlab2026_pair(sphere, substrate),
+                          .coefficients = corlab2026_fitted()};
   for (const double v : {0.01, 0.1, 1.0, 5.0, 50.0}) EXPECT_EQ(m.cor(v), direct.cor(v));
 
   std::ifstream in(CORLAB_SOURCE_DIR "/data/fe_restitution/model_fit.json");

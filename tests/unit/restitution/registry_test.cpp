@@ -38,8 +38,9 @@ std::vector<double> log_grid(double lo, double hi, int n) {
 
 TEST(Registry, CatalogNamesAndMetadata) {
   const std::vector<std::string> expected = {
-      "ma2023", "ma2023-exact", "thornton1997", "thornton1997-cnu", "thornton1997-sy", "jg1",
-      "jg2",    "jg2010-fit",   "jg2010-fit-c", "wu2003",           "johnson1985"};
+      "ma2023",          "ma2023-exact", "thornton1997", "thornton1997-cnu",
+      "thornton1997-sy", "jg1",          "jg2",          "jg2010-fit",
+      "jg2010-fit-c",    "wu2003",       "johnson1985",  "corlab2026"};
   EXPECT_EQ(model_names(), expected);
   for (const auto& info : model_catalog()) {
     EXPECT_FALSE(info.title.empty()) << info.name;
@@ -56,13 +57,14 @@ TEST(Registry, CatalogNamesAndMetadata) {
   EXPECT_EQ(to_string(Status::kUnverified), "unverified");
   EXPECT_EQ(to_string(Status::kVerifiedPaper), "verified-paper");
   EXPECT_EQ(to_string(Status::kVerifiedSecondSource), "verified-second-source");
+  EXPECT_EQ(to_string(Status::kVerifiedDataset), "verified-dataset");
 }
 
 TEST(Registry, UnknownModelMessage) {
   expect_input_error([] { (void)model_info("foo"); },
                      "invalid model = 'foo': must be one of [ma2023, ma2023-exact, thornton1997, "
                      "thornton1997-cnu, thornton1997-sy, jg1, jg2, jg2010-fit, jg2010-fit-c, "
-                     "wu2003, johnson1985]");
+                     "wu2003, johnson1985, corlab2026]");
   EXPECT_THROW((void)make_model("", alumina(), aluminium()), InputError);
 }
 
