@@ -54,18 +54,33 @@ def material_specs(table, i):
     return spec("sphere"), spec("substrate")
 
 
-def predictions(table, model):
-    """e of `model` at every row (nan where the model cannot be evaluated)."""
-    out = np.full(len(table["e"]), np.nan)
+def predict_rows(model, spheres, substrates, velocities):
+    """e of `model` for each (sphere spec, substrate spec, v) (nan where it cannot be
+    evaluated); unverified models and calibration warnings are scored all the same."""
+    out = np.full(len(velocities), np.nan)
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore", UserWarning)  # unverified models: scored all the same
-        for i in range(len(out)):
-            sphere, substrate = material_specs(table, i)
+        warnings.simplefilter("ignore", UserWarning)
+        for i, (sphere, substrate, v) in enumerate(zip(spheres, substrates, velocities)):
             try:
-                out[i] = _core.predict(model, sphere, substrate, float(table["velocity"][i]))
+                out[i] = _core.predict(model, sphere, substrate, float(v))
             except ValueError:
                 pass
     return out
+
+
+def predictions(table, model):
+    """e of `model` at every row of a dataset table (nan where it cannot be evaluated)."""
+    specs = [material_specs(table, i) for i in range(len(table["e"]))]
+    return predict_rows(model, [s[0] for s in specs], [s[1] for s in specs], table["velocity"])
+
+
+def versus(e_fe, e_ours, e_other):
+    """How two models' relative errors against e_fe compare: (stats of ours, stats of the
+    other, cases where ours is at least as close, cases)."""
+    ours, other = (e_ours - e_fe) / e_fe, (e_other - e_fe) / e_fe
+    ok = np.isfinite(ours) & np.isfinite(other)
+    return (error_stats(ours[ok]), error_stats(other[ok]),
+            int(np.sum(np.abs(ours[ok]) <= np.abs(other[ok]))), int(ok.sum()))
 
 
 def in_model_box(table, info):
