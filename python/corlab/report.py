@@ -390,6 +390,15 @@ def dataset_section(fit, out_dir):
             regimes.append([esc(f"{scope}: {regime}"), *_score_cells(s)])
     coef = [[esc(n), fmt(v, 5), f"[{fmt(model['confidence_95'][n][0], 4)}, "
              f"{fmt(model['confidence_95'][n][1], 4)}]"] for n, v in model["coefficients"].items()]
+    figure = ""
+    try:
+        os.makedirs(os.path.join(out_dir, "figures"), exist_ok=True)
+        dataset.error_figure(dataset.read(os.path.join(folder, "dataset.csv")),
+                             os.path.join(out_dir, "figures", "dataset_model_errors.png"))
+        figure = ('<p><img src="figures/dataset_model_errors.png" alt="error of every model '
+                  'against the FE dataset"></p>')
+    except Exception as err:  # a broken figure must not lose the rest of the report
+        print(f"corlab.report: dataset figure failed: {err}", file=sys.stderr)
     t2_rows, better, cases = table2_versus_eq19(out_dir)
     t2 = ""
     if cases:
@@ -404,6 +413,7 @@ a yielding sphere and linear hardening. corlab's own model <code>corlab2026</cod
 ({esc(model['corner'])}) are held out. Relative errors (e_model - e_FE)/e_FE; a model's own box
 is its calibration box and its assumptions (elastic sphere, perfectly plastic substrate).</p>
 {table(head, rows)}
+{figure}
 <h3>corlab2026: held-out errors by regime</h3>
 {table(["held-out set: regime", "cases", "RMS", "worst", "bias"], regimes)}
 <p>95 % prediction interval: +-{pct(model['prediction_interval_95'], 1)} of e.</p>
