@@ -23,12 +23,12 @@ from . import _core, dataset
 
 #: Coefficient names, start values and bounds (corlab2026.hpp). c1 < 0.4 keeps e decreasing.
 PARAMETERS = (
-    ("c1", 0.24, 0.0, 0.39),
-    ("phi_max", 2.5, 1.0, 10.0),
-    ("kappa", 3.0, 0.0, 30.0),
-    ("b", 1.0, 0.0, 100.0),
-    ("c", 0.5, 0.05, 3.0),
-    ("gamma_sphere", 0.2, 0.0, 3.0),
+    ("c1", 0.25, 0.0, 0.39),
+    ("phi_max", 2.8, 1.0, 10.0),
+    ("kappa", 2.8, 0.0, 30.0),
+    ("b", 2.0, 0.0, 100.0),
+    ("c", 0.55, 0.05, 3.0),
+    ("gamma_sphere", 0.15, 0.0, 3.0),
     ("gamma_substrate", 0.2, 0.0, 3.0),
 )
 NAMES = tuple(p[0] for p in PARAMETERS)

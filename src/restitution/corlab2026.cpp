@@ -21,11 +21,16 @@ double body_yield_pressure(const Material& body) {
   return jackson_green_c(body.poisson_ratio) * *body.yield_stress;
 }
 
+// Flow stress at Tabor's representative strain over the yield stress, 1 at first yield (x = 1;
+// its rate in ln x stays below 2/5).
+double flow_stress_ratio(double x, double h, const Corlab2026Coefficients& k) {
+  return (1.0 + k.kappa * h * std::pow(x, 0.4)) / (1.0 + k.kappa * h);
+}
+
 // Thornton's factor of one body at x = v / v_y of that body and its hardening h = H / E*.
 double thornton_factor(double x, double h, const Corlab2026Coefficients& k) {
   if (!(x > 1.0)) return 1.0;
-  // Flow stress at the representative strain over the yield stress (rate < 2/5 in ln x).
-  const double hardening = (1.0 + k.kappa * h * std::pow(x, 0.4)) / (1.0 + k.kappa * h);
+  const double hardening = flow_stress_ratio(x, h, k);
   // Before the cap the cavity-model growth (rate <= c1) takes hardening at the power
   // 1 - c1/0.39 (rate < 0.4 (1 - c1/0.39)): the sum stays below 2/5.
   const double c1 = std::min(k.c1, kMaxPressureSlope);
@@ -84,7 +89,10 @@ double corlab2026_restitution(const Corlab2026Inputs& in, const Corlab2026Coeffi
   const double x = in.velocity_ratio;
   if (!(x > 1.0)) return 1.0;
   const double gamma = in.other_is_sphere ? k.gamma_sphere : k.gamma_substrate;
-  const double crater = 1.0 + k.b * std::pow(in.damage_at_yield * (x * x - 1.0), k.c);
+  // The damage number on the flow stress: hardening makes the crater shallower.
+  const double damage =
+      in.damage_at_yield * (x * x - 1.0) / flow_stress_ratio(x, in.hardening_first, k);
+  const double crater = 1.0 + k.b * std::pow(damage, k.c);
   return thornton_factor(x, in.hardening_first, k) *
          std::pow(thornton_factor(in.velocity_ratio_other, in.hardening_other, k), gamma) / crater;
 }

@@ -252,7 +252,7 @@ void add_corlab2026(std::vector<Registration>& r) {
            .citation = "corlab project, docs/theory/corlab_model.md; fitted to the FE restitution "
                        "dataset data/fe_restitution (coefficients: model_fit.json)",
            .equation =
-               "e = T(x, h_w) T(x_o, h_o)^gamma / (1 + b (D_y (x^2 - 1))^c), x = v/v_y (first "
+               "e = T(x, h_w) T(x_o, h_o)^gamma / (1 + b (D_y (x^2 - 1)/g)^c), x = v/v_y (first "
                "yield of the pair), T = e_Thornton(phi^2.5/x), phi = min((1 + c1 ln x) "
                "g^(1 - c1/0.39), phi_max g), g = (1 + kappa h x^0.4)/(1 + kappa h), h = H/E*; "
                "e = 1 for v <= v_y",

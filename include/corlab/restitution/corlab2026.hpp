@@ -13,12 +13,12 @@
 ///   x = v / v_y,   T(x, h) = e_Thornton(phi(x, h)^(5/2) / x)   (T = 1 for x <= 1)
 ///   g(x, h) = (1 + kappa h x^(2/5)) / (1 + kappa h)      (flow stress / yield stress)
 ///   phi(x, h) = min((1 + c1 ln x) g^(1 - c1/0.39), phi_max g)
-///   e = T(x, h_w) T(x_o, h_o)^gamma / (1 + b (D_y (x^2 - 1))^c)
+///   e = T(x, h_w) T(x_o, h_o)^gamma / (1 + b (D_y (x^2 - 1) / g(x, h_w))^c)
 ///
 /// Both branches of phi grow slower than x^(2/5) (c1 <= 0.39), so phi^(5/2)/x and e decrease.
 /// h = H / E* of a body, w the body that yields first, o the other one (x_o = v / v_y,o;
 /// gamma = gamma_sphere or gamma_substrate after which body that is; T = 1 if it is elastic) and
-/// D_y = rho_sphere v_y^2 / p_y the damage number at first yield.
+/// D_y = rho_sphere v_y^2 / p_y the damage number at first yield (over g: on the flow stress).
 
 #include "corlab/materials/material.hpp"
 
