@@ -44,13 +44,13 @@ double thornton_factor(double x, double h, const Corlab2026Coefficients& k) {
 
 Corlab2026Coefficients corlab2026_fitted() {
   // data/fe_restitution/model_fit.json, "coefficients" (python/corlab/model_fit.py).
-  return Corlab2026Coefficients{.c1 = 0.2294103898434331,
-                                .phi_max = 2.574849878827054,
-                                .kappa = 3.3058320536630252,
-                                .b = 1.2221713125232803,
-                                .c = 0.5065122294211695,
-                                .gamma_sphere = 0.15651214710140718,
-                                .gamma_substrate = 0.25104609918956017};
+  return Corlab2026Coefficients{.c1 = 0.2530757238871905,
+                                .phi_max = 2.811734766581207,
+                                .kappa = 2.8129834990542295,
+                                .b = 2.6542604115450823,
+                                .c = 0.5824081661312523,
+                                .gamma_sphere = 0.16144692526065815,
+                                .gamma_substrate = 0.20584847966499523};
 }
 
 Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate) {
