@@ -19,10 +19,9 @@ import os
 import platform
 import sys
 
-import numpy as np
-
-from . import _core, dataset, figures
+from . import figures
 from .html_table import esc, fmt, pct, table
+from .report_dataset import dataset_section
 
 COARSE_OMITS = [
     "Contact mesh: h_min = 1 mm with h <= a_max/4 (paper and paper preset: 0.25 mm, h <= "
@@ -343,83 +342,6 @@ def discussion(fit):
         "treat it as indicative only. Thornton uses p_y = 1.6 sigma_y; which p_y the paper used "
         "is not stated.")
     return "<ul>" + "".join(f"<li>{i}</li>" for i in items) + "</ul>"
-
-
-def _score_cells(s):
-    return [str(s["n"]), pct(s["rms"], 1), pct(s["worst"], 1), pct(s["bias"], 1)]
-
-
-def table2_versus_eq19(out_dir):
-    """corlab2026 against Ma eq. 19 (ma2023) on the Table 2 runs of this directory. Returns
-    (rows of the summary table, cases where corlab2026 is at least as close, cases)."""
-    path = os.path.join(out_dir, "table2", "results.csv")
-    if not os.path.exists(path):
-        return [], 0, 0
-    t = _core.read_results(path)
-    ok = np.array([s == "ok" for s in t["status"]]) & np.isfinite(t["sigma_y"])
-    # Table 2: E = 210 GPa, nu = 0.3 for both bodies, substrate rho = 7850 kg/m^3.
-    e_mod = t["E_star"][ok] * 2 * (1 - 0.09)
-    spheres = [f"E={e!r},nu=0.3,rho={r!r}" for e, r in zip(e_mod, t["sphere_rho"][ok])]
-    substrates = [f"E={e!r},nu=0.3,rho=7850,sy={y!r}" for e, y in zip(e_mod, t["sigma_y"][ok])]
-    e = {n: dataset.predict_rows(n, spheres, substrates, t["velocity"][ok])
-         for n in ("corlab2026", "ma2023")}
-    ours, paper, better, cases = dataset.versus(t["e"][ok], e["corlab2026"], e["ma2023"])
-    rows = [[esc("corlab2026"), *_score_cells(ours)],
-            [esc("ma2023 (eq. 19)"), *_score_cells(paper)]]
-    return rows, better, cases
-
-
-def dataset_section(fit, out_dir):
-    """Beyond the paper: corlab's FE dataset, its model and every model's scores on it."""
-    folder = fit.get("dataset_dir") or ""
-    try:
-        with open(os.path.join(folder, "model_fit.json")) as f:
-            model = json.load(f)
-        with open(os.path.join(folder, "model_scores.json")) as f:
-            scores = json.load(f)
-    except OSError:
-        return "<p><i>No FE dataset found (data/fe_restitution).</i></p>"
-    head = ["model", "cases", "RMS", "worst", "bias"]
-    rows = []
-    for name, s in scores["scores"].items():
-        for scope in ("all cases", "own box"):
-            rows.append([esc(f"{name} ({scope})"), *_score_cells(s[scope]["all"])])
-    regimes = []
-    for scope in ("random holdout", "corner holdout"):
-        for regime, s in model["scores"][scope].items():
-            regimes.append([esc(f"{scope}: {regime}"), *_score_cells(s)])
-    coef = [[esc(n), fmt(v, 5), f"[{fmt(model['confidence_95'][n][0], 4)}, "
-             f"{fmt(model['confidence_95'][n][1], 4)}]"] for n, v in model["coefficients"].items()]
-    figure = ""
-    try:
-        os.makedirs(os.path.join(out_dir, "figures"), exist_ok=True)
-        dataset.error_figure(dataset.read(os.path.join(folder, "dataset.csv")),
-                             os.path.join(out_dir, "figures", "dataset_model_errors.png"))
-        figure = ('<p><img src="figures/dataset_model_errors.png" alt="error of every model '
-                  'against the FE dataset"></p>')
-    except Exception as err:  # a broken figure must not lose the rest of the report
-        print(f"corlab.report: dataset figure failed: {err}", file=sys.stderr)
-    t2_rows, better, cases = table2_versus_eq19(out_dir)
-    t2 = ""
-    if cases:
-        t2 = (f"<h3>The paper's corner: the Table 2 runs of this directory</h3><p>corlab2026 is "
-              f"at least as close to the FE value as Ma eq. 19 in {better} of {cases} cases.</p>"
-              + table(["model", "cases", "RMS", "worst", "bias"], t2_rows))
-    return f"""<p>{scores['rows']} FE runs of corlab's open dataset (<code>{esc(folder)}</code>,
-docs/theory/dataset.md): a Sobol design over k2, v/v_y, the modulus ratio, both Poisson ratios,
-a yielding sphere and linear hardening. corlab's own model <code>corlab2026</code>
-(docs/theory/corlab_model.md) is fitted on {model['rows_train']} of them; a random
-{model['rows_random_holdout']} and a corner of {model['rows_corner_holdout']}
-({esc(model['corner'])}) are held out. Relative errors (e_model - e_FE)/e_FE; a model's own box
-is its calibration box and its assumptions (elastic sphere, perfectly plastic substrate).</p>
-{table(head, rows)}
-{figure}
-<h3>corlab2026: held-out errors by regime</h3>
-{table(["held-out set: regime", "cases", "RMS", "worst", "bias"], regimes)}
-<p>95 % prediction interval: +-{pct(model['prediction_interval_95'], 1)} of e.</p>
-<h3>corlab2026 coefficients (95 % bootstrap intervals)</h3>
-{table(["coefficient", "value", "95 % interval"], coef)}
-{t2}"""
 
 
 def versions():

@@ -88,28 +88,20 @@ py::dict info_dict(const restitution::ModelInfo& info) {
 // The coefficient struct as a dict and back (names as in corlab2026.hpp).
 py::dict coefficients_dict(const restitution::Corlab2026Coefficients& k) {
   py::dict d;
-  d["c1"] = k.c1;
-  d["phi_max"] = k.phi_max;
-  d["kappa"] = k.kappa;
-  d["b"] = k.b;
-  d["c"] = k.c;
-  d["gamma_sphere"] = k.gamma_sphere;
-  d["gamma_substrate"] = k.gamma_substrate;
+  for (const auto& [name, member] : restitution::kCorlab2026Coefficients) {
+    d[py::str(std::string(name))] = k.*member;
+  }
   return d;
 }
 
 restitution::Corlab2026Coefficients coefficients_from(const py::dict& d) {
-  auto get = [&d](const char* key) {
-    if (!d.contains(key)) throw_invalid("coefficients", key, "a key of the dict (missing)");
-    return d[key].cast<double>();
-  };
-  return {.c1 = get("c1"),
-          .phi_max = get("phi_max"),
-          .kappa = get("kappa"),
-          .b = get("b"),
-          .c = get("c"),
-          .gamma_sphere = get("gamma_sphere"),
-          .gamma_substrate = get("gamma_substrate")};
+  restitution::Corlab2026Coefficients k;
+  for (const auto& [name, member] : restitution::kCorlab2026Coefficients) {
+    const py::str key{std::string(name)};
+    if (!d.contains(key)) throw_invalid("coefficients", name, "a key of the dict (missing)");
+    k.*member = d[key].cast<double>();
+  }
+  return k;
 }
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;

@@ -56,20 +56,6 @@ std::string setting_text(const std::string& key, const py::handle& value) {
   return py::str(value).cast<std::string>();
 }
 
-const char* kind_name(fem::FieldKind kind) {
-  switch (kind) {
-    case fem::FieldKind::real:
-      return "real";
-    case fem::FieldKind::integer:
-      return "integer";
-    case fem::FieldKind::boolean:
-      return "boolean";
-    case fem::FieldKind::text:
-      return "text";
-  }
-  return "text";
-}
-
 py::list result_fields_list() {
   py::list fields;
   for (const auto& f : fem::result_fields()) {
@@ -77,7 +63,7 @@ py::list result_fields_list() {
     d["name"] = std::string(f.name);
     d["unit"] = std::string(f.unit);
     d["description"] = std::string(f.description);
-    d["kind"] = kind_name(f.kind);
+    d["kind"] = std::string(fem::to_string(f.kind));
     d["in_summary"] = (f.outputs & fem::kSummary) != 0;
     d["in_csv"] = (f.outputs & fem::kCsv) != 0;
     d["machine_dependent"] = f.machine_dependent;

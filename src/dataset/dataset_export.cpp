@@ -106,22 +106,8 @@ const std::array<InputColumn, 25> kInputColumns{{
 // Result columns that repeat an input column under another name.
 constexpr std::array<std::string_view, 1> kRepeatedInputs{"sigma_y"};
 
-std::string_view kind_name(FieldKind k) {
-  switch (k) {
-    case FieldKind::real:
-      return "real";
-    case FieldKind::integer:
-      return "integer";
-    case FieldKind::boolean:
-      return "boolean";
-    case FieldKind::text:
-      return "text";
-  }
-  return "text";
-}
-
 json column(std::string_view name, std::string_view unit, FieldKind kind, std::string_view doc) {
-  return json{{"name", name}, {"unit", unit}, {"kind", kind_name(kind)}, {"description", doc}};
+  return json{{"name", name}, {"unit", unit}, {"kind", fem::to_string(kind)}, {"description", doc}};
 }
 
 /// columns.json entries of the columns before the inputs, of the inputs, of the swept keys.

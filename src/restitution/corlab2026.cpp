@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "corlab/restitution/first_yield.hpp"
-#include "corlab/restitution/jackson_green2005.hpp"
 #include "corlab/restitution/thornton1997.hpp"
 
 namespace corlab::restitution {
@@ -14,12 +13,6 @@ namespace {
 // phi^(5/2)/x decreases while d ln phi / d ln x < 2/5; the hardening exponent below keeps the
 // rate under this bound (c1 <= it: the fit's bound).
 constexpr double kMaxPressureSlope = 0.39;
-
-// Hertz peak pressure at which `body` first yields; infinite for an elastic body [Pa].
-double body_yield_pressure(const Material& body) {
-  if (!body.yield_stress) return std::numeric_limits<double>::infinity();
-  return jackson_green_c(body.poisson_ratio) * *body.yield_stress;
-}
 
 // Flow stress at Tabor's representative strain over the yield stress, 1 at first yield (x = 1;
 // its rate in ln x stays below 2/5).
@@ -58,7 +51,7 @@ Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate
   const Material& first = y.sphere_first ? sphere : substrate;
   const Material& other = y.sphere_first ? substrate : sphere;
   const double e_star = effective_modulus(sphere, substrate);
-  const double p_other = body_yield_pressure(other);
+  const double p_other = first_yield_pressure(other);
   return Corlab2026Pair{
       .yield_velocity = y.velocity,
       .yield_velocity_other = std::isfinite(p_other)

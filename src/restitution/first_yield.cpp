@@ -6,19 +6,14 @@
 #include "corlab/restitution/thornton1997.hpp"
 
 namespace corlab::restitution {
-namespace {
-
-// Hertz peak pressure at which `body` first yields; infinite for an elastic body [Pa].
-double yield_pressure(const Material& body) {
+double first_yield_pressure(const Material& body) {
   if (!body.yield_stress) return std::numeric_limits<double>::infinity();
   return jackson_green_c(body.poisson_ratio) * *body.yield_stress;
 }
 
-}  // namespace
-
 FirstYield first_yield(const Material& sphere, const Material& substrate) {
-  const double p_sphere = yield_pressure(sphere);
-  const double p_substrate = yield_pressure(substrate);
+  const double p_sphere = first_yield_pressure(sphere);
+  const double p_substrate = first_yield_pressure(substrate);
   FirstYield y;
   y.sphere_first = p_sphere < p_substrate;
   y.pressure = y.sphere_first ? p_sphere : p_substrate;

@@ -20,6 +20,10 @@
 /// gamma = gamma_sphere or gamma_substrate after which body that is; T = 1 if it is elastic) and
 /// D_y = rho_sphere v_y^2 / p_y the damage number at first yield (over g: on the flow stress).
 
+#include <array>
+#include <string_view>
+#include <utility>
+
 #include "corlab/materials/material.hpp"
 
 namespace corlab::restitution {
@@ -34,6 +38,17 @@ struct Corlab2026Coefficients {
   double gamma_sphere = 0.0;     ///< weight of a yielding sphere that yields second
   double gamma_substrate = 0.0;  ///< weight of a substrate that yields second
 };
+
+/// The coefficients by name, in order: the one list that model_fit.json, the Python dicts and the
+/// fit (python/corlab/model_fit.py, a test compares) read.
+inline constexpr std::array<std::pair<std::string_view, double Corlab2026Coefficients::*>, 7>
+    kCorlab2026Coefficients{{{"c1", &Corlab2026Coefficients::c1},
+                             {"phi_max", &Corlab2026Coefficients::phi_max},
+                             {"kappa", &Corlab2026Coefficients::kappa},
+                             {"b", &Corlab2026Coefficients::b},
+                             {"c", &Corlab2026Coefficients::c},
+                             {"gamma_sphere", &Corlab2026Coefficients::gamma_sphere},
+                             {"gamma_substrate", &Corlab2026Coefficients::gamma_substrate}}};
 
 /// The coefficients fitted to the shipped dataset (data/fe_restitution/model_fit.json; a test
 /// checks that they are the file's and that refitting the shipped data gives them).

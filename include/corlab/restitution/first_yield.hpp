@@ -17,6 +17,10 @@ struct FirstYield {
   bool sphere_first = false;  ///< the sphere yields first (else the substrate)
 };
 
+/// Hertz peak pressure at which `body` first yields, C(nu) sigma_y; infinite for an elastic
+/// body [Pa].
+double first_yield_pressure(const Material& body);
+
 /// First yield of a sphere hitting a substrate. At least one body must have a yield stress;
 /// a body without one never yields. Inputs are not validated (callers validate materials).
 FirstYield first_yield(const Material& sphere, const Material& substrate);

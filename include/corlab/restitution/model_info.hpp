@@ -21,7 +21,7 @@ enum class Status {
   kVerifiedSecondSource,  ///< confirmed by a second public source or an independent derivation
   /// corlab's own model: fitted to and scored on held-out runs of corlab's FE dataset
   kVerifiedDataset,
-  kUnverified,            ///< constants or form not confirmed; do not treat as exact
+  kUnverified,  ///< constants or form not confirmed; do not treat as exact
 };
 
 /// "verified-paper", "verified-second-source", "verified-dataset" or "unverified".

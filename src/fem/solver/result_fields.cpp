@@ -158,6 +158,20 @@ const ResultField* find_result_field(std::string_view name) {
   return nullptr;
 }
 
+std::string_view to_string(FieldKind kind) {
+  switch (kind) {
+    case FieldKind::real:
+      return "real";
+    case FieldKind::integer:
+      return "integer";
+    case FieldKind::boolean:
+      return "boolean";
+    case FieldKind::text:
+      return "text";
+  }
+  return "text";
+}
+
 std::string field_text(const FieldValue& value) {
   struct Text {
     std::string operator()(std::monostate) const { return {}; }

@@ -99,13 +99,10 @@ TEST(Corlab2026, RegisteredWithItsStatusAndTheShippedCoefficients) {
   ASSERT_TRUE(in) << "data/fe_restitution/model_fit.json missing";
   const auto json = nlohmann::json::parse(in)["coefficients"];
   const Corlab2026Coefficients k = corlab2026_fitted();
-  EXPECT_DOUBLE_EQ(k.c1, json["c1"].get<double>());
-  EXPECT_DOUBLE_EQ(k.phi_max, json["phi_max"].get<double>());
-  EXPECT_DOUBLE_EQ(k.kappa, json["kappa"].get<double>());
-  EXPECT_DOUBLE_EQ(k.b, json["b"].get<double>());
-  EXPECT_DOUBLE_EQ(k.c, json["c"].get<double>());
-  EXPECT_DOUBLE_EQ(k.gamma_sphere, json["gamma_sphere"].get<double>());
-  EXPECT_DOUBLE_EQ(k.gamma_substrate, json["gamma_substrate"].get<double>());
+  ASSERT_EQ(json.size(), kCorlab2026Coefficients.size());
+  for (const auto& [name, member] : kCorlab2026Coefficients) {
+    EXPECT_DOUBLE_EQ(k.*member, json.at(std::string(name)).get<double>()) << name;
+  }
 }
 
 }  // namespace

@@ -39,6 +39,9 @@ enum FieldOutput : std::uint8_t {
 /// The type of a field's value (for readers: text columns are never parsed as numbers).
 enum class FieldKind : std::uint8_t { real, integer, boolean, text };
 
+/// "real", "integer", "boolean" or "text".
+std::string_view to_string(FieldKind kind);
+
 struct ResultField {
   std::string_view name;         ///< JSON key and CSV column
   std::string_view unit;         ///< SI unit; "-" for dimensionless or a count
