@@ -140,7 +140,6 @@ Plan make_plan(const SweepSpec& spec, const SweepOptions& options) {
   plan.cases = spec.expand();
   plan.swept_keys = spec.swept_keys();
   plan.header = results_header(plan.swept_keys);
-  plan.spec_order = options.spec_order;
   for (const std::size_t i : options.only) {
     if (i >= plan.cases.size()) {
       throw_invalid("case index", static_cast<double>(i),
@@ -151,7 +150,11 @@ Plan make_plan(const SweepSpec& spec, const SweepOptions& options) {
     plan.selected.resize(plan.cases.size());
     std::iota(plan.selected.begin(), plan.selected.end(), std::size_t{0});
   } else {
-    plan.selected = options.only;
+    // A case named twice runs once, in the place of its first mention.
+    std::set<std::size_t> seen;
+    for (const std::size_t i : options.only) {
+      if (seen.insert(i).second) plan.selected.push_back(i);
+    }
   }
   return plan;
 }
@@ -166,7 +169,10 @@ void ensure_directory(const std::filesystem::path& out_dir) {
   }
 }
 
-void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan) {
+void prepare_output(const SweepSpec& spec,
+                    const std::filesystem::path& out_dir,
+                    const SweepOptions& options,
+                    Plan& plan) {
   ensure_directory(out_dir);
   check_same_study(spec, out_dir);
   try {
@@ -204,7 +210,7 @@ void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir,
       plan.pending.push_back(i);
     }
   }
-  if (!plan.spec_order) longest_first(plan);
+  if (!options.spec_order) longest_first(plan);
 }
 
 void longest_first(Plan& plan) {
@@ -314,7 +320,7 @@ SweepSummary run_sweep(const SweepSpec& spec,
   detail::Plan plan = detail::make_plan(spec, options);
   detail::ensure_directory(out_dir);
   const detail::DirectoryLock lock(out_dir);
-  detail::prepare_output(spec, out_dir, plan);
+  detail::prepare_output(spec, out_dir, options, plan);
   const int jobs =
       std::max(1, std::min(worker_count(options.jobs), static_cast<int>(plan.pending.size())));
   detail::Recorder recorder(out_dir / "results.csv", plan, jobs, options.progress);
@@ -344,7 +350,6 @@ std::vector<std::size_t> parse_case_selection(std::string_view text,
                                               std::size_t runs,
                                               std::string_view field) {
   std::vector<std::size_t> out;
-  std::set<std::size_t> seen;
   const std::string constraint = fmt::format(
       "comma-separated case indices or ranges a-b, each in [0, {}] (the spec's runs)", runs - 1);
   auto index = [&](std::string_view token) {
@@ -362,9 +367,7 @@ std::vector<std::size_t> parse_case_selection(std::string_view text,
     const std::size_t lo = index(token.substr(0, dash));
     const std::size_t hi = dash == std::string_view::npos ? lo : index(token.substr(dash + 1));
     if (hi < lo) throw_invalid(field, text, constraint);
-    for (std::size_t i = lo; i <= hi; ++i) {
-      if (seen.insert(i).second) out.push_back(i);
-    }
+    for (std::size_t i = lo; i <= hi; ++i) out.push_back(i);
     begin = end + 1;
   }
   return out;

@@ -62,7 +62,6 @@ struct Plan {
   std::vector<std::size_t> pending;
   int already_done = 0;
   std::vector<std::size_t> selected;  ///< the cases this sweep runs (SweepOptions::only or all)
-  bool spec_order = false;            ///< SweepOptions::spec_order
 };
 
 /// Expands the spec (every process) and applies the options' case selection and order.
@@ -73,8 +72,11 @@ void longest_first(Plan& plan);
 /// Creates out_dir if needed; InputError if that fails.
 void ensure_directory(const std::filesystem::path& out_dir);
 /// Prepares out_dir for writing (writer only): directory, spec.toml, resume of results.csv,
-/// fills plan.pending / plan.already_done.
-void prepare_output(const SweepSpec& spec, const std::filesystem::path& out_dir, Plan& plan);
+/// fills plan.pending / plan.already_done, longest first unless options.spec_order.
+void prepare_output(const SweepSpec& spec,
+                    const std::filesystem::path& out_dir,
+                    const SweepOptions& options,
+                    Plan& plan);
 
 /// Throws InputError unless `out_dir` holds no study or this one (same name and [base]; cases
 /// and grid values may have been added). Call before spec.toml is overwritten.

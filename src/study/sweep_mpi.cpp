@@ -249,7 +249,7 @@ SweepSummary run_sweep_mpi(const SweepSpec& spec,
     try {
       ensure_directory(out_dir);
       lock = std::make_unique<DirectoryLock>(out_dir);
-      prepare_output(spec, out_dir, plan);
+      prepare_output(spec, out_dir, options, plan);
     } catch (const std::exception& err) {
       error = err.what();
     }

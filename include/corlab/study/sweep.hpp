@@ -32,14 +32,14 @@ struct SweepOptions {
   /// Run the pending cases in the spec's order instead of longest first: for a space-filling
   /// design (Sobol) finished over several sessions, whose every prefix is balanced.
   bool spec_order = false;
-  /// Only these cases (indices in the spec's order, 0-based); empty = all. The summary's total
-  /// counts them only. To rerun some rows of a study (e.g. a subset of a dataset).
+  /// Only these cases (indices in the spec's order, 0-based; a repeated index runs once); empty =
+  /// all. The summary's total counts them only. To rerun some rows of a study (a dataset subset).
   std::vector<std::size_t> only;
 };
 
 /// Parses a case selection: comma-separated indices and inclusive ranges ("0-99,512,1000-1023")
-/// of a spec with `runs` cases. Throws InputError naming `field` for a bad token or an index out
-/// of range.
+/// of a spec with `runs` cases, in the order written (repeats kept: SweepOptions::only drops them).
+/// Throws InputError naming `field` for a bad token or an index out of range.
 std::vector<std::size_t> parse_case_selection(std::string_view text,
                                               std::size_t runs,
                                               std::string_view field);

@@ -342,7 +342,7 @@ TEST(Sweep, OnlyRunsTheSelectedCasesAndCountsThemAsTheTotal) {
   const fs::path out = fresh_dir("only");
   FakeSolver solver;
   SweepOptions options = quiet(solver, 1);
-  options.only = parse_case_selection("0,2-3,11", spec.run_count(), "--only");
+  options.only = parse_case_selection("0,2-3,11,3,0", spec.run_count(), "--only");  // repeats
   const SweepSummary summary = run_sweep(spec, out, options);
   EXPECT_EQ(summary.total, 4);
   EXPECT_EQ(summary.ran, 4);
@@ -382,7 +382,7 @@ TEST(Sweep, InOrderRunsTheSpecsOrderElseLongestFirst) {
 }
 
 TEST(Sweep, CaseSelectionRejectsBadTokensAndIndicesOutOfRange) {
-  EXPECT_EQ(parse_case_selection("3,1-2,2", 10, "--only"), (std::vector<std::size_t>{3, 1, 2}));
+  EXPECT_EQ(parse_case_selection("3,1-2,2", 10, "--only"), (std::vector<std::size_t>{3, 1, 2, 2}));
   for (const char* bad : {"", "1,", "a", "5-2", "10", "-1", "1.5", "0-10"}) {
     try {
       (void)parse_case_selection(bad, 10, "--only");
