@@ -26,10 +26,14 @@ PARAMETERS = (
     ("c1", 0.25, 0.0, 0.39),
     ("phi_max", 2.8, 1.0, 10.0),
     ("kappa", 2.8, 0.0, 30.0),
+    ("kappa_cavity", 2.8, 0.0, 30.0),
     ("b", 2.0, 0.0, 100.0),
     ("c", 0.55, 0.05, 3.0),
     ("gamma_sphere", 0.15, 0.0, 3.0),
     ("gamma_substrate", 0.2, 0.0, 3.0),
+    ("compliance_first", 0.0, -5.0, 5.0),
+    ("compliance_other", 0.0, -5.0, 5.0),
+    ("flattening", 1.0, 0.01, 30.0),
 )
 NAMES = tuple(p[0] for p in PARAMETERS)
 
@@ -40,16 +44,11 @@ BOOTSTRAP = 200
 
 
 def model_inputs(table):
-    """The model's dimensionless inputs of every row (dict of arrays)."""
-    keys = ("velocity_ratio", "velocity_ratio_other", "hardening_first", "hardening_other",
-            "damage_at_yield", "other_is_sphere")
-    out = {k: np.empty(len(table["e"])) for k in keys}
-    for i in range(len(table["e"])):
-        sphere, substrate = dataset.material_specs(table, i)
-        row = _core.corlab2026_inputs(sphere, substrate, float(table["velocity"][i]))
-        for k in keys:
-            out[k][i] = row[k]
-    return out
+    """The model's dimensionless inputs of every row (dict of arrays, the keys of
+    _core.corlab2026_inputs)."""
+    rows = [_core.corlab2026_inputs(*dataset.material_specs(table, i), float(v))
+            for i, v in enumerate(table["velocity"])]
+    return {k: np.array([row[k] for row in rows]) for k in rows[0]}
 
 
 def predict(inputs, coefficients, mask=None):
@@ -66,22 +65,32 @@ def split(table):
     return ~random_out & ~corner, random_out & ~corner, corner
 
 
-def fit(table, inputs, mask):
-    """Least-squares coefficients (dict) on the rows of `mask`."""
+def fit(table, inputs, mask, fixed=None):
+    """Least-squares coefficients (dict) on the rows of `mask`; `fixed` pins some {name: value}
+    (an ablation: what a term is worth on the held-out rows)."""
+    fixed = fixed or {}
+    free = [p for p in PARAMETERS if p[0] not in fixed]
     e = table["e"][mask]
     sub = {k: v[mask] for k, v in inputs.items()}
 
+    def coefficients(p):
+        return {**fixed, **dict(zip((f[0] for f in free), p))}
+
     def residuals(p):
-        return (_core.corlab2026_restitution(sub, dict(zip(NAMES, p))) - e) / e
+        return (_core.corlab2026_restitution(sub, coefficients(p)) - e) / e
 
-    start = [p[1] for p in PARAMETERS]
-    bounds = ([p[2] for p in PARAMETERS], [p[3] for p in PARAMETERS])
+    start = [p[1] for p in free]
+    bounds = ([p[2] for p in free], [p[3] for p in free])
     result = least_squares(residuals, start, bounds=bounds, x_scale="jac")
-    return dict(zip(NAMES, (float(v) for v in result.x)))
+    k = coefficients(float(v) for v in result.x)
+    return {n: float(k[n]) for n in NAMES}
 
 
-def bootstrap_intervals(table, inputs, mask, coefficients, resamples=BOOTSTRAP, seed=2026):
-    """95 % bootstrap intervals {name: [low, high]} (rows resampled with replacement)."""
+def bootstrap_intervals(table, inputs, mask, resamples=BOOTSTRAP, seed=2026, fixed=None):
+    """95 % bootstrap intervals {name: [low, high]} (rows resampled with replacement; none for
+    0 resamples)."""
+    if resamples <= 0:
+        return {}
     rng = np.random.default_rng(seed)
     rows = np.flatnonzero(mask)
     samples = []
@@ -91,19 +100,19 @@ def bootstrap_intervals(table, inputs, mask, coefficients, resamples=BOOTSTRAP, 
         expanded = np.repeat(np.arange(mask.size), pick)
         sub_table = {"e": table["e"][expanded]}
         sub_inputs = {k: v[expanded] for k, v in inputs.items()}
-        samples.append([fit(sub_table, sub_inputs, np.ones(expanded.size, bool))[n]
+        samples.append([fit(sub_table, sub_inputs, np.ones(expanded.size, bool), fixed)[n]
                         for n in NAMES])
     samples = np.array(samples)
     return {n: [float(np.percentile(samples[:, j], 2.5)), float(np.percentile(samples[:, j], 97.5))]
             for j, n in enumerate(NAMES)}
 
 
-def run(path, resamples=BOOTSTRAP):
+def run(path, resamples=BOOTSTRAP, fixed=None):
     """The whole fit of dataset.csv at `path`: coefficients, intervals, held-out scores."""
     table = dataset.read(path)
     inputs = model_inputs(table)
     train, random_out, corner = split(table)
-    coefficients = fit(table, inputs, train)
+    coefficients = fit(table, inputs, train, fixed)
     e_model = predict(inputs, coefficients)
     rel = (e_model - table["e"]) / table["e"]
     return {
@@ -115,7 +124,8 @@ def run(path, resamples=BOOTSTRAP):
         "rows_corner_holdout": int(corner.sum()),
         "corner": f"modulus_ratio > {CORNER_MODULUS_RATIO}",
         "coefficients": coefficients,
-        "confidence_95": bootstrap_intervals(table, inputs, train, coefficients, resamples),
+        "fixed": dict(fixed or {}),
+        "confidence_95": bootstrap_intervals(table, inputs, train, resamples, fixed=fixed),
         # 95 % of the training rows' relative errors lie within +- this [-].
         "prediction_interval_95": float(np.percentile(np.abs(rel[train]), 95)),
         "scores": {"train": dataset.score(table, e_model, train),
@@ -147,14 +157,30 @@ def write_cpp_coefficients(path, coefficients):
     pathlib.Path(path).write_text(text)
 
 
+def parse_fixed(items, parser):
+    """{name: value} of --fix NAME=VALUE items (a clear error for an unknown name or value)."""
+    fixed = {}
+    for item in items:
+        name, _, value = item.partition("=")
+        if name not in NAMES:
+            parser.error(f"--fix: unknown coefficient '{name}' (one of {', '.join(NAMES)})")
+        try:
+            fixed[name] = float(value)
+        except ValueError:
+            parser.error(f"--fix {name}: value '{value}' is not a number")
+    return fixed
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dataset", help="dataset.csv (corlab dataset export)")
     parser.add_argument("--out", required=True, help="model_fit.json to write")
     parser.add_argument("--bootstrap", type=int, default=BOOTSTRAP, help="resamples")
     parser.add_argument("--cpp-source", help="corlab2026.cpp whose corlab2026_fitted() to update")
+    parser.add_argument("--fix", action="append", default=[], metavar="NAME=VALUE",
+                        help="pin a coefficient (an ablation; repeatable)")
     args = parser.parse_args(argv)
-    result = run(args.dataset, args.bootstrap)
+    result = run(args.dataset, args.bootstrap, parse_fixed(args.fix, parser))
     with open(args.out, "w") as f:
         json.dump(_finite(result), f, indent=2, sort_keys=True)
         f.write("\n")

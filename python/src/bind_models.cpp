@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "bindings.hpp"
 #include "corlab/core/error.hpp"
@@ -109,19 +110,23 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 // corlab2026_restitution over arrays of inputs (the fit's inner loop).
 py::array_t<double> corlab2026_over(const py::dict& inputs, const py::dict& coefficients) {
   const auto k = coefficients_from(coefficients);
-  const auto column = [&inputs](const char* key) { return inputs[key].cast<Array>(); };
-  const Array x = column("velocity_ratio"), xo = column("velocity_ratio_other");
-  const Array hw = column("hardening_first"), ho = column("hardening_other");
-  const Array dy = column("damage_at_yield"), sph = column("other_is_sphere");
-  py::array_t<double> out(x.size());
+  std::vector<Array> columns;
+  for (const auto& [name, member] : restitution::kCorlab2026Inputs) {
+    const py::str key{std::string(name)};
+    if (!inputs.contains(key)) throw_invalid("inputs", name, "a key of the dict (missing)");
+    columns.push_back(inputs[key].cast<Array>());
+  }
+  if (!inputs.contains("other_is_sphere")) {
+    throw_invalid("inputs", "other_is_sphere", "a key of the dict (missing)");
+  }
+  const auto other_is_sphere = inputs["other_is_sphere"].cast<Array>();
+  py::array_t<double> out(other_is_sphere.size());
   double* e = out.mutable_data();
-  for (py::ssize_t i = 0; i < x.size(); ++i) {
-    const restitution::Corlab2026Inputs in{.velocity_ratio = x.data()[i],
-                                           .velocity_ratio_other = xo.data()[i],
-                                           .hardening_first = hw.data()[i],
-                                           .hardening_other = ho.data()[i],
-                                           .damage_at_yield = dy.data()[i],
-                                           .other_is_sphere = sph.data()[i] != 0.0};
+  for (py::ssize_t i = 0; i < other_is_sphere.size(); ++i) {
+    restitution::Corlab2026Inputs in{.other_is_sphere = other_is_sphere.data()[i] != 0.0};
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+      in.*restitution::kCorlab2026Inputs[j].second = columns[j].data()[i];
+    }
     e[i] = restitution::corlab2026_restitution(in, k);
   }
   return out;
@@ -136,22 +141,20 @@ void bind_corlab2026(py::module_& m) {
         const auto in = restitution::corlab2026_inputs(to_material(sphere, "sphere"),
                                                        to_material(substrate, "substrate"), v);
         py::dict d;
-        d["velocity_ratio"] = in.velocity_ratio;
-        d["velocity_ratio_other"] = in.velocity_ratio_other;
-        d["hardening_first"] = in.hardening_first;
-        d["hardening_other"] = in.hardening_other;
-        d["damage_at_yield"] = in.damage_at_yield;
+        for (const auto& [name, member] : restitution::kCorlab2026Inputs) {
+          d[py::str(std::string(name))] = in.*member;
+        }
         d["other_is_sphere"] = in.other_is_sphere ? 1.0 : 0.0;
         return d;
       },
       py::arg("sphere"), py::arg("substrate"), py::arg("v"),
       "The dimensionless inputs of corlab's model (corlab2026) for one impact at v [m/s]: "
-      "velocity_ratio, velocity_ratio_other, hardening_first, hardening_other, "
-      "damage_at_yield, other_is_sphere (1 or 0).");
+      "the real-valued inputs of corlab2026.hpp's kCorlab2026Inputs and other_is_sphere (1 or "
+      "0).");
   m.def("corlab2026_restitution", &corlab2026_over, py::arg("inputs"), py::arg("coefficients"),
         "e of corlab's model for inputs (a dict of equal-length arrays, keys of "
-        "corlab2026_inputs) and coefficients (a dict: c1, phi_max, kappa, b, c, gamma_sphere, "
-        "gamma_substrate); the fit's inner loop (python/corlab/model_fit.py).");
+        "corlab2026_inputs) and coefficients (a dict with the names of corlab2026_fitted()); "
+        "the fit's inner loop (python/corlab/model_fit.py).");
   m.def(
       "corlab2026_fitted", [] { return coefficients_dict(restitution::corlab2026_fitted()); },
       "The shipped coefficients of corlab's model (data/fe_restitution/model_fit.json).");

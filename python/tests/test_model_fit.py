@@ -58,3 +58,44 @@ def test_error_stats_and_regimes():
     assert s["rms"] == pytest.approx(math.sqrt((1 + 9 + 4) / 3) / 100)
     assert dataset.regime(np.array([1.5, 3.0, 10.0, 300.0, 301.0])) == [
         "near-yield", "near-yield", "elastic-plastic", "elastic-plastic", "fully plastic"]
+
+
+def test_an_ablation_pins_the_named_coefficients_and_fits_the_rest():
+    table = dataset.read(DATA / "dataset.csv")
+    inputs = model_fit.model_inputs(table)
+    train, _, _ = model_fit.split(table)
+    pinned = {"compliance_first": 0.0, "compliance_other": 0.0, "flattening": 0.0}
+    k = model_fit.fit(table, inputs, train, pinned)
+    assert {n: k[n] for n in pinned} == pinned
+    e = table["e"][train]
+    rms = {name: float(np.sqrt(np.mean(((model_fit.predict(inputs, c, train) - e) / e) ** 2)))
+           for name, c in (("pinned", k), ("free", model_fit.fit(table, inputs, train)))}
+    # Freeing three coefficients cannot fit the same rows worse.
+    assert rms["free"] <= rms["pinned"]
+
+
+def test_fix_rejects_unknown_names_and_values(capsys):
+    for bad in ("bogus=1", "c1=abc"):
+        with pytest.raises(SystemExit):
+            model_fit.main([str(DATA / "dataset.csv"), "--out", "/dev/null", "--fix", bad])
+        assert "--fix" in capsys.readouterr().err
+
+
+def test_compliance_share_is_the_spheres_part_of_one_over_e_star():
+    same = corlab.corlab2026_inputs("E=210e9,nu=0.3,rho=7850", "E=210e9,nu=0.3,rho=7850,sy=5e8",
+                                    1.0)
+    assert same["compliance_share"] == pytest.approx(0.5, rel=1e-14)
+    soft = corlab.corlab2026_inputs("E=70e9,nu=0.2,rho=2500", "E=210e9,nu=0.3,rho=7850,sy=5e8",
+                                    1.0)
+    c_sphere, c_substrate = (1 - 0.2**2) / 70e9, (1 - 0.3**2) / 210e9
+    assert soft["compliance_share"] == pytest.approx(c_sphere / (c_sphere + c_substrate),
+                                                     rel=1e-12)
+    # The substrate yields first (the sphere is elastic): its nu and a_y/R = pi C(nu) sy / (2 E*).
+    assert soft["poisson_first"] == 0.3
+    e_star = 1 / (c_sphere + c_substrate)
+    assert soft["contact_radius_at_yield"] == pytest.approx(
+        math.pi * 1.295 * math.exp(0.736 * 0.3) * 5e8 / (2 * e_star), rel=1e-12)
+    # A yielding sphere weaker than the substrate yields first: its nu.
+    first = corlab.corlab2026_inputs("E=70e9,nu=0.2,rho=2500,sy=1e8",
+                                     "E=210e9,nu=0.3,rho=7850,sy=5e8", 1.0)
+    assert first["poisson_first"] == 0.2 and first["other_is_sphere"] == 0.0

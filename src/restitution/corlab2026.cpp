@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "corlab/core/units.hpp"
 #include "corlab/restitution/first_yield.hpp"
+#include "corlab/restitution/jackson_green2005.hpp"
 #include "corlab/restitution/thornton1997.hpp"
 
 namespace corlab::restitution {
@@ -14,36 +16,66 @@ namespace {
 // rate under this bound (c1 <= it: the fit's bound).
 constexpr double kMaxPressureSlope = 0.39;
 
-// Flow stress at Tabor's representative strain over the yield stress, 1 at first yield (x = 1;
-// its rate in ln x stays below 2/5).
-double flow_stress_ratio(double x, double h, const Corlab2026Coefficients& k) {
-  return (1.0 + k.kappa * h * std::pow(x, 0.4)) / (1.0 + k.kappa * h);
+// Flow stress over the yield stress for a hardening h = H / E* growing like the contact radius
+// (Tabor's representative strain 0.2 a/R, a ~ x^(2/5)), 1 at first yield (x = 1); its rate in
+// ln x stays below 2/5.
+double flow_stress_ratio(double x, double h, double kappa) {
+  return (1.0 + kappa * h * std::pow(x, 0.4)) / (1.0 + kappa * h);
 }
 
-// Thornton's factor of one body at x = v / v_y of that body and its hardening h = H / E*.
-double thornton_factor(double x, double h, const Corlab2026Coefficients& k) {
+// phi: the mean contact pressure over its value at first yield, for a body at x = v / v_y of that
+// body, hardening h = H / E* and fully plastic cap phi_max (times a flattened sphere's factor).
+double pressure_ratio(double x, double h, double cap, double c1, const Corlab2026Coefficients& k) {
   if (!(x > 1.0)) return 1.0;
-  const double hardening = flow_stress_ratio(x, h, k);
-  // Before the cap the cavity-model growth (rate <= c1) takes hardening at the power
-  // 1 - c1/0.39 (rate < 0.4 (1 - c1/0.39)): the sum stays below 2/5.
-  const double c1 = std::min(k.c1, kMaxPressureSlope);
-  const double phi =
-      std::min((1.0 + c1 * std::log(x)) * std::pow(hardening, 1.0 - c1 / kMaxPressureSlope),
-               k.phi_max * hardening);
-  return thornton_closed_form(std::pow(phi, 2.5) / x);
+  // Before the cap: the cavity model's c1 ln x plus hardening a (x^(2/5) - 1) with
+  // a < 1 - c1/0.4, so that d ln phi / d ln x = (c1 + 0.4 a x^(2/5)) / phi < 2/5 for every x >= 1
+  // (it holds at x = 1 and the margin grows with ln x).
+  c1 = std::min(c1, kMaxPressureSlope);
+  const double kh = k.kappa_cavity * h;
+  const double a = (1.0 - c1 / 0.4) * kh / (1.0 + kh);
+  const double cavity = 1.0 + c1 * std::log(x) + a * (std::pow(x, 0.4) - 1.0);
+  return std::min(cavity, cap * flow_stress_ratio(x, h, k.kappa));
+}
+
+// Thornton's closed form with the limiting pressure phi p_y (v_y scales as p_y^(5/2)).
+double thornton_factor(double x, double phi) {
+  return x > 1.0 ? thornton_closed_form(std::pow(phi, 2.5) / x) : 1.0;
+}
+
+// The cavity model's slope and Tabor's hardness are in units of the yield stress; phi is in units
+// of the first-yield pressure C(nu) Y: both scale as C(0.3) / C(nu) of the first body.
+double poisson_scale(const Corlab2026Inputs& in) {
+  return jackson_green_c(0.3) / jackson_green_c(in.poisson_first);
+}
+
+// The fully plastic cap of the body that yields first: Tabor's indentation hardness for a
+// substrate; for a sphere flattened against the substrate, Jackson & Green's hardness, which
+// falls as the flat grows (a/R from the first-yield contact radius growing like x^(2/5)). Never
+// below the first-yield pressure (phi = 1 at x = 1: e stays continuous for any input).
+double first_body_cap(const Corlab2026Inputs& in, double x_first, const Corlab2026Coefficients& k) {
+  double cap = poisson_scale(in) * k.phi_max;
+  if (!in.other_is_sphere) {
+    const double a_over_r = k.flattening * in.contact_radius_at_yield * std::pow(x_first, 0.4);
+    cap *= jackson_green_hardness_ratio(a_over_r) / jackson_green_hardness_ratio(0.0);
+  }
+  return std::max(1.0, cap);
 }
 
 }  // namespace
 
 Corlab2026Coefficients corlab2026_fitted() {
   // data/fe_restitution/model_fit.json, "coefficients" (python/corlab/model_fit.py).
-  return Corlab2026Coefficients{.c1 = 0.2530757238871905,
-                                .phi_max = 2.811734766581207,
-                                .kappa = 2.8129834990542295,
-                                .b = 2.6542604115450823,
-                                .c = 0.5824081661312523,
-                                .gamma_sphere = 0.16144692526065815,
-                                .gamma_substrate = 0.20584847966499523};
+  return Corlab2026Coefficients{.c1 = 0.2537807046309275,
+                                .phi_max = 2.749961889027828,
+                                .kappa = 1.24190383172949,
+                                .kappa_cavity = 5.028969585766255,
+                                .b = 1.947265089159724,
+                                .c = 0.5665472364849098,
+                                .gamma_sphere = 0.5973759056918005,
+                                .gamma_substrate = 0.4825119016814686,
+                                .compliance_first = 0.554183208694375,
+                                .compliance_other = 1.113796466716547,
+                                .flattening = 2.4068293820268476};
 }
 
 Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate) {
@@ -60,6 +92,10 @@ Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate
       .hardening_first = first.hardening_modulus / e_star,
       .hardening_other = other.yield_stress ? other.hardening_modulus / e_star : 0.0,
       .damage_at_yield = sphere.density * y.velocity * y.velocity / y.pressure,
+      .compliance_share =
+          (1.0 - sphere.poisson_ratio * sphere.poisson_ratio) / sphere.youngs_modulus * e_star,
+      .contact_radius_at_yield = units::kPi * y.pressure / (2.0 * e_star),
+      .poisson_first = first.poisson_ratio,
       .other_is_sphere = !y.sphere_first};
 }
 
@@ -69,6 +105,9 @@ Corlab2026Inputs corlab2026_inputs(const Corlab2026Pair& pair, double velocity) 
                           .hardening_first = pair.hardening_first,
                           .hardening_other = pair.hardening_other,
                           .damage_at_yield = pair.damage_at_yield,
+                          .compliance_share = pair.compliance_share,
+                          .contact_radius_at_yield = pair.contact_radius_at_yield,
+                          .poisson_first = pair.poisson_first,
                           .other_is_sphere = pair.other_is_sphere};
 }
 
@@ -81,13 +120,26 @@ Corlab2026Inputs corlab2026_inputs(const Material& sphere,
 double corlab2026_restitution(const Corlab2026Inputs& in, const Corlab2026Coefficients& k) {
   const double x = in.velocity_ratio;
   if (!(x > 1.0)) return 1.0;
-  const double gamma = in.other_is_sphere ? k.gamma_sphere : k.gamma_substrate;
+  // Compliance shares of the body that yields first and of the other one (they sum to 1).
+  const double share_first = in.other_is_sphere ? 1.0 - in.compliance_share : in.compliance_share;
+  const double share_other = 1.0 - share_first;
+  // Plasticity grows faster beyond first yield in the body that takes more of the deformation:
+  // its overload x - 1 is stretched (1 at first yield, Johnson's slope kept at high speed).
+  const double x_first = 1.0 + std::exp(k.compliance_first * (share_first - 0.5)) * (x - 1.0);
+  const double phi_first = pressure_ratio(
+      x_first, in.hardening_first, first_body_cap(in, x_first, k), k.c1 * poisson_scale(in), k);
+  // The other body feels the pressure the first one's plastic contact carries: its Hertz
+  // overload is phi_first^(5/2) times the ratio of the two first-yield speeds.
+  const double x_other = std::pow(phi_first, 2.5) * in.velocity_ratio_other / x;
+  const double weight_other = (in.other_is_sphere ? k.gamma_sphere : k.gamma_substrate) *
+                              std::exp(k.compliance_other * (share_other - share_first));
   // The damage number on the flow stress: hardening makes the crater shallower.
   const double damage =
-      in.damage_at_yield * (x * x - 1.0) / flow_stress_ratio(x, in.hardening_first, k);
+      in.damage_at_yield * (x * x - 1.0) / flow_stress_ratio(x, in.hardening_first, k.kappa);
   const double crater = 1.0 + k.b * std::pow(damage, k.c);
-  return thornton_factor(x, in.hardening_first, k) *
-         std::pow(thornton_factor(in.velocity_ratio_other, in.hardening_other, k), gamma) / crater;
+  const double phi_other = pressure_ratio(x_other, in.hardening_other, k.phi_max, k.c1, k);
+  return thornton_factor(x_first, phi_first) *
+         std::pow(thornton_factor(x_other, phi_other), weight_other) / crater;
 }
 
 double Corlab2026::yield_velocity() const { return pair.yield_velocity; }

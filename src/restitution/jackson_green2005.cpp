@@ -37,10 +37,13 @@ double JacksonGreen2005::contact_radius_ratio(double interference) const {
   return hertz * std::pow(s / kHertzLimit, 0.5 * b_exponent());
 }
 
-double JacksonGreen2005::hardness_ratio(double interference) const {
-  const double a_over_r = contact_radius_ratio(interference);
+double jackson_green_hardness_ratio(double a_over_r) {
   if (a_over_r <= 0.0) return 2.84;
   return 2.84 * (1.0 - std::exp(-0.82 * std::pow(a_over_r, -0.7)));
+}
+
+double JacksonGreen2005::hardness_ratio(double interference) const {
+  return jackson_green_hardness_ratio(contact_radius_ratio(interference));
 }
 
 double JacksonGreen2005::load_ratio(double normalized_interference) const {

@@ -252,10 +252,13 @@ void add_corlab2026(std::vector<Registration>& r) {
            .citation = "corlab project, docs/theory/corlab_model.md; fitted to the FE restitution "
                        "dataset data/fe_restitution (coefficients: model_fit.json)",
            .equation =
-               "e = T(x, h_w) T(x_o, h_o)^gamma / (1 + b (D_y (x^2 - 1)/g)^c), x = v/v_y (first "
-               "yield of the pair), T = e_Thornton(phi^2.5/x), phi = min((1 + c1 ln x) "
-               "g^(1 - c1/0.39), phi_max g), g = (1 + kappa h x^0.4)/(1 + kappa h), h = H/E*; "
-               "e = 1 for v <= v_y",
+               "e = T(x_w, phi_w) T(x_o*, phi_o)^w_o / (1 + b (D_y (x^2 - 1)/g)^c), x = v/v_y "
+               "(first yield of the pair), T = e_Thornton(phi^2.5/x), phi = min(1 + c ln x + A "
+               "(x^0.4 - 1), P g), c = c1 C(0.3)/C(nu_w), A = (1 - c/0.4) kappa_c h/(1 + kappa_c "
+               "h), P = phi_max C(0.3)/C(nu_w) (times Jackson-Green's J(a/R) for a sphere that "
+               "yields first), g = (1 + kappa h x^0.4)/(1 + kappa h), h = H/E*, x_w = 1 + "
+               "exp(q_w (l_w - 1/2)) (x - 1), x_o* = phi_w^2.5 v/v_y,o / x, w_o = gamma exp(q_o "
+               "(l_o - l_w)), l = E* (1 - nu^2)/E of a body; e = 1 for v <= v_y",
            .validity = "the dataset's box: sigma_y/E* 1e-3-1.5e-2, v from 1.1 v_y to 100 m/s and "
                        "rho v^2/sigma_y <= 0.26, E_sphere/E_substrate 0.2-5, nu 0.2-0.45, elastic "
                        "or yielding sphere (sigma_y ratio 0.5-5), H/E 0-0.05, equal densities",

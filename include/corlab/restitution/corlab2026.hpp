@@ -8,17 +8,32 @@
 /// stress at Tabor's representative strain; a second factor for the other body when it yields
 /// too, and a third for deep craters (Johnson's damage number). Exactly 1 at the pair's first
 /// yield (restitution/first_yield.hpp), never above 1, continuous and non-increasing in v; for
-/// perfect plasticity and shallow craters e ~ v^(-1/4) at high speed (Johnson's trend).
+/// perfect plasticity and shallow craters e ~ v^(-1/4) at high speed (Johnson's trend). The
+/// body that takes more of the deformation (the larger share of the pair's elastic compliance)
+/// weighs more; the other body yields under the pressure the first one's plastic contact can
+/// carry; a sphere that yields first is flattened, with Jackson & Green's falling hardness.
 ///
-///   x = v / v_y,   T(x, h) = e_Thornton(phi(x, h)^(5/2) / x)   (T = 1 for x <= 1)
-///   g(x, h) = (1 + kappa h x^(2/5)) / (1 + kappa h)      (flow stress / yield stress)
-///   phi(x, h) = min((1 + c1 ln x) g^(1 - c1/0.39), phi_max g)
-///   e = T(x, h_w) T(x_o, h_o)^gamma / (1 + b (D_y (x^2 - 1) / g(x, h_w))^c)
+///   x = v / v_y,   x_w = 1 + exp(q_w (l_w - 1/2)) (x - 1)     (first body's stretched overload)
+///   g(x, h, k) = (1 + k h x^(2/5)) / (1 + k h)                  (flow stress / yield stress)
+///   A(h) = (1 - c/0.4) kappa_c h / (1 + kappa_c h)               (hardening of the cavity range)
+///   phi(x, h, c, P) = min(1 + c ln x + A(h) (x^(2/5) - 1), P g(x, h, kappa))
+///                                                               (mean pressure / at first yield)
+///   n = C(0.3) / C(nu_w),  C(nu) = 1.295 exp(0.736 nu)         (p_y = C Y: c1, phi_max in Y)
+///   P_w = max(1, n phi_max J(s a_y/R x_w^(2/5))) if the sphere yields first,
+///         else max(1, n phi_max)
+///   J(a/R) = 1 - exp(-0.82 (a/R)^(-0.7))                        (Jackson & Green 2005, over 2.84)
+///   phi_w = phi(x_w, h_w, n c1, P_w),   x_o* = phi_w^(5/2) x_o / x
+///   phi_o = phi(x_o*, h_o, c1, phi_max),   T(x, phi) = e_Thornton(phi^(5/2) / x) (1 for x <= 1)
+///   w_o = gamma exp(q_o (l_o - l_w))
+///   e = T(x_w, phi_w) T(x_o*, phi_o)^w_o / (1 + b (D_y (x^2 - 1) / g(x, h_w, kappa))^c)
 ///
-/// Both branches of phi grow slower than x^(2/5) (c1 <= 0.39), so phi^(5/2)/x and e decrease.
-/// h = H / E* of a body, w the body that yields first, o the other one (x_o = v / v_y,o;
-/// gamma = gamma_sphere or gamma_substrate after which body that is; T = 1 if it is elastic) and
-/// D_y = rho_sphere v_y^2 / p_y the damage number at first yield (over g: on the flow stress).
+/// phi^(5/2)/x decreases: the cavity branch's rate (c + 0.4 A x^(2/5)) / phi is below 2/5 for
+/// every x >= 1 because A < 1 - c/0.4 (c <= 0.39), g's is below 2/5, and a cap falling with x (J)
+/// only lowers it; so each T decreases, and x_o* grows with phi_w. h = H / E* of a body, w the
+/// body that yields first, o the other (x_o = v / v_y,o; gamma = gamma_sphere or gamma_substrate
+/// after which body that is; x_o = 0 if it is elastic), D_y = rho_sphere v_y^2 / p_y the damage
+/// number at first yield (over g: on the flow stress), a_y/R = pi p_y / (2 E*) the contact radius
+/// at first yield and l = E* (1 - nu^2) / E a body's share of the compliance (l_w + l_o = 1).
 
 #include <array>
 #include <string_view>
@@ -28,27 +43,35 @@
 
 namespace corlab::restitution {
 
-/// The model's seven coefficients, all dimensionless [-].
+/// The model's eleven coefficients, all dimensionless [-].
 struct Corlab2026Coefficients {
-  double c1 = 0.0;               ///< cavity-model slope of p_m / p_y in ln x (<= 0.39)
-  double phi_max = 1.0;          ///< fully plastic cap of p_m / p_y (perfect plasticity)
-  double kappa = 0.0;            ///< hardening: flow stress at the representative strain
-  double b = 0.0;                ///< deep-crater factor
-  double c = 1.0;                ///< deep-crater exponent
-  double gamma_sphere = 0.0;     ///< weight of a yielding sphere that yields second
-  double gamma_substrate = 0.0;  ///< weight of a substrate that yields second
+  double c1 = 0.0;                ///< cavity-model slope of p_m / p_y in ln x (<= 0.39)
+  double phi_max = 1.0;           ///< fully plastic cap of p_m / p_y (perfect plasticity)
+  double kappa = 0.0;             ///< hardening of the fully plastic cap (Tabor's strain)
+  double kappa_cavity = 0.0;      ///< hardening of the cavity-model growth before the cap
+  double b = 0.0;                 ///< deep-crater factor
+  double c = 1.0;                 ///< deep-crater exponent
+  double gamma_sphere = 0.0;      ///< weight of a yielding sphere that yields second
+  double gamma_substrate = 0.0;   ///< weight of a substrate that yields second
+  double compliance_first = 0.0;  ///< q_w: overload stretch per compliance share, first body
+  double compliance_other = 0.0;  ///< q_o: weight of the other body per shares' difference
+  double flattening = 1.0;        ///< s: a/R of a flattened sphere over its Hertz estimate
 };
 
 /// The coefficients by name, in order: the one list that model_fit.json, the Python dicts and the
 /// fit (python/corlab/model_fit.py, a test compares) read.
-inline constexpr std::array<std::pair<std::string_view, double Corlab2026Coefficients::*>, 7>
+inline constexpr std::array<std::pair<std::string_view, double Corlab2026Coefficients::*>, 11>
     kCorlab2026Coefficients{{{"c1", &Corlab2026Coefficients::c1},
                              {"phi_max", &Corlab2026Coefficients::phi_max},
                              {"kappa", &Corlab2026Coefficients::kappa},
+                             {"kappa_cavity", &Corlab2026Coefficients::kappa_cavity},
                              {"b", &Corlab2026Coefficients::b},
                              {"c", &Corlab2026Coefficients::c},
                              {"gamma_sphere", &Corlab2026Coefficients::gamma_sphere},
-                             {"gamma_substrate", &Corlab2026Coefficients::gamma_substrate}}};
+                             {"gamma_substrate", &Corlab2026Coefficients::gamma_substrate},
+                             {"compliance_first", &Corlab2026Coefficients::compliance_first},
+                             {"compliance_other", &Corlab2026Coefficients::compliance_other},
+                             {"flattening", &Corlab2026Coefficients::flattening}}};
 
 /// The coefficients fitted to the shipped dataset (data/fe_restitution/model_fit.json; a test
 /// checks that they are the file's and that refitting the shipped data gives them).
@@ -56,22 +79,40 @@ Corlab2026Coefficients corlab2026_fitted();
 
 /// The dimensionless inputs of one impact.
 struct Corlab2026Inputs {
-  double velocity_ratio = 0.0;        ///< x = v / v_y, v_y of the pair [-]
-  double velocity_ratio_other = 0.0;  ///< x_o = v / v_y,o of the other body (0: elastic) [-]
-  double hardening_first = 0.0;       ///< h_w = H / E* of the body that yields first [-]
-  double hardening_other = 0.0;       ///< h_o = H / E* of the other body [-]
-  double damage_at_yield = 0.0;       ///< D_y = rho_sphere v_y^2 / p_y [-]
-  bool other_is_sphere = false;       ///< the sphere yields second (else the substrate)
+  double velocity_ratio = 0.0;           ///< x = v / v_y, v_y of the pair [-]
+  double velocity_ratio_other = 0.0;     ///< x_o = v / v_y,o of the other body (0: elastic) [-]
+  double hardening_first = 0.0;          ///< h_w = H / E* of the body that yields first [-]
+  double hardening_other = 0.0;          ///< h_o = H / E* of the other body [-]
+  double damage_at_yield = 0.0;          ///< D_y = rho_sphere v_y^2 / p_y [-]
+  double compliance_share = 0.5;         ///< l_s = ((1 - nu_s^2) / E_s) E* of the sphere [-]
+  double contact_radius_at_yield = 0.0;  ///< a_y / R = pi p_y / (2 E*) [-]
+  double poisson_first = 0.3;            ///< nu of the body that yields first [-]
+  bool other_is_sphere = false;          ///< the sphere yields second (else the substrate)
 };
+
+/// The real-valued inputs by name, in order (other_is_sphere aside): the one list that the
+/// Python binding's dicts and the fit read.
+inline constexpr std::array<std::pair<std::string_view, double Corlab2026Inputs::*>, 8>
+    kCorlab2026Inputs{{{"velocity_ratio", &Corlab2026Inputs::velocity_ratio},
+                       {"velocity_ratio_other", &Corlab2026Inputs::velocity_ratio_other},
+                       {"hardening_first", &Corlab2026Inputs::hardening_first},
+                       {"hardening_other", &Corlab2026Inputs::hardening_other},
+                       {"damage_at_yield", &Corlab2026Inputs::damage_at_yield},
+                       {"compliance_share", &Corlab2026Inputs::compliance_share},
+                       {"contact_radius_at_yield", &Corlab2026Inputs::contact_radius_at_yield},
+                       {"poisson_first", &Corlab2026Inputs::poisson_first}}};
 
 /// What the model needs of a material pair, independent of the speed.
 struct Corlab2026Pair {
-  double yield_velocity = 0.0;        ///< v_y of the pair [m/s]
-  double yield_velocity_other = 0.0;  ///< v_y,o of the other body [m/s] (inf: elastic)
-  double hardening_first = 0.0;       ///< H / E* of the body that yields first [-]
-  double hardening_other = 0.0;       ///< H / E* of the other body [-]
-  double damage_at_yield = 0.0;       ///< rho_sphere v_y^2 / p_y [-]
-  bool other_is_sphere = false;       ///< the sphere yields second
+  double yield_velocity = 0.0;           ///< v_y of the pair [m/s]
+  double yield_velocity_other = 0.0;     ///< v_y,o of the other body [m/s] (inf: elastic)
+  double hardening_first = 0.0;          ///< H / E* of the body that yields first [-]
+  double hardening_other = 0.0;          ///< H / E* of the other body [-]
+  double damage_at_yield = 0.0;          ///< rho_sphere v_y^2 / p_y [-]
+  double compliance_share = 0.5;         ///< the sphere's share of 1/E* [-]
+  double contact_radius_at_yield = 0.0;  ///< a_y / R at first yield [-]
+  double poisson_first = 0.3;            ///< nu of the body that yields first [-]
+  bool other_is_sphere = false;          ///< the sphere yields second
 };
 
 /// The pair quantities of a sphere and a substrate (materials not validated).

@@ -41,6 +41,11 @@ struct JacksonGreen2005 {
   double load(double interference) const;
 };
 
+/// Jackson & Green's (2005) hardness of a sphere flattened by a rigid flat at contact radius
+/// ratio a/R >= 0: H_G/S_y = 2.84 [1 - exp(-0.82 (a/R)^-0.7)] [-] (2.84 for a/R -> 0; it falls
+/// as the flat grows, unlike the indentation hardness of a half-space).
+double jackson_green_hardness_ratio(double a_over_r);
+
 /// Jackson-Green critical (yield-onset) velocity of a sphere on a flat:
 /// V_c = sqrt(pi^4/40) (C S_y)^2.5 / (E'^2 sqrt(rho)) [m/s] (from 1/2 m V_c^2 = 2/5 P_c omega_c;
 /// equals Thornton's v_y with p_y = C S_y; independent of R).

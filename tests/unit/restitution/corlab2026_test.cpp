@@ -73,15 +73,50 @@ TEST(Corlab2026, WithinBoundsAndNonIncreasingInVelocity) {
 }
 
 TEST(Corlab2026, JohnsonsQuarterPowerForPerfectPlasticityAndShallowCraters) {
-  // Elastic sphere, no hardening, D_y -> 0 (the crater factor off): e ~ x^(-1/4) for x >> 1.
-  Corlab2026Inputs in;
+  // Elastic sphere, no hardening, D_y -> 0 (the crater factor off): e ~ x^(-1/4) for x >> 1,
+  // whatever share of the compliance the yielding body has.
   const Corlab2026Coefficients k = corlab2026_fitted();
-  auto e_at = [&](double x) {
-    in.velocity_ratio = x;
-    return corlab2026_restitution(in, k);
-  };
-  const double slope = std::log(e_at(2e8) / e_at(1e8)) / std::log(2.0);
-  EXPECT_NEAR(slope, -0.25, 1e-3);
+  for (const double share : {0.1, 0.5, 0.9}) {
+    Corlab2026Inputs in{.compliance_share = share};
+    auto e_at = [&](double x) {
+      in.velocity_ratio = x;
+      return corlab2026_restitution(in, k);
+    };
+    const double slope = std::log(e_at(2e8) / e_at(1e8)) / std::log(2.0);
+    EXPECT_NEAR(slope, -0.25, 1e-3) << "compliance share " << share;
+  }
+}
+
+TEST(Corlab2026, TheBodyThatTakesMoreOfTheDeformationLosesMore) {
+  // Same x, D_y and hardening, an elastic sphere: a yielding substrate with a larger share of the
+  // compliance (a stiffer sphere) rebounds less, if the fitted stretch is positive (it is:
+  // model_fit.json).
+  const Corlab2026Coefficients k = corlab2026_fitted();
+  ASSERT_GT(k.compliance_first, 0.0);
+  Corlab2026Inputs stiff_sphere{
+      .velocity_ratio = 30.0, .compliance_share = 0.2, .other_is_sphere = true};
+  Corlab2026Inputs soft_sphere = stiff_sphere;
+  soft_sphere.compliance_share = 0.8;
+  EXPECT_LT(corlab2026_restitution(stiff_sphere, k), corlab2026_restitution(soft_sphere, k));
+}
+
+TEST(Corlab2026, AFlattenedSphereStaysContinuousAndMonotoneForAnyFirstYieldContact) {
+  // A sphere that yields first gets Jackson & Green's falling hardness; even with an absurd
+  // first-yield contact radius (its cap would fall below the first-yield pressure) e is 1 at
+  // first yield and non-increasing.
+  const Corlab2026Coefficients k = corlab2026_fitted();
+  for (const double a_y : {1e-3, 0.05, 0.5, 5.0}) {
+    Corlab2026Inputs in{.contact_radius_at_yield = a_y};
+    in.velocity_ratio = 1.0 + 1e-9;
+    EXPECT_GT(corlab2026_restitution(in, k), 1.0 - 1e-6) << "a_y/R " << a_y;
+    double previous = 1.0;
+    for (double x = 1.0; x < 1e6; x *= 1.1) {
+      in.velocity_ratio = x;
+      const double e = corlab2026_restitution(in, k);
+      ASSERT_LE(e, previous * (1.0 + 1e-12)) << "a_y/R " << a_y << " x " << x;
+      previous = e;
+    }
+  }
 }
 
 TEST(Corlab2026, RegisteredWithItsStatusAndTheShippedCoefficients) {
