@@ -12,8 +12,8 @@
 namespace corlab::restitution {
 namespace {
 
-// phi^(5/2)/x decreases while d ln phi / d ln x < 2/5; the hardening exponent below keeps the
-// rate under this bound (c1 <= it: the fit's bound).
+// phi^(5/2)/x decreases while d ln phi / d ln x < 2/5; the cavity branch keeps its rate below
+// that bound for c1 up to this (the fit's bound).
 constexpr double kMaxPressureSlope = 0.39;
 
 // Flow stress over the yield stress for a hardening h = H / E* growing like the contact radius
@@ -51,9 +51,13 @@ double poisson_scale(const Corlab2026Inputs& in) {
 // The fully plastic cap of the body that yields first: Tabor's indentation hardness for a
 // substrate; for a sphere flattened against the substrate, Jackson & Green's hardness, which
 // falls as the flat grows (a/R from the first-yield contact radius growing like x^(2/5)). Never
-// below the first-yield pressure (phi = 1 at x = 1: e stays continuous for any input).
-double first_body_cap(const Corlab2026Inputs& in, double x_first, const Corlab2026Coefficients& k) {
-  double cap = poisson_scale(in) * k.phi_max;
+// below the first-yield pressure (phi = 1 at x = 1: e stays continuous for any input). poisson
+// is poisson_scale(in).
+double first_body_cap(const Corlab2026Inputs& in,
+                      double x_first,
+                      double poisson,
+                      const Corlab2026Coefficients& k) {
+  double cap = poisson * k.phi_max;
   if (!in.other_is_sphere) {
     const double a_over_r = k.flattening * in.contact_radius_at_yield * std::pow(x_first, 0.4);
     cap *= jackson_green_hardness_ratio(a_over_r) / jackson_green_hardness_ratio(0.0);
@@ -89,26 +93,21 @@ Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate
       .yield_velocity_other = std::isfinite(p_other)
                                   ? thornton_yield_velocity(p_other, e_star, sphere.density)
                                   : std::numeric_limits<double>::infinity(),
-      .hardening_first = first.hardening_modulus / e_star,
-      .hardening_other = other.yield_stress ? other.hardening_modulus / e_star : 0.0,
-      .damage_at_yield = sphere.density * y.velocity * y.velocity / y.pressure,
-      .compliance_share =
-          (1.0 - sphere.poisson_ratio * sphere.poisson_ratio) / sphere.youngs_modulus * e_star,
-      .contact_radius_at_yield = units::kPi * y.pressure / (2.0 * e_star),
-      .poisson_first = first.poisson_ratio,
-      .other_is_sphere = !y.sphere_first};
+      .inputs = {.hardening_first = first.hardening_modulus / e_star,
+                 .hardening_other = other.yield_stress ? other.hardening_modulus / e_star : 0.0,
+                 .damage_at_yield = sphere.density * y.velocity * y.velocity / y.pressure,
+                 .compliance_share = (1.0 - sphere.poisson_ratio * sphere.poisson_ratio) /
+                                     sphere.youngs_modulus * e_star,
+                 .contact_radius_at_yield = units::kPi * y.pressure / (2.0 * e_star),
+                 .poisson_first = first.poisson_ratio,
+                 .other_is_sphere = !y.sphere_first}};
 }
 
 Corlab2026Inputs corlab2026_inputs(const Corlab2026Pair& pair, double velocity) {
-  return Corlab2026Inputs{.velocity_ratio = velocity / pair.yield_velocity,
-                          .velocity_ratio_other = velocity / pair.yield_velocity_other,
-                          .hardening_first = pair.hardening_first,
-                          .hardening_other = pair.hardening_other,
-                          .damage_at_yield = pair.damage_at_yield,
-                          .compliance_share = pair.compliance_share,
-                          .contact_radius_at_yield = pair.contact_radius_at_yield,
-                          .poisson_first = pair.poisson_first,
-                          .other_is_sphere = pair.other_is_sphere};
+  Corlab2026Inputs in = pair.inputs;
+  in.velocity_ratio = velocity / pair.yield_velocity;
+  in.velocity_ratio_other = velocity / pair.yield_velocity_other;
+  return in;
 }
 
 Corlab2026Inputs corlab2026_inputs(const Material& sphere,
@@ -126,8 +125,9 @@ double corlab2026_restitution(const Corlab2026Inputs& in, const Corlab2026Coeffi
   // Plasticity grows faster beyond first yield in the body that takes more of the deformation:
   // its overload x - 1 is stretched (1 at first yield, Johnson's slope kept at high speed).
   const double x_first = 1.0 + std::exp(k.compliance_first * (share_first - 0.5)) * (x - 1.0);
+  const double poisson = poisson_scale(in);
   const double phi_first = pressure_ratio(
-      x_first, in.hardening_first, first_body_cap(in, x_first, k), k.c1 * poisson_scale(in), k);
+      x_first, in.hardening_first, first_body_cap(in, x_first, poisson, k), k.c1 * poisson, k);
   // The other body feels the pressure the first one's plastic contact carries: its Hertz
   // overload is phi_first^(5/2) times the ratio of the two first-yield speeds.
   const double x_other = std::pow(phi_first, 2.5) * in.velocity_ratio_other / x;

@@ -104,15 +104,10 @@ inline constexpr std::array<std::pair<std::string_view, double Corlab2026Inputs:
 
 /// What the model needs of a material pair, independent of the speed.
 struct Corlab2026Pair {
-  double yield_velocity = 0.0;           ///< v_y of the pair [m/s]
-  double yield_velocity_other = 0.0;     ///< v_y,o of the other body [m/s] (inf: elastic)
-  double hardening_first = 0.0;          ///< H / E* of the body that yields first [-]
-  double hardening_other = 0.0;          ///< H / E* of the other body [-]
-  double damage_at_yield = 0.0;          ///< rho_sphere v_y^2 / p_y [-]
-  double compliance_share = 0.5;         ///< the sphere's share of 1/E* [-]
-  double contact_radius_at_yield = 0.0;  ///< a_y / R at first yield [-]
-  double poisson_first = 0.3;            ///< nu of the body that yields first [-]
-  bool other_is_sphere = false;          ///< the sphere yields second
+  double yield_velocity = 0.0;        ///< v_y of the pair [m/s]
+  double yield_velocity_other = 0.0;  ///< v_y,o of the other body [m/s] (inf: elastic)
+  /// The speed-independent inputs (velocity_ratio and velocity_ratio_other unset).
+  Corlab2026Inputs inputs;
 };
 
 /// The pair quantities of a sphere and a substrate (materials not validated).
