@@ -1,11 +1,14 @@
 // `corlab mesh`: generate (or read) the impact mesh of a case, write DIR/mesh.vtu and print the
-// element counts and quality per body.
+// element counts, quality and explicit cost per body.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "command.hpp"
@@ -37,6 +40,23 @@ void print_quality(const char* name, const fem::MeshQuality& q) {
       q.volume);
 }
 
+// The element updates per base step of each body under the default subcycling (geometry only):
+// where a run's cost is.
+void print_explicit_cost(const fem::Mesh& mesh,
+                         const fem::MeshQuality& sphere,
+                         const fem::MeshQuality& substrate) {
+  const double shortest =
+      std::min(sphere.min_characteristic_length, substrate.min_characteristic_length);
+  fmt::print("explicit cost (element updates per base step; elements at subcycling levels 0-{})\n",
+             fem::kCostLevels);
+  for (const auto& [name, body] :
+       {std::pair{"sphere", fem::Body::kSphere}, std::pair{"substrate", fem::Body::kSubstrate}}) {
+    const fem::ExplicitCost c = fem::explicit_cost(mesh, body, shortest);
+    fmt::print("{:<10} updates {:>8.1f}  levels {}\n", name, c.updates,
+               fmt::join(c.elements_at_level, " "));
+  }
+}
+
 int run_mesh(const MeshArgs& args) {
   fem::ImpactConfig config =
       args.config.empty() ? fem::ImpactConfig{} : fem::load_impact_config(args.config);
@@ -51,13 +71,16 @@ int run_mesh(const MeshArgs& args) {
         fem::predicted_contact_radius(config), fem::hertz_reference(config).contact_radius,
         o.h_contact, o.zone_radius, o.zone_depth, o.growth, o.h_max);
   }
-  print_quality("sphere", fem::mesh_quality(mesh, fem::Body::kSphere));
-  print_quality("substrate", fem::mesh_quality(mesh, fem::Body::kSubstrate));
+  const fem::MeshQuality sphere = fem::mesh_quality(mesh, fem::Body::kSphere);
+  const fem::MeshQuality substrate = fem::mesh_quality(mesh, fem::Body::kSubstrate);
+  print_quality("sphere", sphere);
+  print_quality("substrate", substrate);
   fmt::print(
       "total      elements {:>6}  nodes {:>6}  axis {}  base {}  sphere_surface {}  "
       "substrate_surface {}\n",
       mesh.num_elements(), mesh.num_nodes(), mesh.axis_nodes.size(), mesh.base_nodes.size(),
       mesh.sphere_surface_nodes.size(), mesh.substrate_surface_nodes.size());
+  print_explicit_cost(mesh, sphere, substrate);
   std::filesystem::create_directories(args.out);
   const auto file = std::filesystem::path(args.out) / "mesh.vtu";
   fem::write_vtu(file, mesh);

@@ -54,6 +54,26 @@ QuadQuality quad_quality(const std::array<double, 4>& r, const std::array<double
   return q;
 }
 
+namespace {
+
+/// Corner coordinates of element e [m].
+void element_corners(const Mesh& mesh, int e, std::array<double, 4>& r, std::array<double, 4>& z) {
+  const auto& quad = mesh.quads[static_cast<std::size_t>(e)];
+  for (std::size_t k = 0; k < 4; ++k) {
+    r[k] = mesh.r[static_cast<std::size_t>(quad[k])];
+    z[k] = mesh.z[static_cast<std::size_t>(quad[k])];
+  }
+}
+
+}  // namespace
+
+QuadQuality element_quality(const Mesh& mesh, int e) {
+  std::array<double, 4> r{};
+  std::array<double, 4> z{};
+  element_corners(mesh, e, r, z);
+  return quad_quality(r, z);
+}
+
 MeshQuality mesh_quality(const Mesh& mesh, Body body) {
   MeshQuality m;
   bool first = true;
@@ -61,11 +81,7 @@ MeshQuality mesh_quality(const Mesh& mesh, Body body) {
     if (mesh.element_body[static_cast<std::size_t>(e)] != body) continue;
     std::array<double, 4> r{};
     std::array<double, 4> z{};
-    const auto& quad = mesh.quads[static_cast<std::size_t>(e)];
-    for (std::size_t k = 0; k < 4; ++k) {
-      r[k] = mesh.r[static_cast<std::size_t>(quad[k])];
-      z[k] = mesh.z[static_cast<std::size_t>(quad[k])];
-    }
+    element_corners(mesh, e, r, z);
     const QuadQuality q = quad_quality(r, z);
     double min_edge = std::numeric_limits<double>::infinity();
     double max_edge = 0.0;
@@ -100,6 +116,21 @@ MeshQuality mesh_quality(const Mesh& mesh, Body body) {
   for (const Body b : mesh.node_body)
     if (b == body) ++m.nodes;
   return m;
+}
+
+ExplicitCost explicit_cost(const Mesh& mesh, Body body, double shortest) {
+  ExplicitCost cost;
+  for (int e = 0; e < mesh.num_elements(); ++e) {
+    if (mesh.element_body[static_cast<std::size_t>(e)] != body) continue;
+    const double length = element_quality(mesh, e).characteristic_length;
+    int level = 0;
+    while (level < kCostLevels && std::ldexp(shortest, level + 1) <= kCostLevelMargin * length) {
+      ++level;
+    }
+    ++cost.elements_at_level[static_cast<std::size_t>(level)];
+    cost.updates += std::ldexp(1.0, -level);
+  }
+  return cost;
 }
 
 }  // namespace corlab::fem

@@ -19,10 +19,6 @@ namespace {
 /// >= 40 deg and widths >= 0.7 h (a square zone gives 45 deg and 0.72 h at the diagonal).
 constexpr double kMinBlockAngle = 40.0 * kPi / 180.0;
 constexpr double kMinBlockWidth = 0.7;
-/// Subcycling levels and level margin of the cost model that picks the substrate layout (the
-/// solver's defaults; see explicit_cost).
-constexpr int kCostLevels = 4;
-constexpr double kCostLevelMargin = 0.8;
 
 /// Tensor-product substrate (used when the refined zone leaves no room for the graded blocks).
 void generate_substrate_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
@@ -121,30 +117,11 @@ bool generate_substrate_blocks(const MeshOptions& o, MeshBuilder& builder, Mesh&
   return true;
 }
 
-/// Explicit cost of a substrate per unit of simulated time, in updates of its smallest element:
-/// the sum over its elements of 2^-L, L the element subcycling level its characteristic length
-/// L_e (quad_quality) gives against the smallest, L_min: the largest L <= 4 with 2^L L_min <= 0.8
-/// L_e (the solver's defaults: solver.subcycling_levels = 4, kLevelMargin = 0.8).
-double explicit_cost(const Mesh& mesh) {
-  std::vector<double> lengths;
-  for (const auto& quad : mesh.quads) {
-    std::array<double, 4> r{};
-    std::array<double, 4> z{};
-    for (int k = 0; k < 4; ++k) {
-      const auto n = static_cast<std::size_t>(quad[static_cast<std::size_t>(k)]);
-      r[static_cast<std::size_t>(k)] = mesh.r[n];
-      z[static_cast<std::size_t>(k)] = mesh.z[n];
-    }
-    lengths.push_back(quad_quality(r, z).characteristic_length);
-  }
-  const double shortest = *std::min_element(lengths.begin(), lengths.end());
-  double cost = 0.0;
-  for (const double l : lengths) {
-    int level = 0;
-    while (level < kCostLevels && std::ldexp(shortest, level + 1) <= kCostLevelMargin * l) ++level;
-    cost += std::ldexp(1.0, -level);
-  }
-  return cost;
+/// Explicit cost of a candidate substrate per unit of simulated time, in updates of its smallest
+/// element (explicit_cost of mesh_quality.hpp, levels against its own shortest element).
+double substrate_cost(const Mesh& mesh) {
+  const double shortest = mesh_quality(mesh, Body::kSubstrate).min_characteristic_length;
+  return explicit_cost(mesh, Body::kSubstrate, shortest).updates;
 }
 
 /// The three-block substrate of `o` in a mesh of its own, or nothing when the zone leaves no room
@@ -174,7 +151,7 @@ void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) 
     Mesh tensor;
     MeshBuilder tensor_builder(tensor);
     generate_substrate_tensor(o, tensor_builder, tensor);
-    if (explicit_cost(*blocks) < explicit_cost(tensor)) {
+    if (substrate_cost(*blocks) < substrate_cost(tensor)) {
       generate_substrate_blocks(square, builder, mesh);
       return;
     }

@@ -42,4 +42,25 @@ struct MeshQuality {
 /// Quality of the elements of `body` (all zeros when it has none).
 MeshQuality mesh_quality(const Mesh& mesh, Body body);
 
+/// Quality of element e of `mesh`.
+QuadQuality element_quality(const Mesh& mesh, int e);
+
+/// Levels and level margin of the explicit-cost model: the solver's defaults
+/// (solver.subcycling_levels = 4; an element gets level L only if 2^L x the shortest length <=
+/// 0.8 x its own, kLevelMargin in src/fem/solver/impact_model.hpp) [-].
+constexpr int kCostLevels = 4;
+constexpr double kCostLevelMargin = 0.8;
+
+/// Explicit cost of one body under element subcycling, from geometry alone (equal wave speeds):
+/// an element of characteristic length L_e steps at 2^L times the base step, L the largest level
+/// <= kCostLevels with 2^L L_min <= kCostLevelMargin L_e, L_min the model's shortest length.
+struct ExplicitCost {
+  std::array<int, kCostLevels + 1> elements_at_level{};  ///< element count of each level [-]
+  double updates = 0.0;  ///< sum of 2^-L: element updates per base step [-]
+};
+
+/// Explicit cost of the elements of `body`, levels against `shortest` [m] (the smallest
+/// characteristic length of the model, which sets the base step).
+ExplicitCost explicit_cost(const Mesh& mesh, Body body, double shortest);
+
 }  // namespace corlab::fem

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -59,6 +60,33 @@ TEST(MeshQuality, PerBodyTotals) {
   EXPECT_NEAR(w.area, 1.0, 1e-14);
   EXPECT_NEAR(w.volume, kPi, 1e-12);
   EXPECT_EQ(mesh_quality(Mesh{}, Body::kSphere).elements, 0);
+}
+
+// Three substrate squares of sides 1, 3 and 25 mm and a sphere square: levels against the 1 mm
+// square's length s/sqrt(2) are 0, 1 (2 <= 0.8 x 3 < 4) and 4 (the cap; 16 <= 0.8 x 25).
+TEST(ExplicitCost, LevelsFromTheShortestElement) {
+  Mesh m;
+  const std::array<double, 4> sides{1e-3, 3e-3, 25e-3, 1e-3};
+  double r0 = 0.0;
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const double s = sides[k];
+    const int n = static_cast<int>(m.r.size());
+    m.r.insert(m.r.end(), {r0, r0 + s, r0 + s, r0});
+    m.z.insert(m.z.end(), {0.0, 0.0, s, s});
+    m.quads.push_back({n, n + 1, n + 2, n + 3});
+    const Body body = k < 3 ? Body::kSubstrate : Body::kSphere;
+    m.element_body.push_back(body);
+    m.node_body.insert(m.node_body.end(), 4, body);
+    r0 += s;
+  }
+  const double shortest = mesh_quality(m, Body::kSubstrate).min_characteristic_length;
+  EXPECT_NEAR(shortest, 1e-3 / std::sqrt(2.0), 1e-15);
+  const ExplicitCost c = explicit_cost(m, Body::kSubstrate, shortest);
+  EXPECT_EQ(c.elements_at_level, (std::array<int, kCostLevels + 1>{1, 1, 0, 0, 1}));
+  EXPECT_DOUBLE_EQ(c.updates, 1.0 + 0.5 + 1.0 / 16.0);
+  const ExplicitCost sphere = explicit_cost(m, Body::kSphere, shortest);
+  EXPECT_EQ(sphere.elements_at_level[0], 1);
+  EXPECT_DOUBLE_EQ(sphere.updates, 1.0);
 }
 
 }  // namespace
