@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+#include "corlab/fem/kernels/subcycling_level.hpp"
+
 namespace corlab::fem {
 
 QuadQuality quad_quality(const std::array<double, 4>& r, const std::array<double, 4>& z) {
@@ -123,10 +125,7 @@ ExplicitCost explicit_cost(const Mesh& mesh, Body body, double shortest) {
   for (int e = 0; e < mesh.num_elements(); ++e) {
     if (mesh.element_body[static_cast<std::size_t>(e)] != body) continue;
     const double length = element_quality(mesh, e).characteristic_length;
-    int level = 0;
-    while (level < kCostLevels && std::ldexp(shortest, level + 1) <= kCostLevelMargin * length) {
-      ++level;
-    }
+    const int level = subcycling_level(shortest, length, kCostLevels);
     ++cost.elements_at_level[static_cast<std::size_t>(level)];
     cost.updates += std::ldexp(1.0, -level);
   }

@@ -14,6 +14,7 @@
 #include "corlab/fem/kernels/axisym_quad4.hpp"
 #include "corlab/fem/kernels/penalty_contact.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
+#include "corlab/fem/kernels/subcycling_level.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/solver/contact_search.hpp"
 #include "fem/solver/impact_state.hpp"
@@ -296,9 +297,9 @@ std::vector<int> node_levels(const ImpactModel& m, const std::vector<int>& eleme
   return level;
 }
 
-/// Level of each element: the largest L <= max_level with 2^L dt_critical <= kLevelMargin x its
-/// own stable step; 0 for an element touching a contact node; then lowered until it is at most
-/// one above the smallest level at its nodes (neighbours differ by at most one level).
+/// Level of each element: subcycling_level of its own stable step against dt_critical; 0 for an
+/// element touching a contact node; then lowered until it is at most one above the smallest level
+/// at its nodes (neighbours differ by at most one level).
 std::vector<int> element_levels(const ImpactModel& m, int max_level) {
   std::vector<char> contact(m.n_nodes, 0);
   for (int i : m.slaves) contact[i] = 1;
@@ -306,8 +307,7 @@ std::vector<int> element_levels(const ImpactModel& m, int max_level) {
   std::vector<int> level(m.n_elements, 0);
   for (int e = 0; e < m.n_elements; ++e) {
     const double dt_e = initial_element_step(m, e);
-    int l = 0;
-    while (l < max_level && std::ldexp(m.dt_critical, l + 1) <= kLevelMargin * dt_e) ++l;
+    int l = subcycling_level(m.dt_critical, dt_e, max_level);
     for (int n : m.element_nodes[e]) l = contact[n] != 0 ? 0 : l;
     level[e] = l;
   }

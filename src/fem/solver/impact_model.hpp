@@ -16,9 +16,6 @@ namespace corlab::fem::solver {
 
 /// Largest subcycling level (solver.subcycling_levels <= this) [-].
 constexpr int kMaxSubcyclingLevels = 6;
-/// An element gets level L only if 2^L dt_critical <= kLevelMargin x its own stable step, so that
-/// it may deform (its stable step shrink by 1 - kLevelMargin) before it limits the base step [-].
-constexpr double kLevelMargin = 0.8;
 
 /// Subcycling is used only when it leaves at most this fraction of the element updates (sum of
 /// 2^-L over the elements / their number): an update costs about 20 % more than one without

@@ -4,6 +4,7 @@
 
 #include <array>
 
+#include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/mesh/mesh.hpp"
 
 namespace corlab::fem {
@@ -45,15 +46,12 @@ MeshQuality mesh_quality(const Mesh& mesh, Body body);
 /// Quality of element e of `mesh`.
 QuadQuality element_quality(const Mesh& mesh, int e);
 
-/// Levels and level margin of the explicit-cost model: the solver's defaults
-/// (solver.subcycling_levels = 4; an element gets level L only if 2^L x the shortest length <=
-/// 0.8 x its own, kLevelMargin in src/fem/solver/impact_model.hpp) [-].
-constexpr int kCostLevels = 4;
-constexpr double kCostLevelMargin = 0.8;
+/// Largest subcycling level of the explicit-cost model: the solver's default [-].
+constexpr int kCostLevels = SolverConfig{}.subcycling_levels;
 
 /// Explicit cost of one body under element subcycling, from geometry alone (equal wave speeds):
-/// an element of characteristic length L_e steps at 2^L times the base step, L the largest level
-/// <= kCostLevels with 2^L L_min <= kCostLevelMargin L_e, L_min the model's shortest length.
+/// an element of characteristic length L_e steps at 2^L times the base step, L =
+/// subcycling_level(L_min, L_e, kCostLevels), L_min the model's shortest length.
 struct ExplicitCost {
   std::array<int, kCostLevels + 1> elements_at_level{};  ///< element count of each level [-]
   double updates = 0.0;  ///< sum of 2^-L: element updates per base step [-]

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "corlab/fem/kernels/subcycling_level.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/simulate.hpp"
 #include "fem/solver/impact_model.hpp"
@@ -61,7 +62,8 @@ TEST(Subcycling, LevelsRespectTheStableStepAndTheContact) {
     const int l = lv.element[e];
     // Stable: 2^L dt_critical within the margin of the element's own step (level 0 always is).
     if (l > 0) {
-      EXPECT_LE(std::ldexp(m.dt_critical, l), solver::kLevelMargin * element_step(m, e) * 1.000001)
+      EXPECT_LE(std::ldexp(m.dt_critical, l),
+                kSubcyclingLevelMargin * element_step(m, e) * 1.000001)
           << "element " << e << " level " << l;
     }
     for (int n : m.element_nodes[e]) node_min[n] = std::min(node_min[n], l);
