@@ -34,4 +34,30 @@ std::vector<int> MeshBuilder::block(const std::vector<Point>& pts, std::size_t n
   return ids;
 }
 
+void MeshBuilder::quad(const std::array<Point, 4>& p) {
+  const std::array<int, 4> q{node(p[0]), node(p[1]), node(p[2]), node(p[3])};
+  mesh_.quads.push_back(counter_clockwise(mesh_, q));
+  mesh_.element_body.push_back(body_);
+}
+
+void MeshBuilder::transition(const std::array<Point, 4>& fine, Point c0, Point c1) {
+  for (const auto& q : transition_quads(fine, c0, c1)) quad(q);
+}
+
+std::array<std::array<Point, 4>, 4> transition_quads(const std::array<Point, 4>& fine,
+                                                     Point c0,
+                                                     Point c1) {
+  const double length = norm(fine[3] - fine[0]);
+  const auto interior = [&](Point f) {
+    const Point c = c0 + (norm(f - fine[0]) / length) * (c1 - c0);
+    return 0.5 * (f + c);
+  };
+  const Point i1 = interior(fine[1]);
+  const Point i2 = interior(fine[2]);
+  return {{{fine[0], fine[1], i1, c0},
+           {fine[1], fine[2], i2, i1},
+           {fine[2], fine[3], c1, i2},
+           {c0, i1, i2, c1}}};
+}
+
 }  // namespace corlab::fem::meshing

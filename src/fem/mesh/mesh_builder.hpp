@@ -3,6 +3,7 @@
 /// Adds the generated blocks to a Mesh, one body at a time, sharing nodes between the blocks of a
 /// body. Private to the mesh generator (src/fem/mesh).
 
+#include <array>
 #include <cstddef>
 #include <map>
 #include <utility>
@@ -12,6 +13,14 @@
 #include "fem/mesh/block_geometry.hpp"
 
 namespace corlab::fem::meshing {
+
+/// The four quads of the 3:1 transition between a fine edge f0 -> f3 (three intervals) and the
+/// coarse edge c0 -> c1 opposite it (one interval; c0 faces f0), around two interior nodes, each
+/// halfway between f1 (f2) and the point of the coarse edge at f1's (f2's) fraction of the edge.
+/// With equal fine intervals and a layer twice as thick, its corners are 45/135 deg.
+std::array<std::array<Point, 4>, 4> transition_quads(const std::array<Point, 4>& fine,
+                                                     Point c0,
+                                                     Point c1);
 
 /// Adds nodes and elements to a mesh, merging nodes at bitwise-equal coordinates within a body.
 class MeshBuilder {
@@ -23,6 +32,10 @@ class MeshBuilder {
   int node(Point p);
   /// Adds a block of (ni+1) x (nj+1) points (index i * (nj+1) + j); returns its node ids.
   std::vector<int> block(const std::vector<Point>& pts, std::size_t ni, std::size_t nj);
+  /// Adds one quad with corners p (either orientation).
+  void quad(const std::array<Point, 4>& p);
+  /// Adds the 3:1 transition of transition_quads.
+  void transition(const std::array<Point, 4>& fine, Point c0, Point c1);
 
  private:
   Mesh& mesh_;

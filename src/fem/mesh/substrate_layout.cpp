@@ -10,6 +10,7 @@
 
 #include "corlab/fem/mesh/mesh_quality.hpp"
 #include "fem/mesh/block_geometry.hpp"
+#include "fem/mesh/coarsening_layer.hpp"
 #include "fem/mesh/graded_distribution.hpp"
 
 namespace corlab::fem::meshing {
@@ -20,8 +21,65 @@ namespace {
 constexpr double kMinBlockAngle = 40.0 * kPi / 180.0;
 constexpr double kMinBlockWidth = 0.7;
 
-/// Tensor-product substrate (used when the refined zone leaves no room for the graded blocks).
+/// Graded intervals at least this many h long are coarse enough to run on to the base and to
+/// r = W in a plain tensor product (generate_substrate_tensor).
+constexpr double kCornerSize = 3.0;
+
+/// The point at radius r [m] and depth d [m] below the surface (z = +0, not -0, at the surface).
+Point at_depth(double r, double d) { return {r, d == 0.0 ? 0.0 : -d}; }
+
+/// Index of the first interval of xr (from `first` on) at least kCornerSize h long [-].
+std::size_t first_coarse(const std::vector<double>& x, std::size_t first, double h) {
+  std::size_t i = first;
+  while (i + 1 < x.size() && x[i + 1] - x[i] < kCornerSize * h) ++i;
+  return i;
+}
+
+/// Tensor-product substrate coarsened by 3:1 transitions (used when the refined zone leaves no
+/// room for the graded blocks). Radii xr and depths xd are graded away from the uniform zone
+/// (nr x nd intervals of h); p and q are the first radial and depth intervals beyond it that are
+/// kCornerSize h long. Three sweeps of layers (coarsening_layer: each merges its intervals 3:1,
+/// from the surface, resp. the axis, on, wherever the transition is well shaped):
+///   - under the zone out to xr[p], row by row downwards: its h-wide columns and the graded
+///     ones next to them;
+///   - the zone's depth, column by column outwards: its h-high rows, joined at xr[p] by the
+///     graded rows down to xd[q];
+///   - the corner beyond xr[p] and xd[q]: a plain tensor product of coarse intervals.
+/// So the fine columns and rows do not run on to the base and to r = W at the contact's step, as
+/// in a plain tensor grid.
 void generate_substrate_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+  const double h = o.h_contact;
+  const auto xr = graded_positions(o.substrate_radius, h, o.zone_radius, o.growth, o.h_max);
+  const auto xd = graded_positions(o.substrate_depth, h, o.zone_depth, o.growth, o.h_max);
+  const std::size_t nd = uniform_count(xd, h);
+  const std::size_t p = first_coarse(xr, uniform_count(xr, h), h);
+  const std::size_t q = first_coarse(xd, nd, h);
+  const auto under = [&](std::size_t i, std::size_t j) { return at_depth(xr[i], xd[j]); };
+  const auto beside = [&](std::size_t j, std::size_t i) { return at_depth(xr[i], xd[j]); };
+  builder.start_body(Body::kSubstrate);
+  std::vector<std::size_t> cols = all_edges(p);  // under the zone, downwards
+  for (std::size_t j = nd; j + 1 < xd.size(); ++j)
+    cols = coarsening_layer(builder, cols, j, o.h_max, under);
+  std::vector<std::size_t> rows = all_edges(nd);  // the zone's depth, outwards
+  for (std::size_t i = 0; i + 1 < xr.size(); ++i) {
+    for (std::size_t j = nd + 1; i == p && j <= q; ++j) rows.push_back(j);
+    rows = coarsening_layer(builder, rows, i, o.h_max, beside);
+  }
+  for (std::size_t i = p; i + 1 < xr.size(); ++i)  // the corner
+    for (std::size_t j = q; j + 1 < xd.size(); ++j)
+      builder.quad({under(i, j + 1), under(i + 1, j + 1), under(i + 1, j), under(i, j)});
+  for (const double r : xr) mesh.substrate_surface_nodes.push_back(builder.node(at_depth(r, 0.0)));
+  for (const std::size_t i : cols)
+    mesh.base_nodes.push_back(builder.node(at_depth(xr[i], xd.back())));
+  for (std::size_t i = p + 1; i < xr.size(); ++i)
+    mesh.base_nodes.push_back(builder.node(at_depth(xr[i], xd.back())));
+}
+
+/// The plain tensor-product substrate of `o` in a mesh of its own (no transitions): the zone's
+/// h-wide columns run down to the base and its h-high rows out to r = W. Only its cost is used:
+/// the choice between the blocks and the tensor grid (generate_substrate) is kept as it was
+/// before the transitions, so that the cases that get the blocks, and their e, stay the same.
+Mesh plain_tensor(const MeshOptions& o) {
   const auto xr =
       graded_positions(o.substrate_radius, o.h_contact, o.zone_radius, o.growth, o.h_max);
   const auto xd = graded_positions(o.substrate_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
@@ -29,14 +87,12 @@ void generate_substrate_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh&
   const std::size_t nj = xd.size() - 1;
   std::vector<Point> pts((ni + 1) * (nj + 1));
   for (std::size_t i = 0; i <= ni; ++i)
-    for (std::size_t j = 0; j <= nj; ++j)  // j = 0 at the base, j = nj at the top
-      pts[i * (nj + 1) + j] = {xr[i], j == nj ? 0.0 : -xd[nj - j]};
+    for (std::size_t j = 0; j <= nj; ++j) pts[i * (nj + 1) + j] = at_depth(xr[i], xd[nj - j]);
+  Mesh tensor;
+  MeshBuilder builder(tensor);
   builder.start_body(Body::kSubstrate);
-  const auto ids = builder.block(pts, ni, nj);
-  for (std::size_t i = 0; i <= ni; ++i) {
-    mesh.substrate_surface_nodes.push_back(ids[i * (nj + 1) + nj]);
-    mesh.base_nodes.push_back(ids[i * (nj + 1)]);
-  }
+  builder.block(pts, ni, nj);
+  return tensor;
 }
 
 /// The uniform zone's (nr + 1) x (nd + 1) points, at exact multiples of h (index i * (nd + 1) + j).
@@ -148,10 +204,7 @@ void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) 
   MeshOptions square = o;
   square.zone_depth = std::max(o.zone_depth, o.zone_radius);
   if (const auto blocks = well_shaped_substrate_blocks(square)) {
-    Mesh tensor;
-    MeshBuilder tensor_builder(tensor);
-    generate_substrate_tensor(o, tensor_builder, tensor);
-    if (substrate_cost(*blocks) < substrate_cost(tensor)) {
+    if (substrate_cost(*blocks) < substrate_cost(plain_tensor(o))) {
       generate_substrate_blocks(square, builder, mesh);
       return;
     }

@@ -1,0 +1,53 @@
+// The 3:1 transition's shape test (coarsening_layer.hpp).
+#include "fem/mesh/coarsening_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/mesh/mesh_quality.hpp"
+
+namespace corlab::fem::meshing {
+namespace {
+
+constexpr double kMinTransitionAngle = 40.0 * kPi / 180.0;
+constexpr double kMinTransitionWidth = 0.7;
+constexpr double kMinTransitionLength = 1.0 / std::numbers::sqrt2;  // a square's
+
+}  // namespace
+
+bool well_shaped_transition(const std::array<Point, 4>& fine, Point c0, Point c1) {
+  double narrowest = norm(fine[1] - fine[0]);
+  for (std::size_t k = 1; k < 3; ++k) narrowest = std::min(narrowest, norm(fine[k + 1] - fine[k]));
+  for (const auto& q : transition_quads(fine, c0, c1)) {
+    std::array<double, 4> r{};
+    std::array<double, 4> z{};
+    for (std::size_t k = 0; k < 4; ++k) {
+      r[k] = q[k].r;
+      z[k] = q[k].z;
+    }
+    if ((r[2] - r[0]) * (z[3] - z[1]) - (z[2] - z[0]) * (r[3] - r[1]) < 0.0) {  // clockwise
+      std::swap(r[1], r[3]);
+      std::swap(z[1], z[3]);
+    }
+    const QuadQuality shape = quad_quality(r, z);
+    const double length = 1.0 / std::sqrt(quad4_gradient_norm2(quad4_geometry(r.data(), z.data())));
+    if (!(shape.min_jacobian > 0.0) || shape.min_angle < kMinTransitionAngle ||
+        shape.max_angle > kPi - kMinTransitionAngle ||
+        shape.width < kMinTransitionWidth * narrowest ||
+        length < kMinTransitionLength * narrowest) {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<std::size_t> all_edges(std::size_t n) {
+  std::vector<std::size_t> e(n + 1);
+  for (std::size_t i = 0; i <= n; ++i) e[i] = i;
+  return e;
+}
+
+}  // namespace corlab::fem::meshing

@@ -1,0 +1,59 @@
+#pragma once
+/// @file coarsening_layer.hpp
+/// Coarsening a structured grid by 3:1 transitions (docs/theory/mesh.md, "3:1 transitions"): a
+/// grid's points are swept layer by layer (between grid lines j and j + 1), and in each layer
+/// three intervals become one wherever the transition (MeshBuilder::transition) is well shaped.
+/// Private to the mesh generator (src/fem/mesh).
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "fem/mesh/block_geometry.hpp"
+#include "fem/mesh/mesh_builder.hpp"
+
+namespace corlab::fem::meshing {
+
+/// Whether the 3:1 transition from `fine` (f0 -> f3) to c0 -> c1 is as well shaped as the rest of
+/// the mesh: all four elements convex with corners in [40, 140] deg, width (area / longest edge)
+/// >= 0.7 and planar Flanagan-Belytschko length (the stable step's) >= 1/sqrt(2) of the
+/// narrowest fine interval (a square's), so that it never sets the explicit step. For equal fine
+/// intervals w: a layer about 2.1 to 2.9 w thick (45/135 deg at 2 w).
+bool well_shaped_transition(const std::array<Point, 4>& fine, Point c0, Point c1);
+
+/// One layer of elements between grid lines j and j + 1 across the grid's intervals between the
+/// indices `edges` (point(i, j) is grid point i of line j): from the first edge on, three
+/// intervals become one through a 3:1 transition where it is well shaped and its coarse interval
+/// is at most `max_size` [m]; the others cross as plain quads. Returns the edges on line j + 1.
+template <typename Grid>
+std::vector<std::size_t> coarsening_layer(MeshBuilder& builder,
+                                          const std::vector<std::size_t>& edges,
+                                          std::size_t j,
+                                          double max_size,
+                                          Grid point) {
+  std::vector<std::size_t> next{edges.front()};
+  std::size_t k = 0;
+  while (k + 1 < edges.size()) {
+    bool merge = k + 3 < edges.size();
+    if (merge) {
+      const std::array<Point, 4> fine{point(edges[k], j), point(edges[k + 1], j),
+                                      point(edges[k + 2], j), point(edges[k + 3], j)};
+      const Point c0 = point(edges[k], j + 1);
+      const Point c1 = point(edges[k + 3], j + 1);
+      merge = norm(c1 - c0) <= max_size && well_shaped_transition(fine, c0, c1);
+      if (merge) builder.transition(fine, c0, c1);
+    }
+    if (!merge) {
+      builder.quad({point(edges[k], j), point(edges[k + 1], j), point(edges[k + 1], j + 1),
+                    point(edges[k], j + 1)});
+    }
+    k += merge ? 3 : 1;
+    next.push_back(edges[k]);
+  }
+  return next;
+}
+
+/// The indices 0, 1, ..., n.
+std::vector<std::size_t> all_edges(std::size_t n);
+
+}  // namespace corlab::fem::meshing

@@ -1,0 +1,90 @@
+// The generator's block and quad assembly (src/fem/mesh/mesh_builder.hpp): the 3:1 transition.
+#include "fem/mesh/mesh_builder.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/mesh/mesh_quality.hpp"
+
+namespace corlab::fem::meshing {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+struct Corners {
+  std::array<double, 4> r{};
+  std::array<double, 4> z{};
+};
+
+Corners corners(const Mesh& m, std::size_t e) {
+  Corners c;
+  for (std::size_t k = 0; k < 4; ++k) {
+    c.r[k] = m.r[static_cast<std::size_t>(m.quads[e][k])];
+    c.z[k] = m.z[static_cast<std::size_t>(m.quads[e][k])];
+  }
+  return c;
+}
+
+// Planar Flanagan-Belytschko length 1 / sqrt(sum b.b), the solver's stable-step length without
+// the hoop term (stable_time_step.hpp).
+double planar_length(const Corners& c) {
+  const Quad4Geometry g = quad4_geometry(c.r.data(), c.z.data());
+  return 1.0 / std::sqrt(quad4_gradient_norm2(g));
+}
+
+// Three fine intervals of w = 1 on top (z = 0), one of 3 at the bottom of a layer 2 (then 2.2)
+// deep, at r >= 1 (off the axis): four elements, two new interior nodes, the layer's area
+// exactly, every element counter-clockwise and no shorter (stable step) than a square of side w;
+// at 2 the corners are 45/135 deg, at 2.2 (where the substrate starts to use it) they are within
+// 40-140 deg and every element is >= 0.7 w wide (area / longest edge).
+TEST(MeshBuilder, TransitionThreeToOneIsWellShaped) {
+  for (const double depth : {2.0, 2.2}) {
+    Mesh m;
+    MeshBuilder b(m);
+    b.start_body(Body::kSubstrate);
+    b.transition({Point{1.0, 0.0}, Point{2.0, 0.0}, Point{3.0, 0.0}, Point{4.0, 0.0}},
+                 Point{1.0, -depth}, Point{4.0, -depth});
+    ASSERT_EQ(m.quads.size(), 4u);
+    EXPECT_EQ(m.num_nodes(), 8);
+    double area = 0.0;
+    for (std::size_t e = 0; e < m.quads.size(); ++e) {
+      const Corners c = corners(m, e);
+      const QuadQuality q = quad_quality(c.r, c.z);
+      area += q.area;
+      EXPECT_GT(q.min_jacobian, 0.0) << e;
+      EXPECT_GE(planar_length(c), 1.0 / std::sqrt(2.0) - 1e-12) << e;
+      const double bound = depth == 2.0 ? 45.0 : 40.0;
+      EXPECT_GE(q.min_angle, bound * kDegree - 1e-12) << depth << " " << e;
+      EXPECT_LE(q.max_angle, (180.0 - bound) * kDegree + 1e-12) << depth << " " << e;
+      if (depth > 2.0) {
+        EXPECT_GE(q.width, 0.7) << e;
+      }
+    }
+    EXPECT_NEAR(area, 3.0 * depth, 1e-12);
+  }
+}
+
+// The template's fine edge is shared node for node with a block built on it, the interior nodes
+// lie halfway across, and a second transition on the coarse side reuses the coarse nodes.
+TEST(MeshBuilder, TransitionSharesItsEdgeNodes) {
+  Mesh m;
+  MeshBuilder b(m);
+  b.start_body(Body::kSubstrate);
+  b.block({Point{0.0, 0.0}, Point{0.0, 1.0}, Point{1.0, 0.0}, Point{1.0, 1.0}, Point{2.0, 0.0},
+           Point{2.0, 1.0}, Point{3.0, 0.0}, Point{3.0, 1.0}},
+          3, 1);
+  const int before = m.num_nodes();
+  b.transition({Point{0.0, 0.0}, Point{1.0, 0.0}, Point{2.0, 0.0}, Point{3.0, 0.0}},
+               Point{0.0, -2.0}, Point{3.0, -2.0});
+  EXPECT_EQ(m.num_nodes(), before + 4);  // two interior, two coarse
+  EXPECT_EQ(m.r[static_cast<std::size_t>(before)], 1.0);
+  EXPECT_EQ(m.z[static_cast<std::size_t>(before)], -1.0);
+  EXPECT_EQ(b.node({3.0, -2.0}), before + 3);
+}
+
+}  // namespace
+}  // namespace corlab::fem::meshing
