@@ -52,6 +52,9 @@ void check_geometry(const ImpactConfig& c) {
     throw_invalid("mesh.h_max", c.mesh.h_max,
                   fmt::format(">= mesh.h_min = {:g} [m]", c.mesh.h_min));
   }
+  if (c.mesh.transitions != 0.0 && c.mesh.transitions != 1.0) {
+    throw_invalid("mesh.transitions", c.mesh.transitions, "0 (off) or 1 (on)");
+  }
   if (!c.mesh.file.empty()) return;  // the file's geometry is used, not these keys
   const double a = uncapped_contact_radius(c);
   if (!(a <= kMaxContactRadiusFraction * c.sphere.radius)) {

@@ -49,6 +49,7 @@ MeshOptions mesh_options_for(const ImpactConfig& config) {
   o.zone_depth = config.mesh.refine_depth * a;
   o.growth = config.mesh.growth;
   o.h_max = std::max(config.mesh.h_max, o.h_contact);
+  o.transitions = config.mesh.transitions != 0.0;
   return o;
 }
 

@@ -22,7 +22,7 @@ constexpr double kMinBlockAngle = 40.0 * kPi / 180.0;
 constexpr double kMinBlockWidth = 0.7;
 
 /// Graded intervals at least this many h long are coarse enough to run on to the base and to
-/// r = W in a plain tensor product (generate_substrate_tensor).
+/// r = W in a plain tensor product (generate_substrate_coarsened_tensor).
 constexpr double kCornerSize = 3.0;
 
 /// The point at radius r [m] and depth d [m] below the surface (z = +0, not -0, at the surface).
@@ -35,8 +35,8 @@ std::size_t first_coarse(const std::vector<double>& x, std::size_t first, double
   return i;
 }
 
-/// Tensor-product substrate coarsened by 3:1 transitions (used when the refined zone leaves no
-/// room for the graded blocks). Radii xr and depths xd are graded away from the uniform zone
+/// Tensor-product substrate coarsened by 3:1 transitions (`mesh.transitions` = 1; used where
+/// the tensor grid is). Radii xr and depths xd are graded away from the uniform zone
 /// (nr x nd intervals of h); p and q are the first radial and depth intervals beyond it that are
 /// kCornerSize h long. Three sweeps of layers (coarsening_layer: each merges its intervals 3:1,
 /// from the surface, resp. the axis, on, wherever the transition is well shaped):
@@ -47,7 +47,7 @@ std::size_t first_coarse(const std::vector<double>& x, std::size_t first, double
 ///   - the corner beyond xr[p] and xd[q]: a plain tensor product of coarse intervals.
 /// So the fine columns and rows do not run on to the base and to r = W at the contact's step, as
 /// in a plain tensor grid.
-void generate_substrate_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
+void generate_substrate_coarsened_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const double h = o.h_contact;
   const auto xr = graded_positions(o.substrate_radius, h, o.zone_radius, o.growth, o.h_max);
   const auto xd = graded_positions(o.substrate_depth, h, o.zone_depth, o.growth, o.h_max);
@@ -75,11 +75,9 @@ void generate_substrate_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh&
     mesh.base_nodes.push_back(builder.node(at_depth(xr[i], xd.back())));
 }
 
-/// The plain tensor-product substrate of `o` in a mesh of its own (no transitions): the zone's
-/// h-wide columns run down to the base and its h-high rows out to r = W. Only its cost is used:
-/// the choice between the blocks and the tensor grid (generate_substrate) is kept as it was
-/// before the transitions, so that the cases that get the blocks, and their e, stay the same.
-Mesh plain_tensor(const MeshOptions& o) {
+/// Plain tensor-product substrate (the default tensor layout; `mesh.transitions` = 0): the
+/// zone's h-wide columns run down to the base and its h-high rows out to r = W.
+void generate_substrate_plain_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto xr =
       graded_positions(o.substrate_radius, o.h_contact, o.zone_radius, o.growth, o.h_max);
   const auto xd = graded_positions(o.substrate_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
@@ -87,11 +85,23 @@ Mesh plain_tensor(const MeshOptions& o) {
   const std::size_t nj = xd.size() - 1;
   std::vector<Point> pts((ni + 1) * (nj + 1));
   for (std::size_t i = 0; i <= ni; ++i)
-    for (std::size_t j = 0; j <= nj; ++j) pts[i * (nj + 1) + j] = at_depth(xr[i], xd[nj - j]);
+    for (std::size_t j = 0; j <= nj; ++j)  // j = 0 at the base, j = nj at the top
+      pts[i * (nj + 1) + j] = at_depth(xr[i], xd[nj - j]);
+  builder.start_body(Body::kSubstrate);
+  const auto ids = builder.block(pts, ni, nj);
+  for (std::size_t i = 0; i <= ni; ++i) {
+    mesh.substrate_surface_nodes.push_back(ids[i * (nj + 1) + nj]);
+    mesh.base_nodes.push_back(ids[i * (nj + 1)]);
+  }
+}
+
+/// The plain tensor grid of `o` in a mesh of its own. The choice between the blocks and the
+/// tensor grid (generate_substrate) weighs its cost also when the transitions are on, so that
+/// the option changes the tensor grid only, never which cases get the blocks.
+Mesh plain_tensor(const MeshOptions& o) {
   Mesh tensor;
   MeshBuilder builder(tensor);
-  builder.start_body(Body::kSubstrate);
-  builder.block(pts, ni, nj);
+  generate_substrate_plain_tensor(o, builder, tensor);
   return tensor;
 }
 
@@ -209,7 +219,11 @@ void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) 
       return;
     }
   }
-  generate_substrate_tensor(o, builder, mesh);
+  if (o.transitions) {
+    generate_substrate_coarsened_tensor(o, builder, mesh);
+  } else {
+    generate_substrate_plain_tensor(o, builder, mesh);
+  }
 }
 
 }  // namespace corlab::fem::meshing

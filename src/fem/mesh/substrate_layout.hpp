@@ -14,10 +14,10 @@ namespace corlab::fem::meshing {
 /// three blocks around a zone as deep as it is wide (uniform h deeper than asked, but the
 /// elements grow in both directions away from it: cheaper for small contacts) and the tensor
 /// grid of the zone as given, the cheaper to integrate (explicit_cost of the plain tensor grid,
-/// whose fine columns and rows run on to the base and to r = W). The tensor grid is built with
-/// 3:1 transitions that merge those fine columns and rows on the way (docs/theory/mesh.md,
-/// "Substrate"). Adds them as Body::kSubstrate and sets mesh.substrate_surface_nodes and
-/// mesh.base_nodes (both from the axis outwards).
+/// whose fine columns and rows run on to the base and to r = W). With o.transitions the tensor
+/// grid is built with 3:1 transitions that merge those fine columns and rows on the way
+/// (docs/theory/mesh.md, "Substrate"). Adds them as Body::kSubstrate and sets
+/// mesh.substrate_surface_nodes and mesh.base_nodes (both from the axis outwards).
 void generate_substrate(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh);
 
 }  // namespace corlab::fem::meshing

@@ -55,8 +55,10 @@ struct MeshConfig {
   /// elastic stresses peak at 0.48 a below the contact (Johnson 1985, fig. 4.6); deeper, the
   /// graded mesh changes e by < 0.1 % (docs/theory/mesh.md, "Depth of the refined zone").
   double refine_depth = 0.5;
-  double growth = 1.15;        ///< size ratio of neighbouring elements outside the zone [-]
-  double h_max = 5e-3;         ///< largest element size [m]
+  double growth = 1.15;  ///< size ratio of neighbouring elements outside the zone [-]
+  double h_max = 5e-3;   ///< largest element size [m]
+  /// 1 = the tensor-grid substrate with 3:1 transitions, 0 = plain (the default) [-]
+  double transitions = 0.0;
   std::filesystem::path file;  ///< Gmsh .msh file; empty = built-in generator
 };
 

@@ -22,9 +22,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-MeshOptions options_at(double velocity) {
+MeshOptions options_at(double velocity, bool transitions = false) {
   ImpactConfig config;
   config.impact.velocity = velocity;
+  config.mesh.transitions = transitions ? 1.0 : 0.0;
   return mesh_options_for(config);
 }
 
@@ -33,7 +34,13 @@ double edge(const Mesh& m, int a, int b) {
                     m.z[static_cast<std::size_t>(a)] - m.z[static_cast<std::size_t>(b)]);
 }
 
-class MeshAtVelocity : public ::testing::TestWithParam<double> {};
+// Parameter: impact velocity [m/s] and mesh.transitions (3:1 transitions in the tensor substrate).
+class MeshAtVelocity : public ::testing::TestWithParam<std::tuple<double, bool>> {
+ protected:
+  static MeshOptions options() {
+    return options_at(std::get<0>(GetParam()), std::get<1>(GetParam()));
+  }
+};
 
 TEST(CounterClockwise, KeepsACounterClockwiseQuadAndFlipsAClockwiseOne) {
   Mesh m;
@@ -46,7 +53,7 @@ TEST(CounterClockwise, KeepsACounterClockwiseQuadAndFlipsAClockwiseOne) {
 }
 
 TEST_P(MeshAtVelocity, NodeSetsFollowTheConventions) {
-  const MeshOptions o = options_at(GetParam());
+  const MeshOptions o = options();
   const Mesh m = generate_impact_mesh(o);
   const double tol = 1e-12 * o.sphere_radius;
   ASSERT_EQ(m.node_body.size(), m.r.size());
@@ -129,7 +136,7 @@ TEST_P(MeshAtVelocity, NodeSetsFollowTheConventions) {
 }
 
 TEST_P(MeshAtVelocity, ElementsAreWellShapedAndNotTooSmall) {
-  const MeshOptions o = options_at(GetParam());
+  const MeshOptions o = options();
   const Mesh m = generate_impact_mesh(o);
   for (const Body b : {Body::kSphere, Body::kSubstrate}) {
     const MeshQuality q = mesh_quality(m, b);
@@ -145,7 +152,7 @@ TEST_P(MeshAtVelocity, ElementsAreWellShapedAndNotTooSmall) {
 }
 
 TEST_P(MeshAtVelocity, AreasAndVolumesMatchTheGeometry) {
-  const MeshOptions o = options_at(GetParam());
+  const MeshOptions o = options();
   const Mesh m = generate_impact_mesh(o);
   const double radius = o.sphere_radius;
   const MeshQuality s = mesh_quality(m, Body::kSphere);
@@ -161,7 +168,7 @@ TEST_P(MeshAtVelocity, AreasAndVolumesMatchTheGeometry) {
 }
 
 TEST_P(MeshAtVelocity, ContactSizeIsHAlongTheSurfacesAndInDepth) {
-  const MeshOptions o = options_at(GetParam());
+  const MeshOptions o = options();
   const Mesh m = generate_impact_mesh(o);
   const double h = o.h_contact;
   // substrate surface segments inside the zone
@@ -207,7 +214,7 @@ TEST_P(MeshAtVelocity, ContactSizeIsHAlongTheSurfacesAndInDepth) {
 // (an edge split on one side only, e.g. a misplaced 3:1 transition) leaves an edge used once
 // inside the body.
 TEST_P(MeshAtVelocity, ElementsMeetEdgeToEdge) {
-  const MeshOptions o = options_at(GetParam());
+  const MeshOptions o = options();
   const Mesh m = generate_impact_mesh(o);
   std::map<std::pair<int, int>, int> uses;
   for (const auto& q : m.quads)
@@ -231,7 +238,36 @@ TEST_P(MeshAtVelocity, ElementsMeetEdgeToEdge) {
   EXPECT_EQ(inner_once, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(PaperVelocities, MeshAtVelocity, ::testing::Values(0.1, 1.0, 5.0, 70.0));
+INSTANTIATE_TEST_SUITE_P(PaperVelocities,
+                         MeshAtVelocity,
+                         ::testing::Combine(::testing::Values(0.1, 1.0, 5.0, 70.0),
+                                            ::testing::Bool()));
+
+// mesh.transitions = 1 changes only the tensor-grid substrate: the same sphere and the same
+// substrate surface (the contact's master segments), fewer substrate elements and fewer element
+// updates per base step (explicit_cost: the zone's fine columns and rows are merged 3:1 on their
+// way to the base and to r = W). Paper case: 2301 -> 1463 substrate elements.
+TEST(ImpactMesh, TransitionsCutTheTensorSubstrateOnly) {
+  for (const double v : {5.0, 70.0}) {
+    const Mesh plain = generate_impact_mesh(options_at(v, false));
+    const Mesh coarsened = generate_impact_mesh(options_at(v, true));
+    const MeshQuality sp = mesh_quality(plain, Body::kSphere);
+    const MeshQuality sc = mesh_quality(coarsened, Body::kSphere);
+    EXPECT_EQ(sp.elements, sc.elements) << v;
+    ASSERT_EQ(plain.substrate_surface_nodes.size(), coarsened.substrate_surface_nodes.size());
+    for (std::size_t k = 0; k < plain.substrate_surface_nodes.size(); ++k) {
+      EXPECT_EQ(plain.r[static_cast<std::size_t>(plain.substrate_surface_nodes[k])],
+                coarsened.r[static_cast<std::size_t>(coarsened.substrate_surface_nodes[k])]);
+    }
+    const MeshQuality wp = mesh_quality(plain, Body::kSubstrate);
+    const MeshQuality wc = mesh_quality(coarsened, Body::kSubstrate);
+    EXPECT_LT(wc.elements, 0.8 * wp.elements) << v;
+    const double shortest = std::min(sp.min_characteristic_length, wp.min_characteristic_length);
+    EXPECT_LT(explicit_cost(coarsened, Body::kSubstrate, shortest).updates,
+              0.8 * explicit_cost(plain, Body::kSubstrate, shortest).updates)
+        << v;
+  }
+}
 
 // The refined zone is 1.5 a wide but only mesh.refine_depth x a deep (0.5 a by default).
 TEST(ImpactMesh, RefinedZoneDepthFollowsTheConfig) {
