@@ -38,8 +38,8 @@ std::size_t first_coarse(const std::vector<double>& x, std::size_t first, double
 /// Tensor-product substrate coarsened by 3:1 transitions (`mesh.transitions` = 1; used where
 /// the tensor grid is). Radii xr and depths xd are graded away from the uniform zone
 /// (nr x nd intervals of h); p and q are the first radial and depth intervals beyond it that are
-/// kCornerSize h long. Three sweeps of layers (coarsening_layer: each merges its intervals 3:1,
-/// from the surface, resp. the axis, on, wherever the transition is well shaped):
+/// kCornerSize h long. Three parts (coarsening_layer: each layer merges its intervals 3:1 from
+/// the axis, resp. the surface, on, wherever the transition is well shaped):
 ///   - under the zone out to xr[p], row by row downwards: its h-wide columns and the graded
 ///     ones next to them;
 ///   - the zone's depth, column by column outwards: its h-high rows, joined at xr[p] by the
