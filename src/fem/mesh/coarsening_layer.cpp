@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
 #include <utility>
 
 #include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/mesh/mesh_quality.hpp"
 
 namespace corlab::fem::meshing {
@@ -28,12 +30,12 @@ bool well_shaped_transition(const std::array<Point, 4>& fine, Point c0, Point c1
       r[k] = q[k].r;
       z[k] = q[k].z;
     }
-    if ((r[2] - r[0]) * (z[3] - z[1]) - (z[2] - z[0]) * (r[3] - r[1]) < 0.0) {  // clockwise
+    if (!is_counter_clockwise(r, z)) {
       std::swap(r[1], r[3]);
       std::swap(z[1], z[3]);
     }
     const QuadQuality shape = quad_quality(r, z);
-    const double length = 1.0 / std::sqrt(quad4_gradient_norm2(quad4_geometry(r.data(), z.data())));
+    const double length = planar_characteristic_length(quad4_geometry(r.data(), z.data()));
     if (!(shape.min_jacobian > 0.0) || shape.min_angle < kMinTransitionAngle ||
         shape.max_angle > kPi - kMinTransitionAngle ||
         shape.width < kMinTransitionWidth * narrowest ||
@@ -46,7 +48,7 @@ bool well_shaped_transition(const std::array<Point, 4>& fine, Point c0, Point c1
 
 std::vector<std::size_t> all_edges(std::size_t n) {
   std::vector<std::size_t> e(n + 1);
-  for (std::size_t i = 0; i <= n; ++i) e[i] = i;
+  std::iota(e.begin(), e.end(), std::size_t{0});
   return e;
 }
 

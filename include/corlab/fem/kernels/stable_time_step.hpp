@@ -13,6 +13,12 @@
 
 namespace corlab::fem {
 
+/// Planar characteristic length 1 / sqrt(sum_I b_I . b_I) [m] (h / sqrt(2) for a square of side
+/// h), without the hoop term: the element's shape alone, as the mesh generator judges it.
+inline double planar_characteristic_length(const Quad4Geometry& g) {
+  return 1.0 / std::sqrt(quad4_gradient_norm2(g));
+}
+
 /// Characteristic length L_e [m] of the element (hoop term included).
 inline double characteristic_length(const Quad4Geometry& g) {
   double s = quad4_gradient_norm2(g);

@@ -37,16 +37,22 @@ struct Mesh {
   int num_elements() const { return static_cast<int>(quads.size()); }
 };
 
+/// Whether corners (r, z) [m] go round counter-clockwise: twice the signed area, from the
+/// diagonals, is not negative.
+inline bool is_counter_clockwise(const std::array<double, 4>& r, const std::array<double, 4>& z) {
+  return (r[2] - r[0]) * (z[3] - z[1]) - (z[2] - z[0]) * (r[3] - r[1]) >= 0.0;
+}
+
 /// `quad` (node indices of `mesh`) in the counter-clockwise (r, z) order Mesh::quads holds: nodes
-/// 1 and 3 swapped when the signed area (from the diagonals) is negative.
+/// 1 and 3 swapped when the signed area is negative.
 inline std::array<int, 4> counter_clockwise(const Mesh& mesh, std::array<int, 4> quad) {
-  const auto a = static_cast<std::size_t>(quad[0]);
-  const auto b = static_cast<std::size_t>(quad[1]);
-  const auto c = static_cast<std::size_t>(quad[2]);
-  const auto d = static_cast<std::size_t>(quad[3]);
-  const double area2 = (mesh.r[c] - mesh.r[a]) * (mesh.z[d] - mesh.z[b]) -
-                       (mesh.z[c] - mesh.z[a]) * (mesh.r[d] - mesh.r[b]);
-  if (area2 < 0.0) std::swap(quad[1], quad[3]);
+  std::array<double, 4> r{};
+  std::array<double, 4> z{};
+  for (std::size_t k = 0; k < 4; ++k) {
+    r[k] = mesh.r[static_cast<std::size_t>(quad[k])];
+    z[k] = mesh.z[static_cast<std::size_t>(quad[k])];
+  }
+  if (!is_counter_clockwise(r, z)) std::swap(quad[1], quad[3]);
   return quad;
 }
 

@@ -8,7 +8,9 @@
 #include <numbers>
 
 #include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/mesh/mesh_quality.hpp"
+#include "fem/mesh/coarsening_layer.hpp"
 
 namespace corlab::fem::meshing {
 namespace {
@@ -29,18 +31,11 @@ Corners corners(const Mesh& m, std::size_t e) {
   return c;
 }
 
-// Planar Flanagan-Belytschko length 1 / sqrt(sum b.b), the solver's stable-step length without
-// the hoop term (stable_time_step.hpp).
-double planar_length(const Corners& c) {
-  const Quad4Geometry g = quad4_geometry(c.r.data(), c.z.data());
-  return 1.0 / std::sqrt(quad4_gradient_norm2(g));
-}
-
 // Three fine intervals of w = 1 on top (z = 0), one of 3 at the bottom of a layer 2 (then 2.2)
 // deep, at r >= 1 (off the axis): four elements, two new interior nodes, the layer's area
 // exactly, every element counter-clockwise and no shorter (stable step) than a square of side w;
-// at 2 the corners are 45/135 deg, at 2.2 (where the substrate starts to use it) they are within
-// 40-140 deg and every element is >= 0.7 w wide (area / longest edge).
+// at 2 the corners are 45/135 deg, at 2.2 they are within 40-140 deg and every element is
+// >= 0.7 w wide (area / longest edge), so well_shaped_transition accepts it.
 TEST(MeshBuilder, TransitionThreeToOneIsWellShaped) {
   for (const double depth : {2.0, 2.2}) {
     Mesh m;
@@ -56,7 +51,9 @@ TEST(MeshBuilder, TransitionThreeToOneIsWellShaped) {
       const QuadQuality q = quad_quality(c.r, c.z);
       area += q.area;
       EXPECT_GT(q.min_jacobian, 0.0) << e;
-      EXPECT_GE(planar_length(c), 1.0 / std::sqrt(2.0) - 1e-12) << e;
+      EXPECT_GE(planar_characteristic_length(quad4_geometry(c.r.data(), c.z.data())),
+                1.0 / std::sqrt(2.0) - 1e-12)
+          << e;
       const double bound = depth == 2.0 ? 45.0 : 40.0;
       EXPECT_GE(q.min_angle, bound * kDegree - 1e-12) << depth << " " << e;
       EXPECT_LE(q.max_angle, (180.0 - bound) * kDegree + 1e-12) << depth << " " << e;
@@ -66,6 +63,24 @@ TEST(MeshBuilder, TransitionThreeToOneIsWellShaped) {
     }
     EXPECT_NEAR(area, 3.0 * depth, 1e-12);
   }
+}
+
+// The shape test that decides where a coarsening sweep merges: a layer 2.2 w thick passes; 2 w
+// (its trapezoid 0.67 w wide) and 4 w (corners of 27 deg) do not; neither do unequal fine
+// intervals (1, 1, 2) whose narrow quads get too thin.
+TEST(MeshBuilder, WellShapedTransitionOnlyInItsWindow) {
+  const std::array<Point, 4> fine{Point{1.0, 0.0}, Point{2.0, 0.0}, Point{3.0, 0.0},
+                                  Point{4.0, 0.0}};
+  EXPECT_TRUE(well_shaped_transition(fine, {1.0, -2.2}, {4.0, -2.2}));
+  EXPECT_FALSE(well_shaped_transition(fine, {1.0, -2.0}, {4.0, -2.0}));
+  EXPECT_FALSE(well_shaped_transition(fine, {1.0, -4.0}, {4.0, -4.0}));
+  const std::array<Point, 4> uneven{Point{1.0, 0.0}, Point{2.0, 0.0}, Point{3.0, 0.0},
+                                    Point{5.0, 0.0}};
+  EXPECT_FALSE(well_shaped_transition(uneven, {1.0, -4.4}, {5.0, -4.4}));
+  // either orientation of the layer (fine edge below or on the left) is judged alike
+  EXPECT_TRUE(
+      well_shaped_transition({Point{0.0, 1.0}, Point{0.0, 2.0}, Point{0.0, 3.0}, Point{0.0, 4.0}},
+                             {2.2, 1.0}, {2.2, 4.0}));
 }
 
 // The template's fine edge is shared node for node with a block built on it, the interior nodes
