@@ -284,8 +284,6 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
                                                double* __restrict fz_out,
                                                double dt,
                                                double scale,
-                                               const double* __restrict v_r,
-                                               const double* __restrict v_z,
                                                bool stable_step,
                                                ElementSums& sums) {
   BlockLanes lanes;
@@ -327,15 +325,6 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
         fz_out[n] -= scale * f_z[i][l];
       }
     }
-    if (v_r == nullptr) continue;
-    double c = 0.0;
-    for (int l = 0; l < nb; ++l) {
-      for (int i = 0; i < 4; ++i) {
-        const int n = nd[i][l];
-        c += f_r[i][l] * (ur[i][l] - v_r[n]) + f_z[i][l] * (uz[i][l] - v_z[n]);
-      }
-    }
-    sums.kick_correction -= 0.5 * dt * c;
   }
 }
 

@@ -63,10 +63,6 @@ struct ElementSums {
   double dt_min = std::numeric_limits<double>::infinity();
   double omega_min = std::numeric_limits<double>::infinity();  // smallest volume or area
   int bad_element = -1;  // first element of the block holding an inverted element
-  // Subcycling: (1/2) sum of -f_int . (dx - dt v), dx the element's last interval, v its nodes'
-  // velocities before the kick: what the product-form kinetic energy at a major-cycle boundary
-  // lacks of the work of an element that steps longer than its nodes [J].
-  double kick_correction = 0.0;
 };
 
 // Sums of the nodal update.
@@ -97,9 +93,8 @@ void element_loop(const BodyParams& p,
 /// [begin, end) steps over dt = 2^L x the base step from its stored positions (es.r_prev/z_prev,
 /// updated) to r, z (all its nodes are in sync); the rate is (x - x_prev) / dt. fr_out/fz_out
 /// receive -scale f_int, scale = 2^L: the element's impulse in base-step units, applied to its
-/// nodes now (asynchronous variational integrator). v_r/v_z (nodal velocities, or null): add
-/// the energy balance's kick_correction. stable_step: also sums.dt_min (else left infinite: a
-/// pass whose stable step is not used, most of them, skips its square roots).
+/// nodes now (asynchronous variational integrator). stable_step: also sums.dt_min (else left
+/// infinite: a pass whose stable step is not used, most of them, skips its square roots).
 void element_loop_subcycled(const BodyParams& p,
                             ElementState& es,
                             int begin,
@@ -110,8 +105,6 @@ void element_loop_subcycled(const BodyParams& p,
                             double* __restrict fz_out,
                             double dt,
                             double scale,
-                            const double* __restrict v_r,
-                            const double* __restrict v_z,
                             bool stable_step,
                             ElementSums& sums);
 

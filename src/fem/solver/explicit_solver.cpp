@@ -292,7 +292,7 @@ class TimeLoop {
     t_boundary_ = s_.t;
     const double v_mean = 0.5 * (s_.sphere_velocity + v_com_prev_);
     v_com_prev_ = s_.sphere_velocity;
-    const double total = ns.ke + s_.kick_correction + s_.energy.internal + s_.energy.hourglass +
+    const double total = ns.ke - s_.transit.energy + s_.energy.internal + s_.energy.hourglass +
                          s_.energy.viscous + s_.energy.contact;
     const double balance = (total - m_.energy_initial) / m_.energy_initial;
     if (!std::isfinite(balance)) {
@@ -300,7 +300,7 @@ class TimeLoop {
       return RunStatus::kNonFinite;
     }
     balance_max_ = std::max(balance_max_, std::abs(balance));
-    if (row) record_history(s_, ns.ke + s_.kick_correction, v_mean, balance, history_);
+    if (row) record_history(s_, ns.ke - s_.transit.energy, v_mean, balance, history_);
     if (s_.step == 0) return std::nullopt;
     rule_.accumulate(ns.ke_sphere, cycle_dt);
     const double since = s_.cycle_penetrating ? s_.t - s_.t_first_penetrating : cycle_dt;

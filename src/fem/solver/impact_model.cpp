@@ -324,6 +324,21 @@ std::vector<int> element_levels(const ImpactModel& m, int max_level) {
   return level;
 }
 
+/// SubcyclingLevels::interface_nodes from the element and node levels (elements at a node differ
+/// from it by at most one level).
+void set_interface_nodes(const std::vector<std::array<int, 4>>& element_nodes,
+                         SubcyclingLevels& lv) {
+  std::vector<char> slow(lv.node.size(), 0);
+  for (std::size_t e = 0; e < element_nodes.size(); ++e) {
+    for (int n : element_nodes[e])
+      slow[n] = static_cast<char>(slow[n] || lv.element[e] > lv.node[n]);
+  }
+  for (auto& nodes : lv.interface_nodes) nodes.clear();
+  for (std::size_t n = 0; n < slow.size(); ++n) {
+    if (slow[n] != 0) lv.interface_nodes[lv.node[n]].push_back(static_cast<int>(n));
+  }
+}
+
 /// Elements of each body sorted by level (stable), the level ranges, and the nodes by level.
 /// node_level: each node's level (>= the levels of its elements).
 void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<int> node_level) {
@@ -364,6 +379,7 @@ void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<in
     lv.node_end[l] = static_cast<int>(
         std::count_if(lv.node.begin(), lv.node.end(), [&](int x) { return x <= l; }));
   }
+  set_interface_nodes(m.element_nodes, lv);
 }
 
 /// Subcycling levels (solver.subcycling_levels > 0); max_level stays 0 (the run then steps as
@@ -419,6 +435,7 @@ void init_subcycling(const ImpactModel& m, ImpactState& s) {
     }
   }
   s.level_dt_min.fill(std::numeric_limits<double>::infinity());
+  s.transit.reset(m.levels, s.vr.data(), s.vz.data());
 }
 
 ImpactState make_initial_state(const ImpactModel& m) {

@@ -40,6 +40,9 @@ struct SubcyclingLevels {
   /// same from n_sphere_elements.
   std::array<int, kMaxSubcyclingLevels + 1> sphere_end{};
   std::array<int, kMaxSubcyclingLevels + 1> substrate_end{};
+  /// Nodes of level L that carry an element of level L + 1, increasing index: where energy is in
+  /// transit between levels (transit_ledger.hpp).
+  std::array<std::vector<int>, kMaxSubcyclingLevels> interface_nodes;
 };
 
 struct ImpactModel {

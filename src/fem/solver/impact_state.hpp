@@ -9,6 +9,7 @@
 
 #include "fem/solver/element_loop.hpp"
 #include "fem/solver/impact_model.hpp"
+#include "fem/solver/transit_ledger.hpp"
 
 namespace corlab::fem::solver {
 
@@ -49,7 +50,7 @@ struct ImpactState {
   double t_first_penetrating = 0.0;  ///< start of the cycle's first step in contact [s]
   double hysteresis_force = 0.0;     ///< contact force at the last major-cycle boundary [N]
   long long element_steps = 0;       ///< element updates done [-]
-  double kick_correction = 0.0;      ///< ElementSums::kick_correction at the last boundary [J]
+  TransitLedger transit;             ///< energy in transit between levels
 };
 
 /// The state at the start: sphere touching, moving down at v0; everything else at rest.

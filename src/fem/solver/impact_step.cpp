@@ -56,10 +56,10 @@ void add_sums(const ElementSums& a, ElementSums& sums) {
   sums.dt_min = std::min(sums.dt_min, a.dt_min);
   sums.omega_min = std::min(sums.omega_min, a.omega_min);
   if (sums.bad_element < 0) sums.bad_element = a.bad_element;
-  sums.kick_correction += a.kick_correction;
 }
 
-/// Element passes of one subcycled base step: levels 0..top, each over its own 2^L x dt.
+/// Element passes of one subcycled base step: levels 0..top, each over its own 2^L x dt; the
+/// windows of the nodes below each level L >= 1 closed in the energy-in-transit ledger.
 ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
   const SubcyclingLevels& lv = m.levels;
   ElementSums sums;
@@ -68,17 +68,18 @@ ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
     const int ub = l == 0 ? m.n_sphere_elements : lv.substrate_end[l - 1];
     const double h = std::ldexp(s.dt, l);
     const double scale = std::ldexp(1.0, l);
-    // The balance is evaluated at major-cycle boundaries only; level 0 needs no correction.
-    const bool correct = l > 0 && top == lv.max_level;
-    const double* v_r = correct ? s.vr.data() : nullptr;
-    const double* v_z = correct ? s.vz.data() : nullptr;
     // The next base step is set at the major cycle's end only, from that pass's stable steps.
     const bool stable_step = top == lv.max_level;
+    if (l > 0) s.transit.before_slow_pass(lv, l - 1, s.fr.data(), s.fz.data());
     ElementSums ls;
     element_loop_subcycled(m.sphere, s.elements, sb, lv.sphere_end[l], s.r.data(), s.z.data(),
-                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, stable_step, ls);
+                           s.fr.data(), s.fz.data(), h, scale, stable_step, ls);
     element_loop_subcycled(m.substrate, s.elements, ub, lv.substrate_end[l], s.r.data(), s.z.data(),
-                           s.fr.data(), s.fz.data(), h, scale, v_r, v_z, stable_step, ls);
+                           s.fr.data(), s.fz.data(), h, scale, stable_step, ls);
+    if (l > 0) {
+      s.transit.after_slow_pass(lv, l - 1, 0.5 * h, s.fr.data(), s.fz.data(), s.vr.data(),
+                                s.vz.data());
+    }
     if (stable_step) s.level_dt_min[l] = std::ldexp(ls.dt_min, -l);
     s.element_steps += lv.sphere_end[l] - sb + lv.substrate_end[l] - ub;
     add_sums(ls, sums);
@@ -118,6 +119,8 @@ NodeSums move_nodes_subcycled(const ImpactModel& m, ImpactState& s) {
   // Most nodes due (fast runs, major-cycle boundaries): one contiguous pass over all.
   const NodeSums ns =
       2 * lv.node_end[l] >= m.n_nodes ? node_update_due(a, m.n_nodes, l) : node_update_subcycled(a);
+  // The kick just given opens the windows of the levels below l.
+  for (int k = 0; k < l; ++k) s.transit.open_windows(lv, k, s.vr.data(), s.vz.data());
   if (l == lv.max_level) {
     s.sphere_velocity = ns.p_sphere / m.sphere_mass;
     s.sphere_com_z = ns.mz_sphere / m.sphere_mass;
@@ -134,7 +137,6 @@ ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
   ForceReport rep;
   const int top = sync_level(s.step + 1, m.levels.max_level);
   rep.elements = subcycled_elements(m, s, top);
-  const ElementSums& sums = rep.elements;
   record_element_sums(m, s, rep);
 
   double force = 0.0;
@@ -148,7 +150,6 @@ ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
   ++s.step;
   s.dt_prev = s.dt;
   if (top == m.levels.max_level) {
-    s.kick_correction = sums.kick_correction;
     double dt_min = s.level_dt_min[0];
     for (int l = 1; l <= top; ++l) dt_min = std::min(dt_min, s.level_dt_min[l]);
     s.dt = m.safety_factor * dt_min;

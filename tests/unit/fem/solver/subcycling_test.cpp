@@ -103,8 +103,8 @@ TEST(Subcycling, SyncLevel) {
   EXPECT_EQ(solver::sync_level(64, 6), 6);
 }
 
-// A subcycled elastic and plastic run: fewer element updates, the same e (0.2 %), a closed energy
-// balance (the in-run excess is the energy between an element's update and its nodes' kicks).
+// A subcycled elastic and plastic run: fewer element updates, the same e (0.2 %), an energy
+// balance as closed as without subcycling (the energy in transit between levels booked).
 TEST(Subcycling, RunClosesTheEnergyBalanceAndKeepsE) {
   for (const bool plastic : {false, true}) {
     ImpactConfig off = small_config(0);
@@ -117,8 +117,10 @@ TEST(Subcycling, RunClosesTheEnergyBalanceAndKeepsE) {
     ASSERT_TRUE(a.separated);
     ASSERT_TRUE(b.separated) << b.status_detail;
     EXPECT_NEAR(b.e, a.e, 2e-3 * a.e) << "plastic " << plastic;
-    EXPECT_LT(b.energy_balance_error, 1e-3) << "plastic " << plastic;
-    EXPECT_LT(std::abs(b.history.energy_balance_error.back()), 1e-4) << "plastic " << plastic;
+    // As closed as without subcycling (1.3e-6 / 8.6e-6 here): the ledger books the energy in
+    // transit between levels (2e-4 at 0.1 m/s without it).
+    EXPECT_LT(b.energy_balance_error, 2e-5) << "plastic " << plastic;
+    EXPECT_LT(std::abs(b.history.energy_balance_error.back()), 2e-5) << "plastic " << plastic;
     EXPECT_NEAR(b.energy_dissipated_plastic, a.energy_dissipated_plastic, 1e-3 * a.energy_initial);
     EXPECT_NEAR(b.energy_hourglass, a.energy_hourglass, 1e-5 * a.energy_initial);
     EXPECT_NEAR(b.penetration_max, a.penetration_max, 0.01 * a.penetration_max);
