@@ -340,7 +340,7 @@ void set_interface_nodes(const std::vector<std::array<int, 4>>& element_nodes,
 }
 
 /// Elements of each body sorted by level (stable), the level ranges, and the nodes by level.
-/// node_level: each node's level (>= the levels of its elements).
+/// node_level: each node's level (the smallest level of its elements).
 void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<int> node_level) {
   SubcyclingLevels& lv = m.levels;
   std::vector<int> order(m.n_elements);

@@ -40,7 +40,8 @@ struct TransitLedger {
 
   /// Sizes the records (the run's start: no slow force yet, the nodes at rest or at v0 as given).
   void reset(const SubcyclingLevels& lv, const double* vr, const double* vz);
-  /// Before the pass of the elements of level L + 1: the force sums of level L's interface nodes.
+  /// Before the pass of the elements of level L + 1: the force sums fr, fz [N] of level L's
+  /// interface nodes.
   void before_slow_pass(const SubcyclingLevels& lv, int level, const double* fr, const double* fz);
   /// After that pass (its forces scattered as 2^{L+1} g into fr, fz): closes level L's windows at
   /// node step h [s] with the nodes' present velocities (their second drift), adds their transit.

@@ -16,7 +16,9 @@ struct ImpactHistory {
   std::vector<double> contact_force;         ///< F, force of the substrate on the sphere [N]
   std::vector<double> indentation;           ///< delta = sphere c.o.m. displacement - gap [m]
   std::vector<double> sphere_velocity;       ///< sphere c.o.m. velocity, + towards substrate [m/s]
-  std::vector<double> kinetic_energy;        ///< [J] both bodies
+  /// [J] both bodies (product form; with subcycling less the energy in transit between levels,
+  /// so that the energy columns add up to the initial energy)
+  std::vector<double> kinetic_energy;
   std::vector<double> strain_energy;         ///< recoverable elastic strain energy [J]
   std::vector<double> plastic_dissipation;   ///< [J]
   std::vector<double> hourglass_energy;      ///< [J]

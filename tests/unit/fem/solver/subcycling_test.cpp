@@ -18,6 +18,7 @@ namespace corlab::fem {
 namespace {
 
 using solver::ImpactModel;
+using solver::kMaxSubcyclingLevels;
 
 // The small built-in case of python/tests/test_simulate.py (SMALL): graded from 0.05 to 0.5 mm.
 ImpactConfig small_config(int levels) {
@@ -92,6 +93,30 @@ TEST(Subcycling, LevelsRespectTheStableStepAndTheContact) {
   EXPECT_EQ(lv.sphere_end[lv.max_level], m.n_sphere_elements);
   EXPECT_EQ(lv.substrate_end[lv.max_level], m.n_elements);
   EXPECT_EQ(lv.node_end[lv.max_level], m.n_nodes);
+}
+
+// The energy-in-transit ledger's nodes: exactly the nodes of level L carrying an element of level
+// L + 1, each listed once under its own level.
+TEST(Subcycling, InterfaceNodesCarryAnElementOneLevelUp) {
+  const ImpactModel m = small_model(3);
+  const auto& lv = m.levels;
+  std::vector<int> listed(m.n_nodes, -1);
+  std::size_t count = 0;
+  for (int l = 0; l < kMaxSubcyclingLevels; ++l) {
+    for (int n : lv.interface_nodes[l]) {
+      EXPECT_EQ(listed[n], -1) << "node " << n << " listed twice";
+      EXPECT_EQ(lv.node[n], l) << "node " << n;
+      listed[n] = l;
+      ++count;
+    }
+  }
+  EXPECT_GT(count, 0U) << "a graded mesh has interfaces between levels";
+  std::vector<char> slow(m.n_nodes, 0);
+  for (int e = 0; e < m.n_elements; ++e) {
+    for (int n : m.element_nodes[e])
+      slow[n] = static_cast<char>(slow[n] || lv.element[e] > lv.node[n]);
+  }
+  for (int n = 0; n < m.n_nodes; ++n) EXPECT_EQ(listed[n] >= 0, slow[n] != 0) << "node " << n;
 }
 
 TEST(Subcycling, SyncLevel) {

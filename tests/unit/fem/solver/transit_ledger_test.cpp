@@ -1,9 +1,10 @@
 // The subcycling's energy-in-transit ledger (fem/solver/transit_ledger.hpp) on a system whose
-// energy is known exactly: two masses on three linear springs, stepped by the solver's
-// asynchronous scheme (node 0 and the wall spring at the base step, node 1 and its two springs at
-// twice it). With linear springs the trapezoid the elements book is the exact potential energy,
-// so kinetic (product form) + potential energy - the ledger must equal the initial energy to
-// round-off at every major-cycle boundary; without the ledger it is off by O(dt^2).
+// energy is known exactly: three masses on four linear springs, moving in r and z, stepped by the
+// solver's asynchronous scheme with the nodes at levels 0, 1 and 2 (steps dt, 2 dt, 4 dt; each
+// spring at its slower node's level). With linear springs the trapezoid the elements book is the
+// exact potential energy, so kinetic (product form) + potential energy - the ledger must equal
+// the initial energy to round-off at every major-cycle boundary; without the ledger it is off by
+// O(dt^2).
 #include "fem/solver/transit_ledger.hpp"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 #include "fem/solver/impact_model.hpp"
 #include "fem/solver/impact_step.hpp"
@@ -18,63 +20,126 @@
 namespace corlab::fem::solver {
 namespace {
 
-struct Chain {
-  static constexpr double kMass = 1.0;                     // [kg], both nodes
-  static constexpr double kWall0 = 3.0;                    // wall - node 0 spring, level 0 [N/m]
-  static constexpr double kCoupling = 1.0;                 // node 0 - node 1 spring, level 1 [N/m]
-  static constexpr double kWall1 = 0.5;                    // node 1 - wall spring, level 1 [N/m]
-  std::array<double, 2> r{}, z{}, vr{}, vz{}, fr{}, fz{};  // z is the chain's direction
-  std::array<int, 2> level{0, 1};
+// A chain of point masses on linear springs, in r and z alike; a spring has the level of its
+// slower node's step (as an element is at most one level above its nodes).
+struct Spring {
+  int a;      // node
+  int b;      // node, or -1: the wall (at the origin)
+  double k;   // stiffness [N/m]
+  int level;  // subcycling level [-]
+};
 
+struct Chain {
+  std::vector<int> level;  // of each node
+  std::vector<Spring> springs;
+  std::vector<double> r, z, vr, vz, fr, fz;  // [m], [m/s], [N]
+  double mass = 1.0;                         // [kg], every node
+
+  // The spring's force on node a (on b the opposite), one component: x_a, x_b [m].
+  [[nodiscard]] static double pull(const Spring& s, double x_a, double x_b) {
+    return -s.k * (x_a - x_b);
+  }
   [[nodiscard]] double potential() const {
-    return 0.5 * (kWall0 * z[0] * z[0] + kCoupling * (z[1] - z[0]) * (z[1] - z[0]) +
-                  kWall1 * z[1] * z[1]);
+    double u = 0.0;
+    for (const Spring& s : springs) {
+      const double dr = r[s.a] - (s.b < 0 ? 0.0 : r[s.b]);
+      const double dz = z[s.a] - (s.b < 0 ? 0.0 : z[s.b]);
+      u += 0.5 * s.k * (dr * dr + dz * dz);
+    }
+    return u;
+  }
+  // Scatters 2^level x the force of every spring of `level` (its impulse in base-step units).
+  void add_forces(int lv) {
+    const double scale = std::ldexp(1.0, lv);
+    for (const Spring& s : springs) {
+      if (s.level != lv) continue;
+      const double g_r = pull(s, r[s.a], s.b < 0 ? 0.0 : r[s.b]);
+      const double g_z = pull(s, z[s.a], s.b < 0 ? 0.0 : z[s.b]);
+      fr[s.a] += scale * g_r;
+      fz[s.a] += scale * g_z;
+      if (s.b >= 0) {
+        fr[s.b] -= scale * g_r;
+        fz[s.b] -= scale * g_z;
+      }
+    }
   }
 };
 
-// The energy error of the stepped chain, relative to its initial energy, at every major-cycle
-// boundary over `steps` base steps of dt [s]: the largest with the ledger (first) and without.
-std::array<double, 2> largest_errors(double dt, int steps) {
-  SubcyclingLevels lv;
-  lv.max_level = 1;
-  lv.interface_nodes[0] = {0};  // node 0 (level 0) carries the level-1 coupling spring
+// Node levels 0, 1, 2 in a row between two walls, springs at the slower node's level; the nodes
+// start at their rest positions with velocities in r and z.
+Chain three_level_chain() {
   Chain c;
-  c.vz = {1.0, -0.5};  // [m/s], springs unstretched: no force at the start, as in an impact run
-  const double e0 = 0.5 * Chain::kMass * (c.vz[0] * c.vz[0] + c.vz[1] * c.vz[1]);
+  c.level = {0, 1, 2};
+  c.springs = {{0, -1, 3.0, 0}, {0, 1, 1.0, 1}, {1, 2, 0.6, 2}, {2, -1, 0.2, 2}};
+  const std::size_t n = c.level.size();
+  for (auto* v : {&c.r, &c.z, &c.fr, &c.fz}) v->assign(n, 0.0);
+  c.vr = {0.3, -0.2, 0.1};
+  c.vz = {1.0, -0.5, 0.4};
+  return c;
+}
+
+// The subcycling levels of the chain: nodes of level L carrying a spring of level L + 1.
+SubcyclingLevels chain_levels(const Chain& c) {
+  SubcyclingLevels lv;
+  lv.max_level = *std::max_element(c.level.begin(), c.level.end());
+  lv.node = c.level;
+  for (std::size_t n = 0; n < c.level.size(); ++n) {
+    for (const Spring& s : c.springs) {
+      const bool at_n = s.a == static_cast<int>(n) || s.b == static_cast<int>(n);
+      if (at_n && s.level > c.level[n]) {
+        lv.interface_nodes[c.level[n]].push_back(static_cast<int>(n));
+        break;
+      }
+    }
+  }
+  return lv;
+}
+
+// The energy error of the stepped chain relative to its initial energy, at every major-cycle
+// boundary over `steps` base steps of dt [s], in the solver's order (kick and drift of the due
+// nodes, the windows they open, then the passes of the springs due at the next step, level by
+// level): the largest with the ledger (first) and without.
+std::array<double, 2> largest_errors(double dt, int steps) {
+  Chain c = three_level_chain();
+  const SubcyclingLevels lv = chain_levels(c);
+  double e0 = 0.0;
+  for (std::size_t n = 0; n < c.level.size(); ++n) {
+    e0 += 0.5 * c.mass * (c.vr[n] * c.vr[n] + c.vz[n] * c.vz[n]);
+  }
   TransitLedger ledger;
   ledger.reset(lv, c.vr.data(), c.vz.data());
   std::array<double, 2> worst{0.0, 0.0};
   for (long long k = 0; k < steps; ++k) {
     const int due = sync_level(k, lv.max_level);
     double ke = 0.0;
-    for (int n = 0; n < 2; ++n) {
+    const Chain before = c;  // positions at the boundary, before the drift
+    for (std::size_t n = 0; n < c.level.size(); ++n) {
       if (c.level[n] > due) continue;
-      const double v_new = c.vz[n] + dt * c.fz[n] / Chain::kMass;
-      ke += 0.5 * Chain::kMass * c.vz[n] * v_new;
-      c.vz[n] = v_new;
-      c.z[n] += std::ldexp(dt, c.level[n]) * v_new;
+      const double h = std::ldexp(dt, c.level[n]);
+      const double vr_new = c.vr[n] + dt * c.fr[n] / c.mass;
+      const double vz_new = c.vz[n] + dt * c.fz[n] / c.mass;
+      ke += 0.5 * c.mass * (c.vr[n] * vr_new + c.vz[n] * vz_new);
+      c.vr[n] = vr_new;
+      c.vz[n] = vz_new;
+      c.r[n] += h * vr_new;
+      c.z[n] += h * vz_new;
+      c.fr[n] = 0.0;
       c.fz[n] = 0.0;
     }
     if (due == lv.max_level) {
-      // Kinetic energy of the boundary (both nodes due), potential at its positions (before the
-      // drift just done: undo it).
-      const std::array<double, 2> z_now = c.z;
-      for (int n = 0; n < 2; ++n) c.z[n] -= std::ldexp(dt, c.level[n]) * c.vz[n];
-      const double booked = ke + c.potential();
-      c.z = z_now;
+      const double booked = ke + before.potential();
       worst[0] = std::max(worst[0], std::abs(booked - ledger.energy - e0) / e0);
       worst[1] = std::max(worst[1], std::abs(booked - e0) / e0);
     }
     for (int l = 0; l < due; ++l) ledger.open_windows(lv, l, c.vr.data(), c.vz.data());
-    // Elements due at k + 1: the wall spring of node 0 every step, node 1's springs every second
-    // one (impulse 2 dt g: scattered as 2 g).
-    c.fz[0] += -Chain::kWall0 * c.z[0];
-    if (sync_level(k + 1, lv.max_level) == 1) {
-      ledger.before_slow_pass(lv, 0, c.fr.data(), c.fz.data());
-      const double coupling = Chain::kCoupling * (c.z[1] - c.z[0]);
-      c.fz[0] += 2.0 * coupling;
-      c.fz[1] += 2.0 * (-coupling - Chain::kWall1 * c.z[1]);
-      ledger.after_slow_pass(lv, 0, dt, c.fr.data(), c.fz.data(), c.vr.data(), c.vz.data());
+    const int top = sync_level(k + 1, lv.max_level);
+    for (int l = 0; l <= top; ++l) {
+      if (l > 0) ledger.before_slow_pass(lv, l - 1, c.fr.data(), c.fz.data());
+      c.add_forces(l);
+      if (l > 0) {
+        ledger.after_slow_pass(lv, l - 1, std::ldexp(dt, l - 1), c.fr.data(), c.fz.data(),
+                               c.vr.data(), c.vz.data());
+      }
     }
   }
   return worst;
