@@ -75,7 +75,7 @@ void generate_substrate_coarsened_tensor(const MeshOptions& o, MeshBuilder& buil
     mesh.base_nodes.push_back(builder.node(at_depth(xr[i], xd.back())));
 }
 
-/// Plain tensor-product substrate (the default tensor layout; `mesh.transitions` = 0): the
+/// Plain tensor-product substrate (`mesh.transitions` = 0; its cost also decides the layout): the
 /// zone's h-wide columns run down to the base and its h-high rows out to r = W.
 void generate_substrate_plain_tensor(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto xr =

@@ -12,10 +12,10 @@ namespace corlab::fem {
 
 /// Time histories, one entry per output row (structure of arrays).
 struct ImpactHistory {
-  std::vector<double> time;                  ///< t [s], 0 = release at the gap
-  std::vector<double> contact_force;         ///< F, force of the substrate on the sphere [N]
-  std::vector<double> indentation;           ///< delta = sphere c.o.m. displacement - gap [m]
-  std::vector<double> sphere_velocity;       ///< sphere c.o.m. velocity, + towards substrate [m/s]
+  std::vector<double> time;             ///< t [s], 0 = release at the gap
+  std::vector<double> contact_force;    ///< F, force of the substrate on the sphere [N]
+  std::vector<double> indentation;      ///< delta = sphere c.o.m. displacement - gap [m]
+  std::vector<double> sphere_velocity;  ///< sphere c.o.m. velocity, + towards substrate [m/s]
   /// [J] both bodies (product form; with subcycling less the energy in transit between levels,
   /// so that the energy columns add up to the initial energy)
   std::vector<double> kinetic_energy;
