@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fem/mesh/block_geometry.hpp"
+#include "fem/mesh/coarsening_layer.hpp"
 #include "fem/mesh/graded_distribution.hpp"
 
 namespace corlab::fem::meshing {
@@ -27,6 +28,9 @@ constexpr double kMinSpacingFraction = 0.95;
 /// of 0.9 (measured: docs/theory/mesh.md).
 constexpr double kCoreFirstSpacing = 1.25;
 constexpr double kCoreRightSpacing = 1.1;
+/// Smallest width (area / longest edge) of the bottom ring's 3:1 transition elements as a
+/// fraction of h: the substrate's elements' (its transitions' 0.7 of an h-wide fine interval).
+constexpr double kMinTransitionWidthOfH = 0.7;
 /// Bottom-block arc angle limits [rad] and corner angle of the ring blocks at the core corners.
 constexpr double kMinBottomAngle = 10.0 * kPi / 180.0;
 constexpr double kMaxBottomAngle = 60.0 * kPi / 180.0;
@@ -164,11 +168,60 @@ CoreRight fit_core_right(const SphereLayout& s, const MeshOptions& o) {
   return core;
 }
 
-/// The blocks' edges, each shared edge once, named by their end points.
+/// The bottom ring block's edges: arc P -> Q (south), A -> K (north, n_s intervals like the
+/// arc), P -> A (west, the axis) and Q -> K (east).
+struct RingEdges {
+  std::vector<Point> pq;
+  std::vector<Point> ak;
+  std::vector<Point> pa;
+  std::vector<Point> qk;
+};
+
+RingEdges ring_edges(const SphereLayout& s) {
+  const double zc = s.zc;
+  const double radius = s.radius;
+  const auto depth_f = fractions(s.depth_b);
+  const Curve gamma_bottom = core_bottom(s, s.d_ring);
+  RingEdges e;
+  e.pq = arc_points(zc, radius, 0.0, s.alpha, s.arc_b);
+  e.ak = gamma_bottom.sample(fit_fractions(fractions(s.arc_b), gamma_bottom.length(), s.min_size));
+  e.pa = line_points(polar(zc, radius, 0.0), polar(zc, radius - s.d_ring, 0.0), depth_f);
+  e.qk = line_points(polar(zc, radius, s.alpha), polar(zc, radius - s.d_ring, s.alpha), depth_f);
+  return e;
+}
+
+/// Adds the bottom ring block, i along the arc P -> Q and j inwards from it. With o.transitions
+/// its columns merge 3:1 on the way in wherever the transition is well shaped (coarsening_layer,
+/// as in the substrate): the contact's h-wide columns, which would otherwise run on through the
+/// ring and the core to the top of the sphere at nearly the contact's stable step, end where
+/// the rows have grown to about twice their width. Returns the indices of the arc's columns
+/// that reach A -> K (all n_s without transitions).
+std::vector<std::size_t> add_bottom_ring(const MeshOptions& o,
+                                         const SphereLayout& s,
+                                         const RingEdges& ring,
+                                         MeshBuilder& builder) {
+  const std::size_t nt = s.nt;
+  const std::vector<Point> pts = coons(ring.pq, ring.ak, ring.pa, ring.qk);
+  std::vector<std::size_t> cols = all_edges(s.ns);
+  if (!o.transitions) {
+    builder.block(pts, s.ns, nt);
+    return cols;
+  }
+  const auto point = [&](std::size_t i, std::size_t j) { return pts[i * (nt + 1) + j]; };
+  for (std::size_t j = 0; j < nt; ++j) {
+    // rows within the refined depth under the contact (s.uniform_depth) keep their columns, as
+    // the substrate's zone does; the transitions' elements are as wide as the substrate's
+    // (>= kMinTransitionWidthOfH h), although the ring's columns narrow to min_size inwards
+    const bool refined = s.depth_b[j + 1] <= (1.0 + 1e-9) * s.uniform_depth;
+    cols = coarsening_layer(builder, cols, j, refined ? 0.0 : o.h_max, point,
+                            kMinTransitionWidthOfH * s.h);
+  }
+  return cols;
+}
+
+/// The other blocks' edges, each shared edge once, named by their end points.
 struct SphereEdges {
-  std::vector<Point> pq;    // arc P -> Q: bottom block south
-  std::vector<Point> ak;    // A -> K: bottom block north, core south
-  std::vector<Point> pa;    // P -> A: bottom block west
+  std::vector<Point> ak;    // A -> K: core south, at the ring's columns that reach it
   std::vector<Point> qk;    // Q -> K: bottom block east, right block west
   std::vector<Point> qq2;   // arc Q -> Q': right block south
   std::vector<Point> kk2;   // K -> K': right block north, core east
@@ -179,41 +232,41 @@ struct SphereEdges {
   std::vector<Point> aa2;   // A -> A': core west (the axis)
 };
 
-/// Arc-length positions T -> Q' of the top block: n_s uniform intervals [m].
-std::vector<double> top_arc_positions(const SphereLayout& s) {
-  std::vector<double> arc_t(s.ns + 1);
-  for (std::size_t k = 0; k <= s.ns; ++k)
-    arc_t[k] = s.radius * s.gamma * static_cast<double>(k) / static_cast<double>(s.ns);
+/// Arc-length positions T -> Q' of the top block: n uniform intervals (as many as the core's
+/// columns) [m].
+std::vector<double> top_arc_positions(const SphereLayout& s, std::size_t n) {
+  std::vector<double> arc_t(n + 1);
+  for (std::size_t k = 0; k <= n; ++k)
+    arc_t[k] = s.radius * s.gamma * static_cast<double>(k) / static_cast<double>(n);
   return arc_t;
 }
 
-/// The blocks' edges: arcs on the sphere, radial lines, the core's curved edges.
+/// The edges of the right and top blocks and the core: arcs on the sphere, radial lines, the
+/// core's curved edges; `cols`: the ring's columns that reach A -> K.
 SphereEdges sphere_edges(const SphereLayout& s,
                          const CoreRight& core,
+                         const RingEdges& ring,
+                         const std::vector<std::size_t>& cols,
                          const std::vector<double>& arc_t) {
   const double zc = s.zc;
   const double radius = s.radius;
-  const Point pnt_a = polar(zc, radius - s.d_ring, 0.0);
-  const Point pnt_k = polar(zc, radius - s.d_ring, s.alpha);
   const Point pnt_q2 = polar(zc, radius, s.beta);
   const auto depth_f = fractions(s.depth_b);
-  const Curve gamma_bottom = core_bottom(s, s.d_ring);
   const Curve gamma_top = hermite(core.a2, {1.0, 0.0}, core.k2, -1.0 * corner_ahead(s.beta));
   SphereEdges e;
-  e.pq = arc_points(zc, radius, 0.0, s.alpha, s.arc_b);
-  e.ak = gamma_bottom.sample(fit_fractions(fractions(s.arc_b), gamma_bottom.length(), s.min_size));
-  e.pa = line_points(polar(zc, radius, 0.0), pnt_a, depth_f);
-  e.qk = line_points(polar(zc, radius, s.alpha), pnt_k, depth_f);
+  for (const std::size_t i : cols) e.ak.push_back(ring.ak[i]);
+  e.qk = ring.qk;
   e.qq2 = arc_points(zc, radius, s.alpha, s.beta, core.arc_r);
   e.kk2 = core.right.sample(
       fit_fractions(fractions(core.arc_r), core.right.length(), kCoreRightSpacing * s.min_size));
   e.q2k2 = line_points(pnt_q2, core.k2, depth_f);
-  e.tq2.resize(s.ns + 1);
-  for (std::size_t k = 0; k <= s.ns; ++k) e.tq2[k] = polar(zc, radius, kPi - arc_t[k] / radius);
+  const std::size_t n = arc_t.size() - 1;
+  e.tq2.resize(n + 1);
+  for (std::size_t k = 0; k <= n; ++k) e.tq2[k] = polar(zc, radius, kPi - arc_t[k] / radius);
   e.tq2.back() = pnt_q2;
   e.a2k2 = gamma_top.sample(fit_fractions(fractions(arc_t), gamma_top.length(), s.min_size));
   e.ta2 = line_points(polar(zc, radius, kPi), core.a2, depth_f);
-  e.aa2 = line_points(pnt_a, core.a2, fractions(core.axis_x));
+  e.aa2 = line_points(ring.pa.back(), core.a2, fractions(core.axis_x));
   return e;
 }
 
@@ -222,17 +275,18 @@ SphereEdges sphere_edges(const SphereLayout& s,
 void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const SphereLayout s = sphere_layout(o);
   const CoreRight core = fit_core_right(s, o);
-  const std::vector<double> arc_t = top_arc_positions(s);
-  const SphereEdges e = sphere_edges(s, core, arc_t);
-  const std::size_t ns = s.ns;
+  const RingEdges ring = ring_edges(s);
   const std::size_t nt = s.nt;
   const std::size_t nr = core.nr;
 
   builder.start_body(Body::kSphere);
-  const auto ids_b = builder.block(coons(e.pq, e.ak, e.pa, e.qk), ns, nt);
+  const std::vector<std::size_t> cols = add_bottom_ring(o, s, ring, builder);
+  const std::size_t nc = cols.size() - 1;  // the core's and the top block's columns
+  const std::vector<double> arc_t = top_arc_positions(s, nc);
+  const SphereEdges e = sphere_edges(s, core, ring, cols, arc_t);
   const auto ids_r = builder.block(coons(e.qq2, e.kk2, e.qk, e.q2k2), nr, nt);
-  const auto ids_t = builder.block(coons(e.tq2, e.a2k2, e.ta2, e.q2k2), ns, nt);
-  builder.block(coons(e.ak, e.a2k2, e.aa2, e.kk2), ns, nr);
+  const auto ids_t = builder.block(coons(e.tq2, e.a2k2, e.ta2, e.q2k2), nc, nt);
+  builder.block(coons(e.ak, e.a2k2, e.aa2, e.kk2), nc, nr);
 
   // surface nodes from the lowest point (bottom, right, then top block arcs), up to the first
   // node past the equator
@@ -242,11 +296,11 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const auto& arc_r = core.arc_r;
   std::vector<int>& surf = mesh.sphere_surface_nodes;
   std::vector<std::pair<int, double>> arc_nodes;  // (node, polar angle)
-  for (std::size_t i = 0; i <= ns; ++i)
-    arc_nodes.emplace_back(ids_b[i * (nt + 1)], alpha * arc_b[i] / arc_b.back());
+  for (std::size_t i = 0; i <= s.ns; ++i)
+    arc_nodes.emplace_back(builder.node(ring.pq[i]), alpha * arc_b[i] / arc_b.back());
   for (std::size_t i = 1; i <= nr; ++i)
     arc_nodes.emplace_back(ids_r[i * (nt + 1)], alpha + (beta - alpha) * arc_r[i] / arc_r.back());
-  for (std::size_t i = ns; i-- > 0;)
+  for (std::size_t i = nc; i-- > 0;)
     arc_nodes.emplace_back(ids_t[i * (nt + 1)], kPi - arc_t[i] / s.radius);
   for (const auto& [node, phi] : arc_nodes) {
     surf.push_back(node);

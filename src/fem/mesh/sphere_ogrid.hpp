@@ -1,7 +1,8 @@
 #pragma once
 /// @file sphere_ogrid.hpp
 /// The sphere's multi-block O-grid (docs/theory/mesh.md, "Sphere: multi-block O-grid"): bottom,
-/// right and top ring blocks around a curved core. Private to the mesh generator
+/// right and top ring blocks around a curved core; with MeshOptions::transitions the bottom
+/// ring's columns merge 3:1 below the refined depth. Private to the mesh generator
 /// (src/fem/mesh).
 
 #include "corlab/fem/mesh/mesh.hpp"

@@ -297,26 +297,46 @@ std::vector<int> node_levels(const ImpactModel& m, const std::vector<int>& eleme
   return level;
 }
 
+/// Whether each node may carry an element one level above its own (kInterfaceStepRatio): every
+/// element of the node's level at it has its own step (`own`) >= kInterfaceStepRatio x 2^L x
+/// dt_critical.
+std::vector<char> may_carry_slower(const ImpactModel& m,
+                                   const std::vector<int>& level,
+                                   const std::vector<int>& node_level,
+                                   const std::vector<double>& own) {
+  std::vector<char> ok(m.n_nodes, 1);
+  for (int e = 0; e < m.n_elements; ++e) {
+    const double ratio = own[e] / std::ldexp(m.dt_critical, level[e]);
+    for (int n : m.element_nodes[e]) {
+      if (level[e] == node_level[n] && ratio < kInterfaceStepRatio) ok[n] = 0;
+    }
+  }
+  return ok;
+}
+
 /// Level of each element: subcycling_level of its own stable step against dt_critical; 0 for an
 /// element touching a contact node; then lowered until it is at most one above the smallest level
-/// at its nodes (neighbours differ by at most one level).
+/// at its nodes (neighbours differ by at most one level), and to a node's level where that node
+/// may not carry a slower element (may_carry_slower).
 std::vector<int> element_levels(const ImpactModel& m, int max_level) {
   std::vector<char> contact(m.n_nodes, 0);
   for (int i : m.slaves) contact[i] = 1;
   for (int i : m.masters) contact[i] = 1;
   std::vector<int> level(m.n_elements, 0);
+  std::vector<double> own(m.n_elements);
   for (int e = 0; e < m.n_elements; ++e) {
-    const double dt_e = initial_element_step(m, e);
-    int l = subcycling_level(m.dt_critical, dt_e, max_level);
+    own[e] = initial_element_step(m, e);
+    int l = subcycling_level(m.dt_critical, own[e], max_level);
     for (int n : m.element_nodes[e]) l = contact[n] != 0 ? 0 : l;
     level[e] = l;
   }
   for (bool changed = true; changed;) {
     changed = false;
     const std::vector<int> nl = node_levels(m, level);
+    const std::vector<char> ok = may_carry_slower(m, level, nl, own);
     for (int e = 0; e < m.n_elements; ++e) {
       int lim = level[e];
-      for (int n : m.element_nodes[e]) lim = std::min(lim, nl[n] + 1);
+      for (int n : m.element_nodes[e]) lim = std::min(lim, nl[n] + (ok[n] != 0 ? 1 : 0));
       changed = changed || lim != level[e];
       level[e] = lim;
     }
