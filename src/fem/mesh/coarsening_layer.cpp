@@ -20,10 +20,7 @@ constexpr double kMinTransitionLength = 1.0 / std::numbers::sqrt2;  // a square'
 
 }  // namespace
 
-bool well_shaped_transition(const std::array<Point, 4>& fine,
-                            Point c0,
-                            Point c1,
-                            double min_width) {
+bool well_shaped_transition(const std::array<Point, 4>& fine, Point c0, Point c1, double h) {
   double narrowest = norm(fine[1] - fine[0]);
   for (std::size_t k = 1; k < 3; ++k) narrowest = std::min(narrowest, norm(fine[k + 1] - fine[k]));
   for (const auto& q : transition_quads(fine, c0, c1)) {
@@ -41,7 +38,7 @@ bool well_shaped_transition(const std::array<Point, 4>& fine,
     const double length = planar_characteristic_length(quad4_geometry(r.data(), z.data()));
     if (!(shape.min_jacobian > 0.0) || shape.min_angle < kMinTransitionAngle ||
         shape.max_angle > kPi - kMinTransitionAngle ||
-        shape.width < std::max(kMinTransitionWidth * narrowest, min_width) ||
+        shape.width < kMinTransitionWidth * std::max(narrowest, h) ||
         length < kMinTransitionLength * narrowest) {
       return false;
     }

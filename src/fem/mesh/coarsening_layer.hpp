@@ -16,27 +16,25 @@ namespace corlab::fem::meshing {
 
 /// Whether the 3:1 transition from `fine` (f0 -> f3) to c0 -> c1 is as well shaped as the rest of
 /// the mesh: all four elements convex with corners in [40, 140] deg, width (area / longest edge)
-/// >= 0.7 of the narrowest fine interval and >= min_width [m], and planar Flanagan-Belytschko
-/// length (the stable step's) >= 1/sqrt(2) of the narrowest fine interval (a square's), so that it
-/// never sets the explicit step. For equal fine intervals w: a layer about 2.1 to 2.9 w thick
-/// (45/135 deg at 2 w).
-bool well_shaped_transition(const std::array<Point, 4>& fine,
-                            Point c0,
-                            Point c1,
-                            double min_width = 0.0);
+/// >= 0.7 of the narrowest fine interval or of h [m], whichever is larger (h: the mesh's contact
+/// element size, for grids whose fine intervals may be narrower than it), and planar
+/// Flanagan-Belytschko length (the stable step's) >= 1/sqrt(2) of the narrowest fine interval (a
+/// square's), so that it never sets the explicit step. For equal fine intervals w: a layer about
+/// 2.1 to 2.9 w thick (45/135 deg at 2 w).
+bool well_shaped_transition(const std::array<Point, 4>& fine, Point c0, Point c1, double h = 0.0);
 
 /// One layer of elements between grid lines j and j + 1 across the grid's intervals between the
 /// indices `edges` (point(i, j) is grid point i of line j): from the first edge on, three
-/// intervals become one through a 3:1 transition where it is well shaped (its elements at least
-/// min_width [m] wide) and its coarse interval is at most `max_size` [m]; the others cross as
-/// plain quads. Returns the edges on line j + 1.
+/// intervals become one through a 3:1 transition where it is well shaped (well_shaped_transition
+/// with h [m]) and its coarse interval is at most `max_size` [m]; the others cross as plain quads.
+/// Returns the edges on line j + 1.
 template <typename Grid>
 std::vector<std::size_t> coarsening_layer(MeshBuilder& builder,
                                           const std::vector<std::size_t>& edges,
                                           std::size_t j,
                                           double max_size,
                                           Grid point,
-                                          double min_width = 0.0) {
+                                          double h = 0.0) {
   std::vector<std::size_t> next{edges.front()};
   std::size_t k = 0;
   while (k + 1 < edges.size()) {
@@ -46,7 +44,7 @@ std::vector<std::size_t> coarsening_layer(MeshBuilder& builder,
                                       point(edges[k + 2], j), point(edges[k + 3], j)};
       const Point c0 = point(edges[k], j + 1);
       const Point c1 = point(edges[k + 3], j + 1);
-      merge = norm(c1 - c0) <= max_size && well_shaped_transition(fine, c0, c1, min_width);
+      merge = norm(c1 - c0) <= max_size && well_shaped_transition(fine, c0, c1, h);
       if (merge) builder.transition(fine, c0, c1);
     }
     if (!merge) {

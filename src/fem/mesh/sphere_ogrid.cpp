@@ -28,9 +28,6 @@ constexpr double kMinSpacingFraction = 0.95;
 /// of 0.9 (measured: docs/theory/mesh.md).
 constexpr double kCoreFirstSpacing = 1.25;
 constexpr double kCoreRightSpacing = 1.1;
-/// Smallest width (area / longest edge) of the bottom ring's 3:1 transition elements as a
-/// fraction of h: the substrate's elements' (its transitions' 0.7 of an h-wide fine interval).
-constexpr double kMinTransitionWidthOfH = 0.7;
 /// Bottom-block arc angle limits [rad] and corner angle of the ring blocks at the core corners.
 constexpr double kMinBottomAngle = 10.0 * kPi / 180.0;
 constexpr double kMaxBottomAngle = 60.0 * kPi / 180.0;
@@ -210,11 +207,10 @@ std::vector<std::size_t> add_bottom_ring(const MeshOptions& o,
   const auto point = [&](std::size_t i, std::size_t j) { return pts[i * (nt + 1) + j]; };
   for (std::size_t j = 0; j < nt; ++j) {
     // rows within the refined depth under the contact (s.uniform_depth) keep their columns, as
-    // the substrate's zone does; the transitions' elements are as wide as the substrate's
-    // (>= kMinTransitionWidthOfH h), although the ring's columns narrow to min_size inwards
+    // the substrate's zone does; h: the transitions' elements are as wide as the substrate's,
+    // although the ring's columns narrow to min_size inwards
     const bool refined = s.depth_b[j + 1] <= (1.0 + 1e-9) * s.uniform_depth;
-    cols = coarsening_layer(builder, cols, j, refined ? 0.0 : o.h_max, point,
-                            kMinTransitionWidthOfH * s.h);
+    cols = coarsening_layer(builder, cols, j, refined ? 0.0 : o.h_max, point, s.h);
   }
   return cols;
 }

@@ -77,13 +77,13 @@ TEST(MeshBuilder, WellShapedTransitionOnlyInItsWindow) {
   const std::array<Point, 4> uneven{Point{1.0, 0.0}, Point{2.0, 0.0}, Point{3.0, 0.0},
                                     Point{5.0, 0.0}};
   EXPECT_FALSE(well_shaped_transition(uneven, {1.0, -4.4}, {5.0, -4.4}));
-  // min_width: the same layer scaled to 0.95 (fine intervals narrower than h = 1, as in the
-  // sphere's ring) passes on its own terms but not when its elements must be 0.7 h wide
+  // h: the same layer scaled to 0.95 (fine intervals narrower than h = 1, as in the sphere's
+  // ring) passes on its own terms but not when its elements must be 0.7 h wide
   const std::array<Point, 4> narrow{Point{0.95, 0.0}, Point{1.9, 0.0}, Point{2.85, 0.0},
                                     Point{3.8, 0.0}};
   EXPECT_TRUE(well_shaped_transition(narrow, {0.95, -2.09}, {3.8, -2.09}));
-  EXPECT_FALSE(well_shaped_transition(narrow, {0.95, -2.09}, {3.8, -2.09}, 0.7));
-  EXPECT_TRUE(well_shaped_transition(fine, {1.0, -2.2}, {4.0, -2.2}, 0.7));
+  EXPECT_FALSE(well_shaped_transition(narrow, {0.95, -2.09}, {3.8, -2.09}, 1.0));
+  EXPECT_TRUE(well_shaped_transition(fine, {1.0, -2.2}, {4.0, -2.2}, 1.0));
   // either orientation of the layer (fine edge below or on the left) is judged alike
   EXPECT_TRUE(
       well_shaped_transition({Point{0.0, 1.0}, Point{0.0, 2.0}, Point{0.0, 3.0}, Point{0.0, 4.0}},
