@@ -1,6 +1,14 @@
-"""Compare two sweep results.csv files: same header, same rows after sorting by case_id, with the
-timing columns (wall_s, element_steps_per_s) left out. Exit 0 if equal, 1 with a diff line if not.
-Usage: python3 sweep_compare.py A.csv B.csv [expected_rows]"""
+"""Compare two sweep results.csv files.
+
+Exact (the regression tests): same header, same rows after sorting by case_id, with the timing
+columns (wall_s, element_steps_per_s) left out. Exit 0 if equal, 1 with a diff line if not.
+    python3 sweep_compare.py A.csv B.csv [expected_rows]
+
+Relative (two solver versions, e.g. before and after a change, as the README's and the closing
+notes' "every e within x %" claims are made): rows joined on case_id; prints the largest relative
+change of e and of e_error's reference e_coarse, the runs that moved most, the largest energy
+balance of each, and the summed wall_s. Exit 1 only if the files do not join (different cases).
+    python3 sweep_compare.py --relative A.csv B.csv [--top N]"""
 import csv
 import sys
 
@@ -16,17 +24,17 @@ def load(path):
     return header, rows
 
 
-def main():
-    ha, a = load(sys.argv[1])
-    hb, b = load(sys.argv[2])
+def exact(argv):
+    ha, a = load(argv[0])
+    hb, b = load(argv[1])
     if ha != hb:
         print(f"headers differ:\n  {ha}\n  {hb}")
         return 1
-    if len(sys.argv) > 3 and len(a) != int(sys.argv[3]):
-        print(f"{sys.argv[1]}: {len(a)} rows, expected {sys.argv[3]}")
+    if len(argv) > 2 and len(a) != int(argv[2]):
+        print(f"{argv[0]}: {len(a)} rows, expected {argv[2]}")
         return 1
     if len({r[0] for r in a}) != len(a):
-        print(f"{sys.argv[1]}: duplicate case ids")
+        print(f"{argv[0]}: duplicate case ids")
         return 1
     for ra, rb in zip(a, b):
         if ra != rb:
@@ -39,5 +47,52 @@ def main():
     return 0
 
 
+def by_case(path):
+    with open(path, newline="") as f:
+        return {r["case_id"]: r for r in csv.DictReader(f)}
+
+
+def number(row, key):
+    try:
+        return float(row.get(key, ""))
+    except ValueError:
+        return float("nan")
+
+
+def relative_change(ra, rb, key):
+    a, b = number(ra, key), number(rb, key)
+    return (b - a) / a if a == a and b == b and a != 0.0 else float("nan")
+
+
+def relative(argv):
+    top = 5
+    if "--top" in argv:
+        k = argv.index("--top")
+        top = int(argv[k + 1])
+        argv = argv[:k] + argv[k + 2:]
+    a, b = by_case(argv[0]), by_case(argv[1])
+    if set(a) != set(b):
+        print(f"the files do not join: {len(set(a) ^ set(b))} case ids in only one of them")
+        return 1
+    changes = sorted(((relative_change(a[c], b[c], "e"), c) for c in a),
+                     key=lambda t: -abs(t[0]) if t[0] == t[0] else 0.0)
+    finite = [d for d, _ in changes if d == d]
+    coarse = [abs(d) for d in (relative_change(a[c], b[c], "e_coarse") for c in a) if d == d]
+    print(f"{len(a)} runs joined on case_id; e: largest |change| {max(map(abs, finite)):.3e}"
+          f" (relative), mean change {sum(finite) / len(finite):+.3e}; e_coarse: largest"
+          f" |change| {max(coarse, default=float('nan')):.3e}")
+    for d, c in changes[:top]:
+        print(f"  {c}: e {a[c]['e']} -> {b[c]['e']} ({d:+.3e})")
+    for name, rows in (("A", a), ("B", b)):
+        balance = max(number(r, "energy_balance_error") for r in rows.values())
+        wall = sum(number(r, "wall_s") for r in rows.values())
+        above_one = sum(1 for r in rows.values() if number(r, "e") > 1.0)
+        print(f"{name}: largest energy balance {balance:.2e}, runs with e > 1: {above_one},"
+              f" summed wall_s {wall:.1f}")
+    return 0
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    if len(sys.argv) > 1 and sys.argv[1] == "--relative":
+        sys.exit(relative(sys.argv[2:]))
+    sys.exit(exact(sys.argv[1:]))

@@ -17,13 +17,24 @@ namespace {
 constexpr double kMinTransitionAngle = 40.0 * kPi / 180.0;
 constexpr double kMinTransitionWidth = 0.7;
 constexpr double kMinTransitionLength = 1.0 / std::numbers::sqrt2;  // a square's
+/// Thickness of the coarse side's quads of a thick layer's transition, in mean fine intervals:
+/// the middle of the plain template's window (width >= 0.7 and corners >= 40 deg bound the
+/// coarse side's half of the layer to 1.05 ... 1.19 fine intervals).
+constexpr double kCoarseSideThickness = 1.12;
 
 }  // namespace
 
-bool well_shaped_transition(const std::array<Point, 4>& fine, Point c0, Point c1, double h) {
+double thick_layer_depth(const std::array<Point, 4>& fine, Point c0, Point c1) {
+  const double interval = norm(fine[3] - fine[0]) / 3.0;
+  const double thickness = 0.5 * (norm(c0 - fine[0]) + norm(c1 - fine[3]));
+  return std::max(0.5, 1.0 - kCoarseSideThickness * interval / thickness);
+}
+
+bool well_shaped_transition(
+    const std::array<Point, 4>& fine, Point c0, Point c1, double h, double depth) {
   double narrowest = norm(fine[1] - fine[0]);
   for (std::size_t k = 1; k < 3; ++k) narrowest = std::min(narrowest, norm(fine[k + 1] - fine[k]));
-  for (const auto& q : transition_quads(fine, c0, c1)) {
+  for (const auto& q : transition_quads(fine, c0, c1, depth)) {
     std::array<double, 4> r{};
     std::array<double, 4> z{};
     for (std::size_t k = 0; k < 4; ++k) {

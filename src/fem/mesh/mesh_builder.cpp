@@ -40,17 +40,18 @@ void MeshBuilder::quad(const std::array<Point, 4>& p) {
   mesh_.element_body.push_back(body_);
 }
 
-void MeshBuilder::transition(const std::array<Point, 4>& fine, Point c0, Point c1) {
-  for (const auto& q : transition_quads(fine, c0, c1)) quad(q);
+void MeshBuilder::transition(const std::array<Point, 4>& fine, Point c0, Point c1, double depth) {
+  for (const auto& q : transition_quads(fine, c0, c1, depth)) quad(q);
 }
 
 std::array<std::array<Point, 4>, 4> transition_quads(const std::array<Point, 4>& fine,
                                                      Point c0,
-                                                     Point c1) {
+                                                     Point c1,
+                                                     double depth) {
   const double length = norm(fine[3] - fine[0]);
   const auto interior = [&](Point f) {
     const Point c = c0 + (norm(f - fine[0]) / length) * (c1 - c0);
-    return 0.5 * (f + c);
+    return f + depth * (c - f);
   };
   const Point i1 = interior(fine[1]);
   const Point i2 = interior(fine[2]);

@@ -16,11 +16,13 @@ namespace corlab::fem::meshing {
 
 /// The four quads of the 3:1 transition between a fine edge f0 -> f3 (three intervals) and the
 /// coarse edge c0 -> c1 opposite it (one interval; c0 faces f0), around two interior nodes, each
-/// halfway between f1 (f2) and the point of the coarse edge at f1's (f2's) fraction of the edge.
-/// With equal fine intervals and a layer twice as thick, its corners are 45/135 deg.
+/// the fraction `depth` of the way from f1 (f2) to the point of the coarse edge at f1's (f2's)
+/// fraction of the edge (halfway by default). With equal fine intervals, a layer twice as thick
+/// and depth 1/2, its corners are 45/135 deg.
 std::array<std::array<Point, 4>, 4> transition_quads(const std::array<Point, 4>& fine,
                                                      Point c0,
-                                                     Point c1);
+                                                     Point c1,
+                                                     double depth = 0.5);
 
 /// Adds nodes and elements to a mesh, merging nodes at bitwise-equal coordinates within a body.
 class MeshBuilder {
@@ -35,7 +37,7 @@ class MeshBuilder {
   /// Adds one quad with corners p (either orientation).
   void quad(const std::array<Point, 4>& p);
   /// Adds the 3:1 transition of transition_quads.
-  void transition(const std::array<Point, 4>& fine, Point c0, Point c1);
+  void transition(const std::array<Point, 4>& fine, Point c0, Point c1, double depth = 0.5);
 
  private:
   Mesh& mesh_;

@@ -187,32 +187,49 @@ RingEdges ring_edges(const SphereLayout& s) {
   return e;
 }
 
+/// What the bottom ring's transitions leave: the arc's columns that reach A -> K and the depth
+/// rows that reach Q -> K (indices into the ring's grid).
+struct RingSweep {
+  std::vector<std::size_t> cols;
+  std::vector<std::size_t> rows;
+};
+
 /// Adds the bottom ring block, i along the arc P -> Q and j inwards from it. With o.transitions
-/// its columns merge 3:1 on the way in wherever the transition is well shaped (coarsening_layer,
-/// as in the substrate): the contact's h-wide columns, which would otherwise run on through the
-/// ring and the core to the top of the sphere at nearly the contact's stable step, end where
-/// the rows have grown to about twice their width. Returns the indices of the arc's columns
-/// that reach A -> K (all n_s without transitions).
-std::vector<std::size_t> add_bottom_ring(const MeshOptions& o,
-                                         const SphereLayout& s,
-                                         const RingEdges& ring,
-                                         MeshBuilder& builder) {
+/// it is coarsened 3:1 (coarsening_layer, as the substrate is) wherever the transition is well
+/// shaped, in two parts split at the refined zone's edge (arc length zone_radius from P):
+///   - under the contact, row by row inwards: below the refined depth three columns become one;
+///     the contact's h-wide columns would otherwise run on through the ring and the core to the
+///     top of the sphere at nearly the contact's stable step;
+///   - beyond the zone, layer by layer along the arc: three depth rows become one; the rows, h
+///     thick at the surface, would otherwise run on round the sphere as thin, long and heavy
+///     skin elements with nearly the contact's stable step (which also stopped mass scaling).
+RingSweep add_bottom_ring(const MeshOptions& o,
+                          const SphereLayout& s,
+                          const RingEdges& ring,
+                          MeshBuilder& builder) {
   const std::size_t nt = s.nt;
   const std::vector<Point> pts = coons(ring.pq, ring.ak, ring.pa, ring.qk);
-  std::vector<std::size_t> cols = all_edges(s.ns);
   if (!o.transitions) {
     builder.block(pts, s.ns, nt);
-    return cols;
+    return {all_edges(s.ns), all_edges(nt)};
   }
   const auto point = [&](std::size_t i, std::size_t j) { return pts[i * (nt + 1) + j]; };
+  std::size_t nz = 0;  // the arc's intervals within the refined zone
+  while (nz < s.ns && s.arc_b[nz + 1] <= (1.0 + 1e-9) * o.zone_radius) ++nz;
+  RingSweep out{all_edges(nz), all_edges(nt)};
   for (std::size_t j = 0; j < nt; ++j) {
-    // rows within the refined depth under the contact (s.uniform_depth) keep their columns, as
-    // the substrate's zone does; h: the transitions' elements are as wide as the substrate's,
-    // although the ring's columns narrow to min_size inwards
+    // rows within the refined depth keep their columns, as the substrate's zone does; h: the
+    // transitions' elements are as wide as the substrate's, although the ring's columns narrow
+    // to min_size inwards
     const bool refined = s.depth_b[j + 1] <= (1.0 + 1e-9) * s.uniform_depth;
-    cols = coarsening_layer(builder, cols, j, refined ? 0.0 : o.h_max, point, s.h);
+    out.cols = coarsening_layer(builder, out.cols, j, refined ? 0.0 : o.h_max, point, s.h);
   }
-  return cols;
+  const auto along = [&](std::size_t j, std::size_t i) { return point(i, j); };
+  for (std::size_t i = nz; i < s.ns; ++i) {
+    out.rows = coarsening_layer(builder, out.rows, i, o.h_max, along, s.h, true);
+    out.cols.push_back(i + 1);
+  }
+  return out;
 }
 
 /// The other blocks' edges, each shared edge once, named by their end points.
@@ -266,22 +283,58 @@ SphereEdges sphere_edges(const SphereLayout& s,
   return e;
 }
 
+/// Adds the right block, i along the arc Q -> Q' and j inwards from it, from the ring's depth
+/// rows that reach Q -> K (`rows`). With o.transitions its layers go on merging three rows into
+/// one along the arc, as the ring's beyond the zone do (add_bottom_ring), except where the arc is
+/// still within the refined zone (fast impacts, whose zone reaches past phi = 60 deg). Returns
+/// the rows that reach Q' -> K'.
+std::vector<std::size_t> add_right_block(const MeshOptions& o,
+                                         const SphereLayout& s,
+                                         const CoreRight& core,
+                                         const SphereEdges& e,
+                                         std::vector<std::size_t> rows,
+                                         MeshBuilder& builder) {
+  const std::size_t nt = s.nt;
+  const std::vector<Point> pts = coons(e.qq2, e.kk2, e.qk, e.q2k2);
+  if (!o.transitions) {
+    builder.block(pts, core.nr, nt);
+    return rows;
+  }
+  // the grid with the roles of i and j swapped: layers along the arc, edges through the depth
+  const auto along = [&](std::size_t j, std::size_t i) { return pts[i * (nt + 1) + j]; };
+  const double zone_arc = o.zone_radius - s.radius * s.alpha;  // the zone's part of Q -> Q'
+  for (std::size_t i = 0; i < core.nr; ++i) {
+    const bool refined = core.arc_r[i + 1] <= (1.0 + 1e-9) * zone_arc;
+    rows = coarsening_layer(builder, rows, i, refined ? 0.0 : o.h_max, along, s.h, true);
+  }
+  return rows;
+}
+
+/// The points of `pts` at the indices `keep`.
+std::vector<Point> points_at(const std::vector<Point>& pts, const std::vector<std::size_t>& keep) {
+  std::vector<Point> out;
+  out.reserve(keep.size());
+  for (const std::size_t k : keep) out.push_back(pts[k]);
+  return out;
+}
+
 }  // namespace
 
 void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const SphereLayout s = sphere_layout(o);
   const CoreRight core = fit_core_right(s, o);
   const RingEdges ring = ring_edges(s);
-  const std::size_t nt = s.nt;
   const std::size_t nr = core.nr;
 
   builder.start_body(Body::kSphere);
-  const std::vector<std::size_t> cols = add_bottom_ring(o, s, ring, builder);
-  const std::size_t nc = cols.size() - 1;  // the core's and the top block's columns
+  const RingSweep sweep = add_bottom_ring(o, s, ring, builder);
+  const std::size_t nc = sweep.cols.size() - 1;  // the core's and the top block's columns
   const std::vector<double> arc_t = top_arc_positions(s, nc);
-  const SphereEdges e = sphere_edges(s, core, ring, cols, arc_t);
-  const auto ids_r = builder.block(coons(e.qq2, e.kk2, e.qk, e.q2k2), nr, nt);
-  const auto ids_t = builder.block(coons(e.tq2, e.a2k2, e.ta2, e.q2k2), nc, nt);
+  const SphereEdges e = sphere_edges(s, core, ring, sweep.cols, arc_t);
+  const std::vector<std::size_t> rows = add_right_block(o, s, core, e, sweep.rows, builder);
+  const std::size_t nq = rows.size() - 1;  // the top block's rows
+  const auto ids_t =
+      builder.block(coons(e.tq2, e.a2k2, points_at(e.ta2, rows), points_at(e.q2k2, rows)), nc, nq);
   builder.block(coons(e.ak, e.a2k2, e.aa2, e.kk2), nc, nr);
 
   // surface nodes from the lowest point (bottom, right, then top block arcs), up to the first
@@ -295,9 +348,10 @@ void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   for (std::size_t i = 0; i <= s.ns; ++i)
     arc_nodes.emplace_back(builder.node(ring.pq[i]), alpha * arc_b[i] / arc_b.back());
   for (std::size_t i = 1; i <= nr; ++i)
-    arc_nodes.emplace_back(ids_r[i * (nt + 1)], alpha + (beta - alpha) * arc_r[i] / arc_r.back());
+    arc_nodes.emplace_back(builder.node(e.qq2[i]),
+                           alpha + (beta - alpha) * arc_r[i] / arc_r.back());
   for (std::size_t i = nc; i-- > 0;)
-    arc_nodes.emplace_back(ids_t[i * (nt + 1)], kPi - arc_t[i] / s.radius);
+    arc_nodes.emplace_back(ids_t[i * (nq + 1)], kPi - arc_t[i] / s.radius);
   for (const auto& [node, phi] : arc_nodes) {
     surf.push_back(node);
     if (phi > 0.5 * kPi) break;

@@ -90,6 +90,41 @@ TEST(MeshBuilder, WellShapedTransitionOnlyInItsWindow) {
                              {2.2, 1.0}, {2.2, 4.0}));
 }
 
+// Thick layers (sweeps along the sphere's skin, whose layers outgrow the rows they would merge):
+// the plain template fails from about 2.4 w on (corners below 40 deg), but with its interior
+// nodes placed by thick_layer_depth it stays well shaped at any thickness: the coarse side's
+// quads keep a 2.24 w layer's shape, the fine side's quads stretch as the plain elements beside
+// them do. Up to 2.24 w it is the plain template.
+TEST(MeshBuilder, ThickLayerTransitionIsWellShapedAtAnyThickness) {
+  const std::array<Point, 4> fine{Point{1.0, 0.0}, Point{2.0, 0.0}, Point{3.0, 0.0},
+                                  Point{4.0, 0.0}};
+  for (const double t : {2.0, 2.2}) {
+    EXPECT_EQ(thick_layer_depth(fine, {1.0, -t}, {4.0, -t}), 0.5) << t;
+  }
+  for (const double t : {2.5, 3.0, 4.0, 8.0, 20.0}) {
+    const Point c0{1.0, -t};
+    const Point c1{4.0, -t};
+    EXPECT_FALSE(well_shaped_transition(fine, c0, c1)) << t;
+    const double depth = thick_layer_depth(fine, c0, c1);
+    EXPECT_NEAR((1.0 - depth) * t, 1.12, 1e-12) << t;
+    EXPECT_TRUE(well_shaped_transition(fine, c0, c1, 0.0, depth)) << t;
+    Mesh m;
+    MeshBuilder b(m);
+    b.start_body(Body::kSubstrate);
+    b.transition(fine, c0, c1, depth);
+    ASSERT_EQ(m.quads.size(), 4u);
+    double area = 0.0;
+    for (std::size_t e = 0; e < m.quads.size(); ++e) {
+      const Corners c = corners(m, e);
+      area += quad_quality(c.r, c.z).area;
+      EXPECT_GE(planar_characteristic_length(quad4_geometry(c.r.data(), c.z.data())),
+                1.0 / std::sqrt(2.0) - 1e-12)
+          << t << " " << e;
+    }
+    EXPECT_NEAR(area, 3.0 * t, 1e-9) << t;
+  }
+}
+
 // The template's fine edge is shared node for node with a block built on it, the interior nodes
 // lie halfway across, and a second transition on the coarse side reuses the coarse nodes.
 TEST(MeshBuilder, TransitionSharesItsEdgeNodes) {

@@ -281,8 +281,9 @@ TEST(ImpactMesh, TransitionsKeepTheContactSurfacesAndCutTheFineColumns) {
   }
 }
 
-// The sphere elements within depth `depth` [m] of the lower hemisphere's surface (the contact's
-// side), each as its sorted corner coordinates (r, z).
+// The sphere elements under the contact: within depth `depth` [m] of the surface and within
+// the refined zone's arc length (zone_radius) of the lowest point, each as its sorted corner
+// coordinates (r, z).
 std::vector<std::vector<std::pair<double, double>>> sphere_elements_within(const Mesh& m,
                                                                            const MeshOptions& o,
                                                                            double depth) {
@@ -294,7 +295,10 @@ std::vector<std::vector<std::pair<double, double>>> sphere_elements_within(const
     bool inside = true;
     for (const int n : m.quads[e]) {
       const auto i = static_cast<std::size_t>(n);
-      inside = inside && m.z[i] < zc && o.sphere_radius - std::hypot(m.r[i], m.z[i] - zc) <= depth;
+      const double polar = std::atan2(m.r[i], zc - m.z[i]);  // from the downward axis [rad]
+      inside = inside && m.z[i] < zc &&
+               o.sphere_radius - std::hypot(m.r[i], m.z[i] - zc) <= depth &&
+               o.sphere_radius * polar <= (1.0 + 1e-9) * o.zone_radius;
       corners.emplace_back(m.r[i], m.z[i]);
     }
     std::sort(corners.begin(), corners.end());
@@ -304,10 +308,11 @@ std::vector<std::vector<std::pair<double, double>>> sphere_elements_within(const
   return out;
 }
 
-// The sphere's transitions start below the refined depth (zone_depth, like the substrate's zone):
-// every sphere element within it under the contact is the plain mesh's, node for node (at
-// 70 m/s the whole bottom ring lies within it, so nothing merges there). The top block's skin,
-// also that thin, has fewer columns with the transitions: as many as the core.
+// The sphere's transitions start below the refined depth (zone_depth, like the substrate's zone)
+// and beyond the refined zone's edge: every sphere element within the refined depth under the
+// contact is the plain mesh's, node for node (at 70 m/s the whole bottom ring lies within it, so
+// nothing merges there). The skin beyond the zone, also that thin, has fewer rows with the
+// transitions (as the substrate's beside its zone), the top block's fewer columns.
 TEST(ImpactMesh, SphereTransitionsLeaveTheRefinedDepthAsItWas) {
   for (const double v : {0.1, 1.0, 70.0}) {
     const MeshOptions plain = options_at(v, false);
