@@ -24,6 +24,7 @@ def test_relative_reports_the_largest_change_and_the_run_that_made_it(tmp_path):
     code, text = compare("--relative", a, b)
     assert code == 0
     assert "2 runs joined on case_id; e: largest |change| 1.000e-03" in text
+    assert "0 without a number in either file" in text
     assert "e_coarse: largest |change| 1.000e-02" in text
     assert text.index("c2: e 0.8 -> 0.8008 (+1.000e-03)") < text.index("c1: e 0.5 -> 0.5")
     assert "A: largest energy balance 3.00e-06, runs with e > 1: 0, summed wall_s 3.0" in text
@@ -36,6 +37,23 @@ def test_relative_refuses_files_that_do_not_join(tmp_path):
     code, text = compare("--relative", a, b)
     assert code == 1
     assert "do not join" in text
+
+
+def test_relative_refuses_empty_files_and_repeated_cases(tmp_path):
+    a = write(tmp_path / "a.csv", [("c1", 0.5, 0.51, 1e-6, 2.0), ("c1", 0.6, 0.51, 1e-6, 2.0)])
+    b = write(tmp_path / "b.csv", [("c1", 0.5, 0.51, 1e-6, 2.0)])
+    assert compare("--relative", a, b) == (1, f"{a}: duplicate case ids\n")
+    empty = write(tmp_path / "e.csv", [])
+    assert compare("--relative", empty, b) == (1, f"{empty}: no rows\n")
+
+
+def test_relative_skips_nan_but_not_the_numbers_beside_it(tmp_path):
+    a = write(tmp_path / "a.csv", [("c1", 0.5, 0.51, "nan", 2.0), ("c2", 0.8, 0.81, 1e-3, 1.0)])
+    b = write(tmp_path / "b.csv", [("c1", "nan", 0.51, "nan", 2.0), ("c2", 0.8, 0.81, 1e-3, 1.0)])
+    code, text = compare("--relative", a, b)
+    assert code == 0
+    assert "largest |change| 0.000e+00 (relative), mean change +0.000e+00, 1 without" in text
+    assert "A: largest energy balance 1.00e-03" in text
 
 
 def test_exact_ignores_timing_and_sees_any_other_difference(tmp_path):

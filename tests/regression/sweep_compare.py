@@ -7,7 +7,8 @@ columns (wall_s, element_steps_per_s) left out. Exit 0 if equal, 1 with a diff l
 Relative (two solver versions, e.g. before and after a change, as the README's and the closing
 notes' "every e within x %" claims are made): rows joined on case_id; prints the largest relative
 change of e and of e_error's reference e_coarse, the runs that moved most, the largest energy
-balance of each, and the summed wall_s. Exit 1 only if the files do not join (different cases).
+balance of each (NaN entries skipped), and the summed wall_s. Exit 1 if the files do not join
+(different cases), are empty or repeat a case id.
     python3 sweep_compare.py --relative A.csv B.csv [--top N]"""
 import csv
 import sys
@@ -48,8 +49,23 @@ def exact(argv):
 
 
 def by_case(path):
+    """Rows by case_id; None (after saying why) for an empty file or duplicate case ids."""
     with open(path, newline="") as f:
-        return {r["case_id"]: r for r in csv.DictReader(f)}
+        rows = list(csv.DictReader(f))
+    cases = {r["case_id"]: r for r in rows}
+    if not rows:
+        print(f"{path}: no rows")
+        return None
+    if len(cases) != len(rows):
+        print(f"{path}: duplicate case ids")
+        return None
+    return cases
+
+
+def largest(values):
+    """The largest of the numbers that are not NaN (NaN if none is)."""
+    finite = [v for v in values if v == v]
+    return max(finite) if finite else float("nan")
 
 
 def number(row, key):
@@ -71,20 +87,23 @@ def relative(argv):
         top = int(argv[k + 1])
         argv = argv[:k] + argv[k + 2:]
     a, b = by_case(argv[0]), by_case(argv[1])
+    if a is None or b is None:
+        return 1
     if set(a) != set(b):
         print(f"the files do not join: {len(set(a) ^ set(b))} case ids in only one of them")
         return 1
     changes = sorted(((relative_change(a[c], b[c], "e"), c) for c in a),
                      key=lambda t: -abs(t[0]) if t[0] == t[0] else 0.0)
     finite = [d for d, _ in changes if d == d]
-    coarse = [abs(d) for d in (relative_change(a[c], b[c], "e_coarse") for c in a) if d == d]
-    print(f"{len(a)} runs joined on case_id; e: largest |change| {max(map(abs, finite)):.3e}"
-          f" (relative), mean change {sum(finite) / len(finite):+.3e}; e_coarse: largest"
-          f" |change| {max(coarse, default=float('nan')):.3e}")
+    coarse = [abs(relative_change(a[c], b[c], "e_coarse")) for c in a]
+    mean = sum(finite) / len(finite) if finite else float("nan")
+    print(f"{len(a)} runs joined on case_id; e: largest |change| {largest(map(abs, finite)):.3e}"
+          f" (relative), mean change {mean:+.3e}, {len(a) - len(finite)} without a number in"
+          f" either file; e_coarse: largest |change| {largest(coarse):.3e}")
     for d, c in changes[:top]:
         print(f"  {c}: e {a[c]['e']} -> {b[c]['e']} ({d:+.3e})")
     for name, rows in (("A", a), ("B", b)):
-        balance = max(number(r, "energy_balance_error") for r in rows.values())
+        balance = largest(number(r, "energy_balance_error") for r in rows.values())
         wall = sum(number(r, "wall_s") for r in rows.values())
         above_one = sum(1 for r in rows.values() if number(r, "e") > 1.0)
         print(f"{name}: largest energy balance {balance:.2e}, runs with e > 1: {above_one},"

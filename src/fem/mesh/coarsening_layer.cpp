@@ -27,7 +27,7 @@ constexpr double kCoarseSideThickness = 1.12;
 double thick_layer_depth(const std::array<Point, 4>& fine, Point c0, Point c1) {
   const double interval = norm(fine[3] - fine[0]) / 3.0;
   const double thickness = 0.5 * (norm(c0 - fine[0]) + norm(c1 - fine[3]));
-  return std::max(0.5, 1.0 - kCoarseSideThickness * interval / thickness);
+  return std::max(kHalfwayDepth, 1.0 - kCoarseSideThickness * interval / thickness);
 }
 
 bool well_shaped_transition(

@@ -14,6 +14,9 @@
 
 namespace corlab::fem::meshing {
 
+/// transition_quads' interior nodes halfway across the layer: the plain template.
+inline constexpr double kHalfwayDepth = 0.5;
+
 /// The four quads of the 3:1 transition between a fine edge f0 -> f3 (three intervals) and the
 /// coarse edge c0 -> c1 opposite it (one interval; c0 faces f0), around two interior nodes, each
 /// the fraction `depth` of the way from f1 (f2) to the point of the coarse edge at f1's (f2's)
@@ -22,7 +25,7 @@ namespace corlab::fem::meshing {
 std::array<std::array<Point, 4>, 4> transition_quads(const std::array<Point, 4>& fine,
                                                      Point c0,
                                                      Point c1,
-                                                     double depth = 0.5);
+                                                     double depth = kHalfwayDepth);
 
 /// Adds nodes and elements to a mesh, merging nodes at bitwise-equal coordinates within a body.
 class MeshBuilder {
@@ -37,7 +40,10 @@ class MeshBuilder {
   /// Adds one quad with corners p (either orientation).
   void quad(const std::array<Point, 4>& p);
   /// Adds the 3:1 transition of transition_quads.
-  void transition(const std::array<Point, 4>& fine, Point c0, Point c1, double depth = 0.5);
+  void transition(const std::array<Point, 4>& fine,
+                  Point c0,
+                  Point c1,
+                  double depth = kHalfwayDepth);
 
  private:
   Mesh& mesh_;

@@ -226,7 +226,8 @@ RingSweep add_bottom_ring(const MeshOptions& o,
   }
   const auto along = [&](std::size_t j, std::size_t i) { return point(i, j); };
   for (std::size_t i = nz; i < s.ns; ++i) {
-    out.rows = coarsening_layer(builder, out.rows, i, o.h_max, along, s.h, true);
+    out.rows =
+        coarsening_layer(builder, out.rows, i, o.h_max, along, s.h, TransitionDepth::kThickLayer);
     out.cols.push_back(i + 1);
   }
   return out;
@@ -305,7 +306,8 @@ std::vector<std::size_t> add_right_block(const MeshOptions& o,
   const double zone_arc = o.zone_radius - s.radius * s.alpha;  // the zone's part of Q -> Q'
   for (std::size_t i = 0; i < core.nr; ++i) {
     const bool refined = core.arc_r[i + 1] <= (1.0 + 1e-9) * zone_arc;
-    rows = coarsening_layer(builder, rows, i, refined ? 0.0 : o.h_max, along, s.h, true);
+    rows = coarsening_layer(builder, rows, i, refined ? 0.0 : o.h_max, along, s.h,
+                            TransitionDepth::kThickLayer);
   }
   return rows;
 }

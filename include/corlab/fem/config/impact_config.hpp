@@ -57,7 +57,7 @@ struct MeshConfig {
   double refine_depth = 0.5;
   double growth = 1.15;  ///< size ratio of neighbouring elements outside the zone [-]
   double h_max = 5e-3;   ///< largest element size [m]
-  /// 1 = 3:1 transitions in the tensor-grid substrate and the sphere's bottom ring (the
+  /// 1 = 3:1 transitions in the tensor-grid substrate and the sphere's bottom ring and skin (the
   /// default), 0 = plain grids [-]
   double transitions = 1.0;
   std::filesystem::path file;  ///< Gmsh .msh file; empty = built-in generator

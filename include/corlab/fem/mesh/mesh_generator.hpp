@@ -27,9 +27,9 @@ struct MeshOptions {
   double zone_depth = 8e-3;  ///< depth of the uniform zone below the contact [m]
   double growth = 1.15;      ///< size ratio of neighbouring elements outside the zone [-]
   double h_max = 5e-3;       ///< largest element size [m]
-  /// Build the tensor-grid substrate, and the sphere's bottom ring below the refined depth, with
-  /// 3:1 transitions (docs/theory/mesh.md, "3:1 transitions"): fewer elements where the zone's
-  /// fine columns and rows would run on.
+  /// Build the tensor-grid substrate, the sphere's bottom ring below the refined depth and its
+  /// skin beyond the refined zone with 3:1 transitions (docs/theory/mesh.md, "3:1 transitions",
+  /// "Skin transitions"): fewer elements where the zone's fine columns and rows would run on.
   bool transitions = true;
 };
 

@@ -99,7 +99,7 @@ TEST(MeshBuilder, ThickLayerTransitionIsWellShapedAtAnyThickness) {
   const std::array<Point, 4> fine{Point{1.0, 0.0}, Point{2.0, 0.0}, Point{3.0, 0.0},
                                   Point{4.0, 0.0}};
   for (const double t : {2.0, 2.2}) {
-    EXPECT_EQ(thick_layer_depth(fine, {1.0, -t}, {4.0, -t}), 0.5) << t;
+    EXPECT_EQ(thick_layer_depth(fine, {1.0, -t}, {4.0, -t}), kHalfwayDepth) << t;
   }
   for (const double t : {2.5, 3.0, 4.0, 8.0, 20.0}) {
     const Point c0{1.0, -t};

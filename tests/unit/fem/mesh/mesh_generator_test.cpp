@@ -262,12 +262,13 @@ double updates(const Mesh& m, Body body) {
 }
 
 // mesh.transitions = 1 merges fine columns 3:1 (docs/theory/mesh.md, "3:1 transitions") in the
-// tensor-grid substrate and, below the refined depth, in the sphere's bottom ring; the contact
-// surfaces (slave nodes and master segments) stay exactly as they were. Paper case (5 m/s,
-// tensor substrate; the sphere's ring lies within the refined depth): 2301 -> 1463 substrate
-// elements, the sphere unchanged. 0.1 m/s (block substrate, unchanged): the sphere's h-wide
-// columns end in the ring instead of running on through the core to its top, 3250 -> 2393
-// sphere elements, 1144 -> 761 sphere updates per base step.
+// tensor-grid substrate, in the sphere's bottom ring below the refined depth and in its skin
+// beyond the refined zone; the contact surfaces (slave nodes and master segments) stay exactly
+// as they were. Paper case (5 m/s, tensor substrate; the sphere's ring lies within the refined
+// depth): 2301 -> 1463 substrate elements, the sphere unchanged. 0.1 m/s (block substrate,
+// unchanged): the sphere's h-wide columns end in the ring instead of running on through the core
+// to its top, and its h-thin skin rows merge along the arc: 3250 -> 1794 sphere elements, 1144 ->
+// 547 sphere updates per base step.
 TEST(ImpactMesh, TransitionsKeepTheContactSurfacesAndCutTheFineColumns) {
   for (const double v : {0.1, 5.0, 70.0}) {
     const Mesh plain = generate_impact_mesh(options_at(v, false));
@@ -323,6 +324,38 @@ TEST(ImpactMesh, SphereTransitionsLeaveTheRefinedDepthAsItWas) {
     EXPECT_GT(expected.size(), 50U) << v;
     EXPECT_EQ(within(options_at(v, true)), expected) << v;
   }
+}
+
+// Beyond the refined zone the skin's rows merge along the arc (add_bottom_ring, add_right_block):
+// at 0.1 m/s the top block, which takes the rows that reach Q' -> K', has fewer of them on the
+// axis above the centre than the ring's n_t, and the thin skin's aspect ratio is gone.
+TEST(ImpactMesh, SkinRowsMergeBeyondTheRefinedZone) {
+  const auto top_axis_nodes = [](const MeshOptions& o) {
+    const Mesh m = generate_impact_mesh(o);
+    const double zc = o.gap + o.sphere_radius;
+    int n = 0;
+    for (int i = 0; i < m.num_nodes(); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      n += m.node_body[k] == Body::kSphere && m.r[k] == 0.0 && m.z[k] > zc ? 1 : 0;
+    }
+    return n;
+  };
+  const MeshOptions plain = options_at(0.1, false);
+  const MeshOptions swept = options_at(0.1, true);
+  EXPECT_LT(top_axis_nodes(swept) + 5, top_axis_nodes(plain));
+  double worst = 0.0;
+  const Mesh m = generate_impact_mesh(swept);
+  for (std::size_t e = 0; e < m.quads.size(); ++e) {
+    std::array<double, 4> r{};
+    std::array<double, 4> z{};
+    for (std::size_t k = 0; k < 4; ++k) {
+      r[k] = m.r[static_cast<std::size_t>(m.quads[e][k])];
+      z[k] = m.z[static_cast<std::size_t>(m.quads[e][k])];
+    }
+    if (m.element_body[e] == Body::kSphere)
+      worst = std::max(worst, quad_quality(r, z).aspect_ratio);
+  }
+  EXPECT_LT(worst, 12.0);  // 21 with the ring's transitions only
 }
 
 // The refined zone is 1.5 a wide but only mesh.refine_depth x a deep (0.5 a by default).
