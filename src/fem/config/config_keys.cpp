@@ -127,7 +127,8 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       +[](ImpactConfig& c) { return &c.mesh.h_max; }));
   t.push_back(entry(
       "mesh.transitions", "[-]", closed(0.0, 1.0, "0 = off, 1 = on"),
-      "3:1 transitions in the tensor-grid substrate and the sphere's ring and skin (fewer elements)",
+      "3:1 transitions in the tensor-grid substrate and the sphere's ring and skin (fewer "
+      "elements)",
       +[](ImpactConfig& c) { return &c.mesh.transitions; }));
   t.push_back(entry(
       "mesh.file", "", std::nullopt,

@@ -76,6 +76,9 @@ Point corner_back(double phi) {
   return ca * e_out(phi) - sa * e_tan(phi);
 }
 
+/// Whether a position x [m] lies within a limit [m] (up to round-off in the distributions).
+bool within(double x, double limit) { return x <= (1.0 + 1e-9) * limit; }
+
 /// The core's bottom edge A -> K for ring thickness d: horizontal at the axis, at the ring corner
 /// angle at K.
 Curve core_bottom(const SphereLayout& s, double d) {
@@ -122,6 +125,7 @@ struct CoreRight {
   Point a2;
   Curve right;
   std::vector<double> arc_r;   // right block arc positions
+  double zone_arc;             // the refined zone's part of the arc Q -> Q' (uniform h) [m]
   std::vector<double> axis_x;  // core axis positions
   std::size_t nr;
 };
@@ -148,6 +152,7 @@ CoreRight core_right(const SphereLayout& s, const MeshOptions& o, double d_top) 
                    a2,
                    hermite(k, corner_ahead(s.alpha), k2, -1.0 * corner_back(s.beta)),
                    split_to_count(arc, n),
+                   right_uniform,
                    split_to_count(axis, n),
                    n};
 }
@@ -187,6 +192,28 @@ RingEdges ring_edges(const SphereLayout& s) {
   return e;
 }
 
+/// Sweeps layers first .. last - 1 of a block along the sphere's arc (grid `pts`, index
+/// i * (nt + 1) + j: i along the arc, j inwards), merging the depth rows `rows` 3:1 wherever the
+/// thick-layer transition is well shaped and `refined(i)` (layer i within the refined zone) is
+/// false. Returns the rows that reach line `last`.
+template <typename Refined>
+std::vector<std::size_t> skin_sweep(MeshBuilder& builder,
+                                    const std::vector<Point>& pts,
+                                    std::size_t nt,
+                                    std::size_t first,
+                                    std::size_t last,
+                                    std::vector<std::size_t> rows,
+                                    double h_max,
+                                    double h,
+                                    Refined refined) {
+  const auto along = [&](std::size_t j, std::size_t i) { return pts[i * (nt + 1) + j]; };
+  for (std::size_t i = first; i < last; ++i) {
+    rows = coarsening_layer(builder, rows, i, refined(i) ? 0.0 : h_max, along, h,
+                            TransitionDepth::kThickLayer);
+  }
+  return rows;
+}
+
 /// What the bottom ring's transitions leave: the arc's columns that reach A -> K and the depth
 /// rows that reach Q -> K (indices into the ring's grid).
 struct RingSweep {
@@ -215,21 +242,19 @@ RingSweep add_bottom_ring(const MeshOptions& o,
   }
   const auto point = [&](std::size_t i, std::size_t j) { return pts[i * (nt + 1) + j]; };
   std::size_t nz = 0;  // the arc's intervals within the refined zone
-  while (nz < s.ns && s.arc_b[nz + 1] <= (1.0 + 1e-9) * o.zone_radius) ++nz;
+  while (nz < s.ns && within(s.arc_b[nz + 1], o.zone_radius)) ++nz;
   RingSweep out{all_edges(nz), all_edges(nt)};
   for (std::size_t j = 0; j < nt; ++j) {
     // rows within the refined depth keep their columns, as the substrate's zone does; h: the
     // transitions' elements are as wide as the substrate's, although the ring's columns narrow
     // to min_size inwards
-    const bool refined = s.depth_b[j + 1] <= (1.0 + 1e-9) * s.uniform_depth;
+    const bool refined = within(s.depth_b[j + 1], s.uniform_depth);
     out.cols = coarsening_layer(builder, out.cols, j, refined ? 0.0 : o.h_max, point, s.h);
   }
-  const auto along = [&](std::size_t j, std::size_t i) { return point(i, j); };
-  for (std::size_t i = nz; i < s.ns; ++i) {
-    out.rows =
-        coarsening_layer(builder, out.rows, i, o.h_max, along, s.h, TransitionDepth::kThickLayer);
-    out.cols.push_back(i + 1);
-  }
+  // beyond the zone (layers nz .. ns - 1), each layer's far line is a column that reaches A -> K
+  out.rows = skin_sweep(builder, pts, nt, nz, s.ns, out.rows, o.h_max, s.h,
+                        [](std::size_t) { return false; });
+  for (std::size_t i = nz + 1; i <= s.ns; ++i) out.cols.push_back(i);
   return out;
 }
 
@@ -301,15 +326,8 @@ std::vector<std::size_t> add_right_block(const MeshOptions& o,
     builder.block(pts, core.nr, nt);
     return rows;
   }
-  // the grid with the roles of i and j swapped: layers along the arc, edges through the depth
-  const auto along = [&](std::size_t j, std::size_t i) { return pts[i * (nt + 1) + j]; };
-  const double zone_arc = o.zone_radius - s.radius * s.alpha;  // the zone's part of Q -> Q'
-  for (std::size_t i = 0; i < core.nr; ++i) {
-    const bool refined = core.arc_r[i + 1] <= (1.0 + 1e-9) * zone_arc;
-    rows = coarsening_layer(builder, rows, i, refined ? 0.0 : o.h_max, along, s.h,
-                            TransitionDepth::kThickLayer);
-  }
-  return rows;
+  return skin_sweep(builder, pts, nt, 0, core.nr, std::move(rows), o.h_max, s.h,
+                    [&](std::size_t i) { return within(core.arc_r[i + 1], core.zone_arc); });
 }
 
 /// The points of `pts` at the indices `keep`.
