@@ -231,7 +231,7 @@ def error_bar_item(fits):
         return None
     m = d["max_case"]
     return (f"Every FE restitution coefficient carries a discretisation-error estimate (two-grid "
-            f"Grid Convergence Index from a companion run at twice the contact element size, "
+            f"Grid Convergence Index from a companion run on the mesh twice as coarse everywhere, "
             f"Roache 1998; error bars in Figs. 6 and 11-13): over {d['count']} runs the median "
             f"is {fmt(d['median'], 2)} and the largest {fmt(d['max'], 2)} "
             f"({pct(d['max_relative'], 1)} of e = {fmt(m['e'], 4)}, {esc(m['study'])} "

@@ -119,7 +119,7 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       "refined zone depth below the contact = this x predicted contact radius",
       +[](ImpactConfig& c) { return &c.mesh.refine_depth; }));
   t.push_back(entry(
-      "mesh.growth", "[-]", closed(1.0, 2.0),
+      "mesh.growth", "[-]", closed(1.0, MeshConfig::kMaxGrowth),
       "size ratio of neighbouring elements outside the zone",
       +[](ImpactConfig& c) { return &c.mesh.growth; }));
   t.push_back(entry(
@@ -176,7 +176,8 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
   t.push_back(entry(
       "solver.mass_scaling_max", "[-]",
       closed(1.0, 64.0, "dt x 64 = density x 4096 at the contact"),
-      "mass scaling: the base step may grow up to this factor (1 = off)",
+      "mass scaling: the base step may grow up to this factor times the step floor (the "
+      "contact's h-squares' step; 1 = off, floor included)",
       +[](ImpactConfig& c) { return &c.solver.mass_scaling_max; }));
   t.push_back(entry(
       "solver.mass_scaling_inertia", "[-]", closed(0.0, 1e-2, "quasi-static contact zone"),

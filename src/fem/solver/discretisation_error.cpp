@@ -1,5 +1,6 @@
 #include "corlab/fem/solver/discretisation_error.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -15,6 +16,9 @@ ImpactConfig coarsened(const ImpactConfig& config, double ratio) {
   ImpactConfig c = config;
   c.mesh.h_min *= ratio;
   c.mesh.contact_elements /= ratio;
+  c.mesh.h_max *= ratio;
+  // `ratio` graded layers of growth g merged into one grow by g^ratio; capped at the key's bound.
+  c.mesh.growth = std::min(std::pow(c.mesh.growth, ratio), MeshConfig::kMaxGrowth);
   return c;
 }
 

@@ -342,7 +342,7 @@ ImpactResult run_impact(const ImpactConfig& config,
   res.elements = m.n_elements;
   res.nodes = m.n_nodes;
   res.time_step = m.dt_initial;
-  res.mass_scaling = m.mass_scaling;
+  res.mass_scaling = m.mass_scaling * m.step_floor_scale;
   res.added_mass_fraction = m.added_mass / m.sphere_mass_physical;
   res.h_contact =
       std::hypot(s.r[m.masters[1]] - s.r[m.masters[0]], s.z[m.masters[1]] - s.z[m.masters[0]]);

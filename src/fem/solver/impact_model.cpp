@@ -33,6 +33,8 @@ constexpr double kWaveTransits = 4.0;
 /// mass scaling (the prediction is already the larger of the Hertz and plastic estimates,
 /// contact_estimate.hpp; 1.5 is margin; a slave beyond keeps a stable, maybe softer penalty) [-].
 constexpr double kScaledContactRadii = 1.5;
+/// Bisection steps for the step floor's ratio (2^-30 of its range) [-].
+constexpr int kFloorBisections = 30;
 
 BodyParams body_params(const Material& m, const SolverConfig& s) {
   BodyParams p;
@@ -129,6 +131,7 @@ struct ElementMasses {
   std::vector<char> at_contact;  ///< 1 for the elements of contact_zone_elements()
   double sphere_mass = 0.0;      ///< [kg]
   double step_min = 0.0;         ///< [s]
+  double step_floor = 0.0;       ///< steps below it are raised to it (step_floor()) [s]
 };
 
 ElementMasses element_masses(const ImpactModel& m) {
@@ -148,6 +151,7 @@ ElementMasses element_masses(const ImpactModel& m) {
     em.step_min = std::min(em.step_min, em.step[e]);
     if (e < m.n_sphere_elements) em.sphere_mass += em.mass[e];
   }
+  em.step_floor = em.step_min;
   return em;
 }
 
@@ -179,9 +183,10 @@ std::vector<char> contact_zone_elements(const ImpactConfig& config, const Impact
 }
 
 /// Step scale of element e for the factor f: f at the contact, else what raises its stable step
-/// to f x the smallest (1 if it is already longer) [-].
+/// to f x the floor (1 if it is already longer); elements below the floor reach it first [-].
 double element_step_scale(const ElementMasses& em, std::size_t e, double f) {
-  return em.at_contact[e] != 0 ? f : std::max(1.0, f * em.step_min / em.step[e]);
+  if (em.at_contact[e] == 0) return std::max(1.0, f * em.step_floor / em.step[e]);
+  return f * std::max(1.0, em.step_floor / em.step[e]);
 }
 
 /// Mass added by the factor f [kg].
@@ -192,6 +197,52 @@ double added_mass(const ElementMasses& em, double f) {
     added += (s * s - 1.0) * em.mass[e];
   }
   return added;
+}
+
+/// Stable step [s] of an h x h square of either body at the contact (h: the first master
+/// segment), the smaller of the two: what the contact zone's elements themselves allow.
+double contact_square_step(const ImpactModel& m) {
+  const int a = m.masters[0];
+  const int b = m.masters[1];
+  const double h = std::hypot(m.r0[b] - m.r0[a], m.z0[b] - m.z0[a]);
+  double step = std::numeric_limits<double>::infinity();
+  for (const BodyParams* p : {&m.sphere, &m.substrate}) {
+    step = std::min(step, element_stable_time_step(h / std::sqrt(2.0), p->wave_speed, p->b1));
+  }
+  return step;
+}
+
+/// The step floor [s] (docs/theory/solver.md section 12, "Step floor"): the elements whose stable
+/// step is below the contact's own h-squares' (the axis column, whose hoop stiffness shortens
+/// it by up to sqrt(2/3), and distorted elements of the sphere's core) get their density raised
+/// to reach it, mass scaling below a target step as ABAQUS/Explicit's BELOW MIN does. Bounded so
+/// that the contact's physical penalty keeps within the stability budget at the longer step,
+/// (1 + penalty_scale x ratio^2) safety_factor^2 <= 1, and so that the added mass stays within
+/// kMaxAddedMassFraction of the sphere's (bisection on the ratio); none with mass scaling off.
+double step_floor(const SolverConfig& sc, const ImpactModel& m, const ElementMasses& em) {
+  if (sc.mass_scaling_max <= 1.0) return em.step_min;
+  const double budget = 1.0 / (sc.safety_factor * sc.safety_factor) - 1.0;
+  const double stable_ratio = std::sqrt(budget / sc.penalty_scale);
+  const double ratio = std::min(contact_square_step(m) / em.step_min, stable_ratio);
+  if (!(ratio > 1.0)) return em.step_min;
+  const double limit = kMaxAddedMassFraction * em.sphere_mass;
+  ElementMasses trial = em;
+  const auto fits = [&](double r) {
+    trial.step_floor = r * em.step_min;
+    return added_mass(trial, 1.0) <= limit;
+  };
+  if (fits(ratio)) return ratio * em.step_min;
+  double lo = 1.0;  // fits
+  double hi = ratio;
+  for (int k = 0; k < kFloorBisections; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    if (fits(mid)) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo * em.step_min;
 }
 
 /// The mass-scaling factor F (a power of two, 1 = none): the largest <= solver.mass_scaling_max
@@ -218,6 +269,9 @@ double mass_scaling_factor(const ImpactConfig& config, const ElementMasses& em) 
 void set_masses(const ImpactConfig& config, ImpactModel& m) {
   ElementMasses em = element_masses(m);
   em.at_contact = contact_zone_elements(config, m);
+  em.step_floor = step_floor(config.solver, m, em);
+  m.dt_critical_physical = em.step_min;
+  m.step_floor_scale = em.step_floor / em.step_min;
   m.mass_scaling = mass_scaling_factor(config, em);
   m.sphere_mass_physical = em.sphere_mass;
   m.mass.assign(m.n_nodes, 0.0);
@@ -255,11 +309,13 @@ void set_penalties(const SolverConfig& sc, ImpactModel& m) {
     // The physical penalty (mass scaling leaves the contact stiffness, and so e, as it was:
     // an unscaled penalty 1/3 softer moves e by 0.4 % at 0.1 m/s), capped where the node's mass
     // was scaled less than the step (away from the contact) so that it stays stable.
+    // The cap allows the step floor's share (step_floor): the physical penalty of an unscaled
+    // node at the longer step.
     const double m_master_physical = (1.0 - xi) * m.physical_mass[a] + xi * m.physical_mass[b];
-    m.penalty[s] =
-        std::min(penalty_stiffness(sc.penalty_scale, m.physical_mass[i], m_master_physical,
-                                   m.dt_critical / m.mass_scaling),
-                 penalty_stiffness(sc.penalty_scale, m.mass[i], m_master, m.dt_critical));
+    m.penalty[s] = std::min(penalty_stiffness(sc.penalty_scale, m.physical_mass[i],
+                                              m_master_physical, m.dt_critical_physical),
+                            penalty_stiffness(sc.penalty_scale, m.mass[i], m_master,
+                                              m.dt_critical / m.step_floor_scale));
   }
 }
 

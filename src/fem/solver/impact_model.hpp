@@ -77,7 +77,11 @@ struct ImpactModel {
   /// step_scale x its physical one, its density step_scale^2 x the material's [-].
   std::vector<double> step_scale;
   std::vector<double> physical_mass;  ///< lumped masses without the scaling [kg]
-  double mass_scaling = 1.0;          ///< dt_critical / the physical critical step (1 = none) [-]
+  double mass_scaling = 1.0;          ///< the factor F (power of two; 1 = none) [-]
+  /// Step floor (docs/theory/solver.md section 12): the elements' smallest step after scaling
+  /// the ones below the contact's h-squares, / the smallest physical one (1 = none) [-].
+  double step_floor_scale = 1.0;
+  double dt_critical_physical = 0.0;  ///< smallest physical element stable step at the start [s]
   double added_mass = 0.0;            ///< mass added by the scaling, both bodies [kg]
   double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
 };

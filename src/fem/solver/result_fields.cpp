@@ -116,7 +116,8 @@ const std::array kFields{
     ResultField{"element_steps_per_s", "1/s", "throughput", FieldKind::real,
                 &result_member<&R::element_steps_per_s>, kBoth, true},
     member<&R::e_error>("e_error", "-", "discretisation-error estimate of e (two-grid GCI)", kBoth),
-    member<&R::e_coarse>("e_coarse", "-", "e on the mesh twice as coarse at the contact", kBoth),
+    member<&R::e_coarse>(
+        "e_coarse", "-", "e on the mesh twice as coarse (error-bar companion)", kBoth),
     member<&R::suspect>("suspect", "-", "why the run is suspect (empty: it is not)", kBoth),
     member<&R::status>("status", "-", "how the run ended (run_status.hpp)", kSummary),
     member<&R::status_detail>(

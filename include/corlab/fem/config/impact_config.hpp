@@ -55,6 +55,7 @@ struct MeshConfig {
   /// elastic stresses peak at 0.48 a below the contact (Johnson 1985, fig. 4.6); deeper, the
   /// graded mesh changes e by < 0.1 % (docs/theory/mesh.md, "Depth of the refined zone").
   double refine_depth = 0.5;
+  static constexpr double kMaxGrowth = 2.0;  ///< largest accepted `growth` [-]
   double growth = 1.15;  ///< size ratio of neighbouring elements outside the zone [-]
   double h_max = 5e-3;   ///< largest element size [m]
   /// 1 = 3:1 transitions in the tensor-grid substrate and the sphere's bottom ring and skin (the
@@ -78,10 +79,10 @@ struct SolverConfig {
   /// Multi-time-step integration (element subcycling, docs/theory/solver.md section 11): elements
   /// step at 2^L x the base step, L <= this (0 = every element at the base step) [-].
   int subcycling_levels = 4;
-  /// Mass scaling to a target step (docs/theory/solver.md section 12): the elements whose stable
-  /// step is below F x the smallest get their density raised until it reaches it; F is the
-  /// largest power of two <= this whose added inertia stays within mass_scaling_inertia
-  /// (1 = off) [-].
+  /// Mass scaling to a target step (docs/theory/solver.md section 12): the elements below the
+  /// step floor (the contact's h-squares' stable step) reach it, then those below F x the floor
+  /// get their density raised until they reach that; F is the largest power of two <= this whose
+  /// added inertia stays within mass_scaling_inertia (1 = off, floor included) [-].
   double mass_scaling_max = 8.0;
   /// Bound on the inertia that mass scaling adds, (F^2 - 1) rho v^2 / p_ref, rho the larger
   /// density, v the impact speed, p_ref the smaller of the Hertz p0 and the yield stresses [-].

@@ -35,7 +35,7 @@ struct ImpactResult {
       0.0;  ///< CoR from momentum: rebound / impact c.o.m. velocity [-]; NaN unless separated
   double e_energy =
       0.0;  ///< CoR from the sphere's rebound kinetic energy [-]; NaN unless separated
-  /// e on the mesh twice as coarse at the contact [-] (NaN unless estimated)
+  /// e on the mesh twice as coarse everywhere (discretisation_error.hpp) [-] (NaN unless estimated)
   double e_coarse = std::numeric_limits<double>::quiet_NaN();
   /// discretisation-error estimate of e: e +/- e_error [-] (discretisation_error.hpp; NaN unless
   /// estimated)

@@ -19,14 +19,24 @@ TEST(DiscretisationError, GciIsThreeTimesTheChangeOverThree) {
   EXPECT_TRUE(std::isnan(grid_convergence_index(0.5, std::nan(""))));
 }
 
-TEST(DiscretisationError, CoarsenedDoublesTheContactElement) {
+TEST(DiscretisationError, CoarsenedDoublesEveryElement) {
   ImpactConfig c;
   c.mesh.h_min = 0.25e-3;
   c.mesh.contact_elements = 12.0;
+  c.mesh.h_max = 5e-3;
+  c.mesh.growth = 1.2;
   const ImpactConfig k = coarsened(c);
   EXPECT_EQ(k.mesh.h_min, 0.5e-3);
   EXPECT_EQ(k.mesh.contact_elements, 6.0);
+  EXPECT_EQ(k.mesh.h_max, 10e-3);
+  EXPECT_DOUBLE_EQ(k.mesh.growth, 1.44);  // two layers of 1.2 merged into one
+  EXPECT_EQ(k.mesh.refine_factor, c.mesh.refine_factor);
+  EXPECT_EQ(k.mesh.refine_depth, c.mesh.refine_depth);
   EXPECT_EQ(k.impact.velocity, c.impact.velocity);
+  EXPECT_NO_THROW(validate(k));
+  c.mesh.growth = 1.6;  // 2.56 is beyond the key's range: the steepest accepted grading
+  EXPECT_EQ(coarsened(c).mesh.growth, MeshConfig::kMaxGrowth);
+  EXPECT_NO_THROW(validate(coarsened(c)));
   c.mesh.file = "some.msh";
   EXPECT_THROW(coarsened(c), InputError);
 }
