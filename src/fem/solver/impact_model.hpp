@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/kernels/axisym_quad4.hpp"
 #include "corlab/fem/mesh/mesh.hpp"
 #include "fem/solver/element_loop.hpp"
 
@@ -85,6 +86,9 @@ struct ImpactModel {
   double added_mass = 0.0;            ///< mass added by the scaling, both bodies [kg]
   double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
 };
+
+/// Geometry of (sorted) element e at the start positions.
+Quad4Geometry initial_geometry(const ImpactModel& m, int e);
 
 /// Builds the model from a config that passed validate() (simulate() checks it); throws
 /// InputError for an invalid mesh (named field).
