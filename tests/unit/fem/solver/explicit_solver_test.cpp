@@ -34,19 +34,24 @@ TEST(ExplicitSolver, ElasticPunchIsStableAndConservesEnergy) {
   const ImpactResult r = run_impact(c, punch());
   EXPECT_TRUE(r.separated);
   // A flat punch chatters at its edge; each penalty opening/closing inside a step leaves an
-  // O(k g^2) energy error (measured 0.2 % here), the smooth sphere contact leaves 1e-6.
+  // O(k g^2) energy error, the smooth sphere contact leaves 1e-6. Measured 4.61e-3 (2026-11-27,
+  // AMD EPYC AVX-512; 4.20e-3 without the step floor; "0.2 %" when first written). Bound 5e-3
+  // kept, not tightened: the measurement sits at 0.92 of it.
   EXPECT_LT(r.energy_balance_error, 5e-3);
   // Bounded energies at every output step (no instability at the default safety factor).
+  // Measured: the largest KE is the first row's, E0 + 1 ulp; bound E0 (1 + 1e-6) (was 1.001).
   for (std::size_t i = 0; i < r.history.time.size(); ++i) {
-    ASSERT_LT(r.history.kinetic_energy[i], 1.001 * r.energy_initial) << "row " << i;
+    ASSERT_LT(r.history.kinetic_energy[i], (1.0 + 1e-6) * r.energy_initial) << "row " << i;
     ASSERT_TRUE(std::isfinite(r.history.strain_energy[i]));
   }
   EXPECT_GT(r.force_max, 0.0);
   EXPECT_GT(r.e, 0.0);
   EXPECT_LE(r.e, 1.0 + 1e-6);
   EXPECT_EQ(r.energy_dissipated_plastic, 0.0);
-  // Contact force integral = change of the punch momentum (F is the force on the sphere).
-  EXPECT_NEAR(r.hysteresis_area, r.energy_initial * (1.0 - r.e * r.e), 0.02 * r.energy_initial);
+  // Contact force integral = change of the punch momentum (F is the force on the sphere), so
+  // its work on the c.o.m. is E0 (1 - e^2). Measured 4.8e-9 E0 apart (2026-11-27, AMD EPYC
+  // AVX-512): the trapezoid against the leapfrog; bound 1e-7 E0 (was 0.02 E0): 20x margin.
+  EXPECT_NEAR(r.hysteresis_area, r.energy_initial * (1.0 - r.e * r.e), 1e-7 * r.energy_initial);
 }
 
 TEST(ExplicitSolver, PlasticPunchDissipates) {
@@ -54,6 +59,8 @@ TEST(ExplicitSolver, PlasticPunchDissipates) {
   const ImpactResult r = run_impact(c, punch());
   EXPECT_GT(r.energy_dissipated_plastic, 0.0);
   EXPECT_GT(r.plastic_strain_max, 0.0);
+  // Measured 4.53e-3 (2026-11-27, AMD EPYC AVX-512; 4.12e-3 without the step floor): the edge
+  // chatter as above. Bound 5e-3 kept, not tightened: the measurement sits at 0.91 of it.
   EXPECT_LT(r.energy_balance_error, 5e-3);
   EXPECT_LT(r.e, 1.0);
   EXPECT_GT(r.crater_depth, 0.0);

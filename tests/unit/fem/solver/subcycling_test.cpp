@@ -161,7 +161,7 @@ TEST(Subcycling, SyncLevel) {
   EXPECT_EQ(solver::sync_level(64, 6), 6);
 }
 
-// A subcycled elastic and plastic run: fewer element updates, the same e (0.2 %), an energy
+// A subcycled elastic and plastic run: fewer element updates, the same e (5e-5), an energy
 // balance as closed as without subcycling (the energy in transit between levels booked).
 TEST(Subcycling, RunClosesTheEnergyBalanceAndKeepsE) {
   for (const bool plastic : {false, true}) {
@@ -174,17 +174,28 @@ TEST(Subcycling, RunClosesTheEnergyBalanceAndKeepsE) {
     const ImpactResult b = simulate(on);
     ASSERT_TRUE(a.separated);
     ASSERT_TRUE(b.separated) << b.status_detail;
-    EXPECT_NEAR(b.e, a.e, 2e-3 * a.e) << "plastic " << plastic;
+    // Measured elastic / plastic (2026-11-27, AMD EPYC AVX-512): e -7.8e-7 / +1.1e-5 relative;
+    // bound 5e-5 (was 2e-3): 4.7x the plastic run.
+    EXPECT_NEAR(b.e, a.e, 5e-5 * a.e) << "plastic " << plastic;
     // As closed as without subcycling (1.3e-6 / 8.6e-6 here): the ledger books the energy in
-    // transit between levels (2e-4 at 0.1 m/s without it).
-    EXPECT_LT(b.energy_balance_error, 2e-5) << "plastic " << plastic;
-    EXPECT_LT(std::abs(b.history.energy_balance_error.back()), 2e-5) << "plastic " << plastic;
-    EXPECT_NEAR(b.energy_dissipated_plastic, a.energy_dissipated_plastic, 1e-3 * a.energy_initial);
-    EXPECT_NEAR(b.energy_hourglass, a.energy_hourglass, 1e-5 * a.energy_initial);
-    EXPECT_NEAR(b.penetration_max, a.penetration_max, 0.01 * a.penetration_max);
-    // Fewer element updates per base step.
+    // transit between levels (2e-4 at 0.1 m/s without it). Measured 2.1e-6 / 1.1e-5, the last
+    // history row the same. Bound 1e-5 elastic (was 2e-5): 4.7x; 2e-5 plastic kept, not
+    // tightened: the measurement sits at 0.57 of it.
+    const double balance_bound = plastic ? 2e-5 : 1e-5;
+    EXPECT_LT(b.energy_balance_error, balance_bound) << "plastic " << plastic;
+    EXPECT_LT(std::abs(b.history.energy_balance_error.back()), balance_bound)
+        << "plastic " << plastic;
+    // Measured 0 / -7.1e-6 E0; bound 3e-5 E0 (was 1e-3 E0): 4.2x.
+    EXPECT_NEAR(b.energy_dissipated_plastic, a.energy_dissipated_plastic, 3e-5 * a.energy_initial);
+    // Measured +2.8e-7 / -1.5e-6 E0; bound 5e-6 E0 (was 1e-5 E0): 3.3x.
+    EXPECT_NEAR(b.energy_hourglass, a.energy_hourglass, 5e-6 * a.energy_initial);
+    // Measured -1.7e-5 / -1.9e-4 relative; bound 1e-3 (was 1 %): 5.4x.
+    EXPECT_NEAR(b.penetration_max, a.penetration_max, 1e-3 * a.penetration_max);
+    // Fewer element updates per base step (a count: throughput x wall time, no timing in it).
+    // Measured 0.708 / 0.718 of all; bound 0.8 (was 0.9): kMaxUpdateFraction, above which the
+    // model switches subcycling off.
     EXPECT_LT(b.element_steps_per_s * b.wall_s,
-              0.9 * static_cast<double>(b.elements) * static_cast<double>(b.steps));
+              0.8 * static_cast<double>(b.elements) * static_cast<double>(b.steps));
   }
 }
 
