@@ -4,12 +4,15 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <variant>
 
 #include "corlab/core/atomic_file.hpp"
 #include "corlab/fem/config/config_keys.hpp"
+#include "corlab/fem/solver/history_columns.hpp"
 #include "corlab/fem/solver/result_fields.hpp"
 
 namespace corlab::fem {
@@ -67,15 +70,17 @@ void write_summary_json(const ImpactResult& result,
 
 void write_history_csv(const ImpactHistory& h, const std::filesystem::path& file) {
   auto out = open_for_writing(file);
-  out << "time_s,contact_force_N,indentation_m,sphere_velocity_m_per_s,kinetic_energy_J,"
-         "strain_energy_J,plastic_dissipation_J,hourglass_energy_J,viscous_dissipation_J,"
-         "contact_energy_J,energy_balance_error\n";
+  const auto columns = history_columns();
+  std::string line;
+  for (const HistoryColumn& c : columns) line += (line.empty() ? "" : ",") + history_csv_header(c);
+  out << line << '\n';
   for (std::size_t i = 0; i < h.time.size(); ++i) {
-    out << fmt::format(
-        "{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g}\n", h.time[i],
-        h.contact_force[i], h.indentation[i], h.sphere_velocity[i], h.kinetic_energy[i],
-        h.strain_energy[i], h.plastic_dissipation[i], h.hourglass_energy[i],
-        h.viscous_dissipation[i], h.contact_energy[i], h.energy_balance_error[i]);
+    line.clear();
+    for (const HistoryColumn& c : columns) {
+      if (!line.empty()) line += ',';
+      fmt::format_to(std::back_inserter(line), "{:.{}g}", (h.*c.series)[i], c.digits);
+    }
+    out << line << '\n';
   }
   if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", file.string()));
 }

@@ -1,5 +1,6 @@
 // The solver's hot loops (see element_loop.hpp). Compiled with -fopenmp-simd -fno-math-errno
-// (src/CMakeLists.txt) so that the lane loops vectorise.
+// (src/CMakeLists.txt) so that the lane loops vectorise, and for each SimdLevel
+// (simd_variants.hpp).
 #include "fem/solver/element_loop.hpp"
 
 #include <algorithm>
@@ -11,19 +12,12 @@
 #include "corlab/fem/kernels/hourglass.hpp"
 #include "corlab/fem/kernels/objective_rate.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
+#include "fem/solver/simd_variants.hpp"
 
 namespace corlab::fem::solver {
 namespace {
 
 constexpr double kTwoPi = 2.0 * units::kPi;
-
-// Hot loops are compiled for AVX-512 (x86-64-v4), AVX2 (v3) and the baseline; the dynamic loader
-// picks the best the CPU has (GCC function multiversioning). Elsewhere: the baseline only.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && __GNUC__ >= 12
-#define CORLAB_SIMD_CLONES [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]]
-#else
-#define CORLAB_SIMD_CLONES
-#endif
 
 // Elements per block of the element loop: gathered into lane arrays, computed lane-parallel
 // (the pure kernels, inlined, vectorised across elements), then scattered.
@@ -73,8 +67,12 @@ struct BlockLanes {
 
 // The block of nb elements from e0: its lanes and its slices of the element state (the viscous
 // stress history only with `viscous_history`, i.e. subcycling).
-[[gnu::always_inline]] inline Block block_at(
-    ElementState& es, int e0, int nb, BlockLanes& lanes, bool viscous_history) {
+[[gnu::always_inline]] inline Block block_at(const ElementConstants& ec,
+                                             ElementState& es,
+                                             int e0,
+                                             int nb,
+                                             BlockLanes& lanes,
+                                             bool viscous_history) {
   return Block{nb,
                &lanes.xr[0][0],
                &lanes.xz[0][0],
@@ -88,16 +86,16 @@ struct BlockLanes {
                es.qr.data() + e0,
                es.qz.data() + e0,
                viscous_history ? es.bv.data() + e0 : nullptr,
-               es.step_scale.data() + e0,
+               ec.step_scale.data() + e0,
                &lanes.f_r[0][0],
                &lanes.f_z[0][0]};
 }
 
 // The node indices of the block from element e0, per corner: nd[i][l] is node i of lane l.
 using BlockNodes = std::array<const int*, 4>;
-[[gnu::always_inline]] inline BlockNodes block_nodes(const ElementState& es, int e0) {
-  return {es.corner[0].data() + e0, es.corner[1].data() + e0, es.corner[2].data() + e0,
-          es.corner[3].data() + e0};
+[[gnu::always_inline]] inline BlockNodes block_nodes(const ElementConstants& ec, int e0) {
+  return {ec.corner[0].data() + e0, ec.corner[1].data() + e0, ec.corner[2].data() + e0,
+          ec.corner[3].data() + e0};
 }
 
 // Per-lane results of a block (no reductions inside the lane loop, so it vectorises without
@@ -107,11 +105,11 @@ struct LaneResults {
   alignas(64) double dt[kBlock], eps_p[kBlock], omega[kBlock];
 };
 
-// Adds the block's per-lane results to the pass's sums.
+// Adds the block's per-lane results to the pass's sums; returns the first lane whose element is
+// inverted (volume or area not > 0), or -1.
 template <bool kStableStep>
-[[gnu::always_inline]] inline void add_lane_sums(const LaneResults& out,
-                                                 int nb,
-                                                 ElementSums& sums) {
+[[gnu::always_inline]] inline int add_lane_sums(const LaneResults& out, int nb, ElementSums& sums) {
+  int inverted = -1;
   for (int l = 0; l < nb; ++l) {
     sums.internal_work += out.w_int[l];
     sums.plastic_work += out.w_p[l];
@@ -120,7 +118,9 @@ template <bool kStableStep>
     if constexpr (kStableStep) sums.dt_min = std::min(sums.dt_min, out.dt[l]);
     sums.eps_p_max = std::max(sums.eps_p_max, out.eps_p[l]);
     sums.omega_min = std::min(sums.omega_min, out.omega[l]);
+    if (!(out.omega[l] > 0.0) && inverted < 0) inverted = l;
   }
+  return inverted;
 }
 
 // What the stress update of one lane hands to its force computation.
@@ -173,12 +173,13 @@ struct LaneStress {
 // stable step (kStableStep; a subcycled pass whose step is not used skips it); the block's sums
 // added to `sums`. kTrapezoid (subcycling): the viscous work over the step is the trapezoid of
 // the viscous stress at its start (b.bv, updated) and end, the rule that matches the
-// product-form kinetic energy; else the stress at its end (as before subcycling).
+// product-form kinetic energy; else the stress at its end (as before subcycling). Returns the
+// first inverted lane, or -1.
 template <bool kTrapezoid, bool kStableStep>
-[[gnu::always_inline]] inline void element_block(const BodyParams& p,
-                                                 const Block& b,
-                                                 double dt,
-                                                 ElementSums& sums) {
+[[gnu::always_inline]] inline int element_block(const BodyParams& p,
+                                                const Block& b,
+                                                double dt,
+                                                ElementSums& sums) {
   const double c = p.wave_speed;
   LaneResults out;
 #pragma GCC ivdep
@@ -219,31 +220,34 @@ template <bool kTrapezoid, bool kStableStep>
       out.dt[l] = element_stable_time_step(length, c, xi) * b.step_scale[l];
     }
   }
-  add_lane_sums<kStableStep>(out, b.nb, sums);
+  return add_lane_sums<kStableStep>(out, b.nb, sums);
 }
 
-// One pass over the elements [begin, end) of one body; fr/fz (nodal) receive -f_int. Compiled
-// for AVX-512, AVX2 and the baseline (the block kernel is inlined into each); the loader picks
-// the best the CPU has.
-}  // namespace
+// The first inverted element of a pass, at lane `lane` of the block from e0 (-1: none).
+[[gnu::always_inline]] inline void note_inverted(int e0, int lane, ElementSums& sums) {
+  if (lane >= 0 && sums.bad_element < 0) sums.bad_element = e0 + lane;
+}
 
-CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
-                                     ElementState& es,
-                                     int begin,
-                                     int end,
-                                     const double* __restrict r,
-                                     const double* __restrict z,
-                                     const double* __restrict vr,
-                                     const double* __restrict vz,
-                                     double* __restrict fr_out,
-                                     double* __restrict fz_out,
-                                     double dt,
-                                     ElementSums& sums) {
+// One pass over the elements [begin, end) of one body (element_loop.hpp).
+[[gnu::always_inline]] inline void element_loop_body(const BodyParams& p,
+                                                     const ElementConstants& ec,
+                                                     ElementState& es,
+                                                     int begin,
+                                                     int end,
+                                                     const NodalArrays& x,
+                                                     double dt,
+                                                     ElementSums& sums) {
+  const double* __restrict r = x.r;
+  const double* __restrict z = x.z;
+  const double* __restrict vr = x.vr;
+  const double* __restrict vz = x.vz;
+  double* __restrict fr_out = x.fr;
+  double* __restrict fz_out = x.fz;
   BlockLanes lanes;
   auto& [xr, xz, ur, uz, f_r, f_z] = lanes;
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
-    const BlockNodes nd = block_nodes(es, e0);
+    const BlockNodes nd = block_nodes(ec, e0);
     // lanes.*, not the bindings: clang rejects structured bindings inside omp simd.
     for (int i = 0; i < 4; ++i) {
       const int* __restrict ni = nd[i];
@@ -256,10 +260,8 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
         lanes.uz[i][l] = vz[n];
       }
     }
-    const double omega_before = sums.omega_min;
-    const Block b = block_at(es, e0, nb, lanes, false);
-    element_block<false, true>(p, b, dt, sums);
-    if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
+    const Block b = block_at(ec, es, e0, nb, lanes, false);
+    note_inverted(e0, element_block<false, true>(p, b, dt, sums), sums);
     // Element by element (nodes are shared): the order of each node's sum is the element order.
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
@@ -273,25 +275,27 @@ CORLAB_SIMD_CLONES void element_loop(const BodyParams& p,
 }
 
 // element_loop for one subcycling level (element_loop.hpp): the rate from the element's own
-// interval, 2^L f_int scattered. Cloned as element_loop.
-CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
-                                               ElementState& es,
-                                               int begin,
-                                               int end,
-                                               const double* __restrict r,
-                                               const double* __restrict z,
-                                               double* __restrict fr_out,
-                                               double* __restrict fz_out,
-                                               double dt,
-                                               double scale,
-                                               bool stable_step,
-                                               ElementSums& sums) {
+// interval, 2^L f_int scattered.
+[[gnu::always_inline]] inline void element_loop_subcycled_body(const BodyParams& p,
+                                                               const ElementConstants& ec,
+                                                               ElementState& es,
+                                                               int begin,
+                                                               int end,
+                                                               const NodalArrays& x,
+                                                               double dt,
+                                                               double scale,
+                                                               bool stable_step,
+                                                               ElementSums& sums) {
+  const double* __restrict r = x.r;
+  const double* __restrict z = x.z;
+  double* __restrict fr_out = x.fr;
+  double* __restrict fz_out = x.fz;
   BlockLanes lanes;
   auto& [xr, xz, ur, uz, f_r, f_z] = lanes;
   const double inv_dt = 1.0 / dt;
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
-    const BlockNodes nd = block_nodes(es, e0);
+    const BlockNodes nd = block_nodes(ec, e0);
     for (int i = 0; i < 4; ++i) {
       const int* __restrict ni = nd[i];
       double* __restrict rp = es.r_prev[i].data() + e0;
@@ -309,14 +313,10 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
         zp[l] = zn;
       }
     }
-    const double omega_before = sums.omega_min;
-    const Block b = block_at(es, e0, nb, lanes, true);
-    if (stable_step) {
-      element_block<true, true>(p, b, dt, sums);
-    } else {
-      element_block<true, false>(p, b, dt, sums);
-    }
-    if (!(sums.omega_min > 0.0) && omega_before > 0.0) sums.bad_element = e0;
+    const Block b = block_at(ec, es, e0, nb, lanes, true);
+    const int inverted = stable_step ? element_block<true, true>(p, b, dt, sums)
+                                     : element_block<true, false>(p, b, dt, sums);
+    note_inverted(e0, inverted, sums);
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
       for (int i = 0; i < 4; ++i) {
@@ -328,8 +328,6 @@ CORLAB_SIMD_CLONES void element_loop_subcycled(const BodyParams& p,
   }
 }
 
-namespace {
-
 // The subcycled nodal update's pass over `count` nodes: node order[k] (kListed) or k
 // (contiguous). In the contiguous pass a node of scale above due_scale is not due: it has no
 // force (none of its elements updated) and a zero step.
@@ -338,17 +336,17 @@ template <bool kListed>
                                                            int count,
                                                            double due_scale) {
   const int* __restrict order = a.order;
-  double* __restrict pr = a.r;
-  double* __restrict pz = a.z;
-  double* __restrict pvr = a.vr;
-  double* __restrict pvz = a.vz;
-  double* __restrict pfr = a.fr;
-  double* __restrict pfz = a.fz;
-  const double* __restrict pm = a.m;
-  const double* __restrict pim = a.im;
-  const double* __restrict pfree_r = a.free_r;
-  const double* __restrict pfree_z = a.free_z;
-  const double* __restrict psph = a.sphere;
+  double* __restrict pr = a.x.r;
+  double* __restrict pz = a.x.z;
+  double* __restrict pvr = a.x.vr;
+  double* __restrict pvz = a.x.vz;
+  double* __restrict pfr = a.x.fr;
+  double* __restrict pfz = a.x.fz;
+  const double* __restrict pm = a.x.m;
+  const double* __restrict pim = a.x.im;
+  const double* __restrict pfree_r = a.x.free_r;
+  const double* __restrict pfree_z = a.x.free_z;
+  const double* __restrict psph = a.x.sphere;
   const double* __restrict pscale = a.scale;
   const double dt_avg = a.dt_avg;
   const double dt = a.step[0];
@@ -374,34 +372,32 @@ template <bool kListed>
   return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
 }
 
-}  // namespace
-
-// Subcycled nodal update (element_loop.hpp): listed nodes, each with its level's step.
-CORLAB_SIMD_CLONES NodeSums node_update_subcycled(const SubcycledNodes& a) {
+[[gnu::always_inline]] inline NodeSums node_update_subcycled_body(const SubcycledNodes& a) {
   return subcycled_node_pass<true>(a, a.count, 0.0);
 }
 
-// Subcycled nodal update over all nodes (element_loop.hpp): contiguous and vectorised.
-CORLAB_SIMD_CLONES NodeSums node_update_due(const SubcycledNodes& a, int nn, int due_level) {
+[[gnu::always_inline]] inline NodeSums node_update_due_body(const SubcycledNodes& a,
+                                                            int nn,
+                                                            int due_level) {
   return subcycled_node_pass<false>(a, nn, static_cast<double>(1 << due_level));
 }
 
-// Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
-// dt v^{n+1/2}, forces zeroed for the next assembly. Vectorised (simd reductions), cloned.
-CORLAB_SIMD_CLONES NodeSums node_update(int nn,
-                                        double dt,
-                                        double dt_avg,
-                                        double* __restrict pr,
-                                        double* __restrict pz,
-                                        double* __restrict pvr,
-                                        double* __restrict pvz,
-                                        double* __restrict pfr,
-                                        double* __restrict pfz,
-                                        const double* __restrict pm,
-                                        const double* __restrict pim,
-                                        const double* __restrict pfree_r,
-                                        const double* __restrict pfree_z,
-                                        const double* __restrict psph) {
+// Central-difference nodal update (element_loop.hpp), vectorised with simd reductions.
+[[gnu::always_inline]] inline NodeSums node_update_body(const NodalArrays& x,
+                                                        int nn,
+                                                        double dt,
+                                                        double dt_avg) {
+  double* __restrict pr = x.r;
+  double* __restrict pz = x.z;
+  double* __restrict pvr = x.vr;
+  double* __restrict pvz = x.vz;
+  double* __restrict pfr = x.fr;
+  double* __restrict pfz = x.fz;
+  const double* __restrict pm = x.m;
+  const double* __restrict pim = x.im;
+  const double* __restrict pfree_r = x.free_r;
+  const double* __restrict pfree_z = x.free_z;
+  const double* __restrict psph = x.sphere;
   double ke = 0.0, ke_sphere = 0.0, p_sphere = 0.0, mz_sphere = 0.0;
 #pragma omp simd reduction(+ : ke, ke_sphere, p_sphere, mz_sphere)
   for (int i = 0; i < nn; ++i) {
@@ -422,5 +418,45 @@ CORLAB_SIMD_CLONES NodeSums node_update(int nn,
   }
   return NodeSums{ke, ke_sphere, p_sphere, mz_sphere};
 }
+
+}  // namespace
+
+CORLAB_SIMD_VARIANTS(void,
+                     element_loop,
+                     (const BodyParams& p,
+                      const ElementConstants& ec,
+                      ElementState& es,
+                      int begin,
+                      int end,
+                      const NodalArrays& x,
+                      double dt,
+                      ElementSums& sums),
+                     (p, ec, es, begin, end, x, dt, sums))
+
+CORLAB_SIMD_VARIANTS(void,
+                     element_loop_subcycled,
+                     (const BodyParams& p,
+                      const ElementConstants& ec,
+                      ElementState& es,
+                      int begin,
+                      int end,
+                      const NodalArrays& x,
+                      double dt,
+                      double scale,
+                      bool stable_step,
+                      ElementSums& sums),
+                     (p, ec, es, begin, end, x, dt, scale, stable_step, sums))
+
+CORLAB_SIMD_VARIANTS(NodeSums, node_update_subcycled, (const SubcycledNodes& a), (a))
+
+CORLAB_SIMD_VARIANTS(NodeSums,
+                     node_update_due,
+                     (const SubcycledNodes& a, int nn, int due_level),
+                     (a, nn, due_level))
+
+CORLAB_SIMD_VARIANTS(NodeSums,
+                     node_update,
+                     (const NodalArrays& x, int nn, double dt, double dt_avg),
+                     (x, nn, dt, dt_avg))
 
 }  // namespace corlab::fem::solver

@@ -10,122 +10,145 @@
 #include <limits>
 #include <vector>
 
+#include "corlab/fem/kernels/bulk_viscosity.hpp"
 #include "corlab/fem/kernels/j2_plasticity.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
+#include "corlab/fem/solver/simd_level.hpp"
 
 namespace corlab::fem::solver {
 
-// Constant per-body parameters of the element loop.
+/// Constant per-body parameters of the element loop.
 struct BodyParams {
   J2Plasticity material;
-  double density = 0.0;     // [kg/m^3]
-  double wave_speed = 0.0;  // c_d [m/s]
-  double hourglass = 0.0;   // kappa [-]
-  double b1 = 0.0;
-  double b2 = 0.0;
+  double density = 0.0;     ///< [kg/m^3]
+  double wave_speed = 0.0;  ///< c_d [m/s]
+  double hourglass = 0.0;   ///< kappa [-]
+  double b1 = 0.0;          ///< linear bulk viscosity [-] (bulk_viscosity.hpp)
+  double b2 = 0.0;          ///< quadratic bulk viscosity [-]
+
+  /// Stable step [s] of an element of characteristic length `length` [m] at rest: with no
+  /// volumetric rate the bulk viscosity's damping ratio is its linear part alone.
+  double stable_step_at_rest(double length) const {
+    return element_stable_time_step(length, wave_speed,
+                                    bulk_viscous_damping_ratio(0.0, wave_speed, length, b1, b2));
+  }
 };
 
-// Structure-of-arrays element state, elements of one body contiguous.
-struct ElementState {
-  // Node i (0..3, counter-clockwise) of element e: corner[i][e]. One array per corner, so that a
-  // block's indices, and below its stored positions, are contiguous per corner: the gather into
-  // the lane arrays vectorises without the transposition an element-major layout needs.
+/// Constant per-element data of the element loop (part of the model), elements of one body
+/// contiguous.
+struct ElementConstants {
+  /// Node i (0..3, counter-clockwise) of element e: corner[i][e]. One array per corner, so that a
+  /// block's indices, and below its stored positions, are contiguous per corner: the gather into
+  /// the lane arrays vectorises without the transposition an element-major layout needs.
   std::array<std::vector<int>, 4> corner;
-  std::vector<double> srr, szz, stt, srz;  // Cauchy stress [Pa]
-  std::vector<double> eps_p;               // equivalent plastic strain [-]
-  std::vector<double> qr, qz;              // hourglass generalised forces [N]
-  // Subcycling only: position of node i at element e's last update, r_prev[i][e] [m].
-  std::array<std::vector<double>, 4> r_prev, z_prev;
-  std::vector<double> bv;  // viscous mean stress at each element's last update [Pa]
-  // Mass scaling: stable step / the physical one (density factor step_scale^2) [-].
+  /// Mass scaling: each element's stable step / its physical one (density x step_scale^2) [-].
   std::vector<double> step_scale;
-  // Sets the element nodes (n = nodes.size() elements) and sizes the element state.
-  void set_nodes(const std::vector<std::array<int, 4>>& nodes) {
-    const std::size_t n = nodes.size();
-    for (int i = 0; i < 4; ++i) {
-      corner[i].resize(n);
-      for (std::size_t e = 0; e < n; ++e) corner[i][e] = nodes[e][i];
-    }
-    resize(n);
+  /// Mesh index of each element (the solver sorts them by body and subcycling level).
+  std::vector<int> mesh_index;
+
+  int size() const { return static_cast<int>(step_scale.size()); }
+  std::array<int, 4> nodes(int e) const {
+    return {corner[0][e], corner[1][e], corner[2][e], corner[3][e]};
   }
+  /// Appends element `nodes` (mesh index `index`, step scale 1).
+  void push_back(const std::array<int, 4>& nodes, int index) {
+    for (int i = 0; i < 4; ++i) corner[i].push_back(nodes[i]);
+    step_scale.push_back(1.0);
+    mesh_index.push_back(index);
+  }
+};
+
+/// Mutable per-element state (part of the run's state), in the order of ElementConstants.
+struct ElementState {
+  std::vector<double> srr, szz, stt, srz;  ///< Cauchy stress [Pa]
+  std::vector<double> eps_p;               ///< equivalent plastic strain [-]
+  std::vector<double> qr, qz;              ///< hourglass generalised forces [N]
+  /// Subcycling only: position of node i at element e's last update, r_prev[i][e] [m].
+  std::array<std::vector<double>, 4> r_prev, z_prev;
+  std::vector<double> bv;  ///< subcycling only: viscous mean stress at the last update [Pa]
+
+  /// n elements at rest (no stress, strain or hourglass force).
   void resize(std::size_t n) {
-    step_scale.assign(n, 1.0);
     for (auto* v : {&srr, &szz, &stt, &srz, &eps_p, &qr, &qz}) v->assign(n, 0.0);
   }
 };
 
-// Per-step sums returned by the element loop.
-struct ElementSums {
-  double internal_work = 0.0;
-  double plastic_work = 0.0;
-  double hourglass_work = 0.0;
-  double viscous_work = 0.0;
-  double eps_p_max = 0.0;
-  double dt_min = std::numeric_limits<double>::infinity();
-  double omega_min = std::numeric_limits<double>::infinity();  // smallest volume or area
-  int bad_element = -1;  // first element of the block holding an inverted element
+/// The nodal arrays both nodal updates and the element loop work on: the state's kinematics and
+/// forces, the model's masses and constraints.
+struct NodalArrays {
+  double* r;  ///< positions [m]
+  double* z;
+  double* vr;  ///< velocities [m/s]
+  double* vz;
+  double* fr;  ///< forces being assembled [N] (subcycling: impulses / the mean base step)
+  double* fz;
+  const double* m;       ///< lumped masses [kg]
+  const double* im;      ///< their inverses [1/kg]
+  const double* free_r;  ///< 1 where the dof is free, 0 where fixed [-]
+  const double* free_z;
+  const double* sphere;  ///< 1 on sphere nodes, 0 elsewhere [-]
 };
 
-// Sums of the nodal update.
+/// Per-pass sums of the element loop.
+struct ElementSums {
+  double internal_work = 0.0;                                  ///< [J]
+  double plastic_work = 0.0;                                   ///< [J]
+  double hourglass_work = 0.0;                                 ///< [J]
+  double viscous_work = 0.0;                                   ///< [J]
+  double eps_p_max = 0.0;                                      ///< [-]
+  double dt_min = std::numeric_limits<double>::infinity();     ///< smallest stable step [s]
+  double omega_min = std::numeric_limits<double>::infinity();  ///< smallest volume or area
+  int bad_element = -1;  ///< the first element found inverted (sorted index), or -1
+};
+
+/// Sums of the nodal update.
 struct NodeSums {
-  double ke = 0.0;         // kinetic energy at t^n, product form [J]
-  double ke_sphere = 0.0;  // same, sphere nodes only [J]
-  double p_sphere = 0.0;   // sphere z-momentum at t^{n+1/2} [kg m/s]
-  double mz_sphere = 0.0;  // sum of m z over the sphere at t^{n+1} [kg m]
+  double ke = 0.0;         ///< kinetic energy at t^n, product form [J]
+  double ke_sphere = 0.0;  ///< same, sphere nodes only [J]
+  double p_sphere = 0.0;   ///< sphere z-momentum at t^{n+1/2} [kg m/s]
+  double mz_sphere = 0.0;  ///< sum of m z over the sphere at t^{n+1} [kg m]
 };
 
 /// One pass over the elements [begin, end) of one body (all with parameters `p`) at the nodal
-/// positions r, z [m] and velocities vr, vz [m/s]; fr_out/fz_out (nodal) receive -f_int [N].
-/// Stresses are updated at the mid-step geometry, forces and the stable step at x^{n+1}.
-void element_loop(const BodyParams& p,
+/// positions x.r, x.z [m] and velocities x.vr, x.vz [m/s]; x.fr/x.fz receive -f_int [N].
+/// Stresses are updated at the mid-step geometry, forces and the stable step at x^{n+1}. Runs
+/// the code compiled for `simd`.
+void element_loop(SimdLevel simd,
+                  const BodyParams& p,
+                  const ElementConstants& ec,
                   ElementState& es,
                   int begin,
                   int end,
-                  const double* __restrict r,
-                  const double* __restrict z,
-                  const double* __restrict vr,
-                  const double* __restrict vz,
-                  double* __restrict fr_out,
-                  double* __restrict fz_out,
+                  const NodalArrays& x,
                   double dt,
                   ElementSums& sums);
 
 /// element_loop for one subcycling level L (docs/theory/solver.md section 11): each element of
 /// [begin, end) steps over dt = 2^L x the base step from its stored positions (es.r_prev/z_prev,
-/// updated) to r, z (all its nodes are in sync); the rate is (x - x_prev) / dt. fr_out/fz_out
+/// updated) to x.r, x.z (all its nodes are in sync); the rate is (x - x_prev) / dt. x.fr/x.fz
 /// receive -scale f_int, scale = 2^L: the element's impulse in base-step units, applied to its
 /// nodes now (asynchronous variational integrator). stable_step: also sums.dt_min (else left
 /// infinite: a pass whose stable step is not used, most of them, skips its square roots).
-void element_loop_subcycled(const BodyParams& p,
+void element_loop_subcycled(SimdLevel simd,
+                            const BodyParams& p,
+                            const ElementConstants& ec,
                             ElementState& es,
                             int begin,
                             int end,
-                            const double* __restrict r,
-                            const double* __restrict z,
-                            double* __restrict fr_out,
-                            double* __restrict fz_out,
+                            const NodalArrays& x,
                             double dt,
                             double scale,
                             bool stable_step,
                             ElementSums& sums);
 
-/// Arrays of the subcycled nodal update.
+/// What the subcycled nodal update needs beyond the nodal arrays.
 struct SubcycledNodes {
-  const int* order;     // node indices to update
-  int count;            // how many
-  const double* step;   // step of each level [s]
-  const double* scale;  // 2^level of each node [-]
-  double dt_avg;        // mean of the base steps before and after now [s]
-  double* r;
-  double* z;
-  double* vr;
-  double* vz;
-  double* fr;  // impulses / dt_avg [N] (zeroed)
-  double* fz;
-  const double* m;
-  const double* im;
-  const double* free_r;
-  const double* free_z;
-  const double* sphere;
+  NodalArrays x;
+  const int* order;     ///< node indices to update
+  int count;            ///< how many
+  const double* step;   ///< step of each level [s]
+  const double* scale;  ///< 2^level of each node [-]
+  double dt_avg;        ///< mean of the base steps before and after now [s]
 };
 
 /// Subcycled nodal update of the listed nodes (those due now): kick v += dt_avg f/m (f: the
@@ -133,28 +156,15 @@ struct SubcycledNodes {
 /// node's own step h = step[level]. Sums: kinetic energy in product form, sphere momentum after
 /// the kick, sum m z before the drift (the whole model's when all nodes are due: a major-cycle
 /// boundary).
-NodeSums node_update_subcycled(const SubcycledNodes& a);
+NodeSums node_update_subcycled(SimdLevel simd, const SubcycledNodes& a);
 
 /// The same over all nn nodes in index order (a.order unused), vectorised: the nodes of level <=
 /// due_level are due; the others have no force (none of their elements updated) and do not move.
 /// Faster than the listed update when most nodes are due.
-NodeSums node_update_due(const SubcycledNodes& a, int nn, int due_level);
+NodeSums node_update_due(SimdLevel simd, const SubcycledNodes& a, int nn, int due_level);
 
-/// Central-difference nodal update: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free, x^{n+1} = x^n +
-/// dt v^{n+1/2}, forces zeroed for the next assembly; dt, dt_avg [s].
-NodeSums node_update(int nn,
-                     double dt,
-                     double dt_avg,
-                     double* __restrict pr,
-                     double* __restrict pz,
-                     double* __restrict pvr,
-                     double* __restrict pvz,
-                     double* __restrict pfr,
-                     double* __restrict pfz,
-                     const double* __restrict pm,
-                     const double* __restrict pim,
-                     const double* __restrict pfree_r,
-                     const double* __restrict pfree_z,
-                     const double* __restrict psph);
+/// Central-difference nodal update of the nn nodes: v^{n+1/2} = (v^{n-1/2} + dt_avg f/m) x free,
+/// x^{n+1} = x^n + dt v^{n+1/2}, forces zeroed for the next assembly; dt, dt_avg [s].
+NodeSums node_update(SimdLevel simd, const NodalArrays& x, int nn, double dt, double dt_avg);
 
 }  // namespace corlab::fem::solver

@@ -10,15 +10,18 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "corlab/fem/output/field_snapshot.hpp"
 #include "corlab/fem/solver/run_quality.hpp"
 #include "corlab/fem/solver/separation_rule.hpp"
+#include "corlab/fem/solver/simd_level.hpp"
 #include "fem/solver/impact_model.hpp"
 #include "fem/solver/impact_state.hpp"
 #include "fem/solver/impact_step.hpp"
+#include "fem/solver/run_bookkeeping.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -27,28 +30,13 @@ using solver::ForceReport;
 using solver::ImpactModel;
 using solver::ImpactState;
 using solver::NodeSums;
+using solver::RunBookkeeping;
 
 /// The run stops as step_collapsed when dt falls below this fraction of the first step [-].
 constexpr double kMinStepFraction = 1e-6;
 /// Cancellation and progress are polled every kPollEvery steps (a power of two).
 constexpr long long kPollEvery = 256;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-/// Appends one history row (state at t^n; ke from the kinematic half of the step).
-void record_history(
-    const ImpactState& s, double ke, double v_half_mean, double balance, ImpactHistory& h) {
-  h.time.push_back(s.t);
-  h.contact_force.push_back(s.force);
-  h.indentation.push_back(s.indentation);
-  h.sphere_velocity.push_back(-v_half_mean);
-  h.kinetic_energy.push_back(ke);
-  h.strain_energy.push_back(s.energy.internal - s.energy.plastic);
-  h.plastic_dissipation.push_back(s.energy.plastic);
-  h.hourglass_energy.push_back(s.energy.hourglass);
-  h.viscous_dissipation.push_back(s.energy.viscous);
-  h.contact_energy.push_back(s.energy.contact);
-  h.energy_balance_error.push_back(balance);
-}
 
 FieldSnapshot snapshot(const ImpactModel& m, const Mesh& mesh, const ImpactState& s, double t) {
   FieldSnapshot f;
@@ -70,7 +58,7 @@ FieldSnapshot snapshot(const ImpactModel& m, const Mesh& mesh, const ImpactState
   const auto& es = s.elements;
   for (int e = 0; e < m.n_elements; ++e) {
     const AxisymTensor st{es.srr[e], es.szz[e], es.stt[e], es.srz[e]};
-    const int k = m.original_element[e];
+    const int k = m.elements.mesh_index[e];
     f.von_mises[k] = von_mises(st);
     f.pressure[k] = -trace(st) / 3.0;
     f.plastic_strain[k] = es.eps_p[e];
@@ -119,12 +107,13 @@ ImpactResult finish(const ImpactModel& m,
   res.energy_hourglass = s.energy.hourglass;
   res.energy_viscous = s.energy.viscous;
   res.energy_balance_error = balance_max;
-  res.hysteresis_area = s.hysteresis;
+  res.hysteresis_area = s.hysteresis.area;
   res.force_max = s.force_max;
-  res.indentation_max = s.indentation_max;
+  res.indentation_max = s.hysteresis.indentation_max;
   res.penetration_max = s.penetration_max;
   res.substrate_von_mises_max = substrate_von_mises_max(m, s);
   res.steps = s.step;
+  res.element_updates = s.element_updates;
   res.end_time = s.t;
   if (status != RunStatus::kNonFinite && !std::isfinite(res.energy_sphere_loss)) {
     res.status = RunStatus::kNonFinite;
@@ -167,8 +156,9 @@ std::string status_detail(RunStatus status,
   return {};
 }
 
-/// The time loop of one run: steps the state until a status ends it, keeping the energy
-/// balance, the history, field snapshots, progress and cancel polling.
+/// The time loop of one run: steps the state until a status ends it, with the run's
+/// bookkeeping (energy balance, history, stop rule), field snapshots, progress and cancel
+/// polling. One driver per stepping scheme; what they keep, they keep through RunBookkeeping.
 class TimeLoop {
  public:
   TimeLoop(const ImpactConfig& config,
@@ -181,11 +171,9 @@ class TimeLoop {
         control_(control),
         m_(m),
         s_(s),
-        history_(history),
-        rule_(m.t_wave, m.velocity),
+        book_(m, control.stop_at_max_compression, history),
         field_times_(config.output.field_times),
         every_(config.output.history_every),
-        v_com_prev_(s.sphere_velocity),
         t_boundary_(s.t) {
     std::sort(field_times_.begin(), field_times_.end());
   }
@@ -194,54 +182,73 @@ class TimeLoop {
   RunStatus run() {
     // A run cancelled before it starts does no work (the loop polls only every kPollEvery steps).
     if (cancelled()) return RunStatus::kCancelled;
-    if (m_.levels.max_level > 0) return run_subcycled();
-    while (true) {
-      if (auto end = kinematic_half()) return *end;
-      if (auto end = force_half()) return *end;
-      if (auto end = after_step()) return *end;
-    }
+    return m_.levels.max_level > 0 ? run_subcycled() : run_plain();
   }
 
-  const SeparationRule& rule() const { return rule_; }
+  const RunBookkeeping& bookkeeping() const { return book_; }
   const ForceReport& last_forces() const { return rep_; }
-  double balance_max() const { return balance_max_; }
 
  private:
   bool cancelled() const {
     return control_.cancel != nullptr && control_.cancel->load(std::memory_order_relaxed);
   }
 
-  /// Velocities and positions, then the energy balance at t^n (kinetic energy in product form,
-  /// exact for the scheme) and the history row.
-  std::optional<RunStatus> kinematic_half() {
-    const double dt_avg = 0.5 * (s_.dt_prev + s_.dt);
-    const NodeSums ns = solver::move_nodes(m_, s_);
-    const double v_half_mean = 0.5 * (s_.sphere_velocity + v_com_prev_);
-    v_com_prev_ = s_.sphere_velocity;
-    const double total =
-        ns.ke + s_.energy.internal + s_.energy.hourglass + s_.energy.viscous + s_.energy.contact;
-    const double balance = (total - m_.energy_initial) / m_.energy_initial;
-    if (!std::isfinite(balance)) {
-      balance_max_ = kNaN;
-      return RunStatus::kNonFinite;
+  /// The plain loop: the energy balance and history at t^n between the kinematic and the force
+  /// half, the stop rule after the force half.
+  RunStatus run_plain() {
+    while (true) {
+      const double dt_avg = 0.5 * (s_.dt_prev + s_.dt);
+      const NodeSums ns = solver::move_nodes(m_, s_);
+      if (auto end = book_.sample(s_, ns.ke - s_.transit.energy, s_.step % every_ == 0)) {
+        return *end;
+      }
+      rep_ = solver::compute_forces(m_, s_);
+      if (auto end = step_failed()) return *end;
+      if (auto end = book_.stop(s_, ns.ke_sphere, dt_avg, s_.dt_prev, rep_.penetrating)) {
+        return *end;
+      }
+      if (auto end = after_step()) return *end;
     }
-    balance_max_ = std::max(balance_max_, std::abs(balance));
-    if (s_.step % every_ == 0) record_history(s_, ns.ke, v_half_mean, balance, history_);
-    rule_.accumulate(ns.ke_sphere, dt_avg);
-    return std::nullopt;
   }
 
-  /// Element and contact forces, then the stop rule.
-  std::optional<RunStatus> force_half() {
-    rep_ = solver::compute_forces(m_, s_);
+  /// The subcycled loop (docs/theory/solver.md section 11): the energy balance, history and stop
+  /// rule at major-cycle boundaries, where every node and element is in sync.
+  RunStatus run_subcycled() {
+    const long long cycle = 1LL << m_.levels.max_level;
+    const long long rows_every = std::max<long long>(1, every_ / cycle);
+    while (true) {
+      const bool boundary = s_.step % cycle == 0;
+      const NodeSums ns = solver::move_nodes_subcycled(m_, s_);
+      if (boundary) {
+        if (auto end = cycle_boundary(ns, (s_.step / cycle) % rows_every == 0)) return *end;
+      }
+      rep_ = solver::compute_forces_subcycled(m_, s_);
+      if (auto end = step_failed()) return *end;
+      if (s_.step % cycle == 0) {
+        if (auto end = after_step()) return *end;
+      } else if (s_.t >= m_.t_max || s_.step >= m_.max_steps) {
+        return s_.t >= m_.t_max ? RunStatus::kNotSeparated : RunStatus::kStepBudgetExceeded;
+      }
+    }
+  }
+
+  /// At a major-cycle boundary t^k: energy balance and history row, then the stop rule over the
+  /// cycle that ended (none at the start).
+  std::optional<RunStatus> cycle_boundary(const NodeSums& ns, bool row) {
+    const double cycle_dt = s_.t - t_boundary_;
+    t_boundary_ = s_.t;
+    if (auto end = book_.sample(s_, ns.ke - s_.transit.energy, row)) return end;
+    if (s_.step == 0) return std::nullopt;
+    const bool penetrating = s_.cycle_penetrating;
+    const double since = penetrating ? s_.t - s_.t_first_penetrating : cycle_dt;
+    s_.cycle_penetrating = false;
+    return book_.stop(s_, ns.ke_sphere, cycle_dt, since, penetrating);
+  }
+
+  /// An inverted element or a collapsed step after a force half.
+  std::optional<RunStatus> step_failed() const {
     if (rep_.inverted_element >= 0) return RunStatus::kElementInverted;
     if (!(s_.dt > kMinStepFraction * m_.dt_initial)) return RunStatus::kStepCollapsed;
-    const auto decision = rule_.update(s_.t, s_.dt_prev, rep_.penetrating, s_.sphere_velocity);
-    if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
-    if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
-    if (control_.stop_at_max_compression && rule_.touched() && s_.sphere_velocity >= 0.0) {
-      return RunStatus::kMaxCompression;
-    }
     return std::nullopt;
   }
 
@@ -263,69 +270,15 @@ class TimeLoop {
     return std::nullopt;
   }
 
-  /// The subcycled loop (docs/theory/solver.md section 11): the energy balance, history and stop
-  /// rule at major-cycle boundaries, where every node and element is in sync.
-  RunStatus run_subcycled() {
-    const long long cycle = 1LL << m_.levels.max_level;
-    const long long rows_every = std::max<long long>(1, every_ / cycle);
-    while (true) {
-      const bool boundary = s_.step % cycle == 0;
-      const NodeSums ns = solver::move_nodes_subcycled(m_, s_);
-      if (boundary) {
-        if (auto end = cycle_boundary(ns, (s_.step / cycle) % rows_every == 0)) return *end;
-      }
-      rep_ = solver::compute_forces_subcycled(m_, s_);
-      if (rep_.inverted_element >= 0) return RunStatus::kElementInverted;
-      if (!(s_.dt > kMinStepFraction * m_.dt_initial)) return RunStatus::kStepCollapsed;
-      if (s_.step % cycle == 0) {
-        if (auto end = after_step()) return *end;
-      } else if (s_.t >= m_.t_max || s_.step >= m_.max_steps) {
-        return s_.t >= m_.t_max ? RunStatus::kNotSeparated : RunStatus::kStepBudgetExceeded;
-      }
-    }
-  }
-
-  /// At a major-cycle boundary t^k: energy balance, history row, stop rule (contact over the
-  /// cycle that ended; the sphere's momentum before the nodes' update).
-  std::optional<RunStatus> cycle_boundary(const NodeSums& ns, bool row) {
-    const double cycle_dt = s_.t - t_boundary_;
-    t_boundary_ = s_.t;
-    const double v_mean = 0.5 * (s_.sphere_velocity + v_com_prev_);
-    v_com_prev_ = s_.sphere_velocity;
-    const double total = ns.ke - s_.transit.energy + s_.energy.internal + s_.energy.hourglass +
-                         s_.energy.viscous + s_.energy.contact;
-    const double balance = (total - m_.energy_initial) / m_.energy_initial;
-    if (!std::isfinite(balance)) {
-      balance_max_ = kNaN;
-      return RunStatus::kNonFinite;
-    }
-    balance_max_ = std::max(balance_max_, std::abs(balance));
-    if (row) record_history(s_, ns.ke - s_.transit.energy, v_mean, balance, history_);
-    if (s_.step == 0) return std::nullopt;
-    rule_.accumulate(ns.ke_sphere, cycle_dt);
-    const double since = s_.cycle_penetrating ? s_.t - s_.t_first_penetrating : cycle_dt;
-    const auto decision = rule_.update(s_.t, since, s_.cycle_penetrating, s_.sphere_velocity);
-    s_.cycle_penetrating = false;
-    if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
-    if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
-    if (control_.stop_at_max_compression && rule_.touched() && s_.sphere_velocity >= 0.0) {
-      return RunStatus::kMaxCompression;
-    }
-    return std::nullopt;
-  }
-
   const Mesh& mesh_;
   const SimulationControl& control_;
   const ImpactModel& m_;
   ImpactState& s_;
-  ImpactHistory& history_;
-  SeparationRule rule_;
+  RunBookkeeping book_;
   std::vector<double> field_times_;
   std::size_t next_field_ = 0;
   int every_;
-  double v_com_prev_;
   double t_boundary_ = 0.0;  ///< time of the last major-cycle boundary (subcycling) [s]
-  double balance_max_ = 0.0;
   ForceReport rep_;
 };
 
@@ -342,23 +295,22 @@ ImpactResult run_impact(const ImpactConfig& config,
   res.elements = m.n_elements;
   res.nodes = m.n_nodes;
   res.time_step = m.dt_initial;
-  res.mass_scaling = m.mass_scaling * m.step_floor_scale;
-  res.added_mass_fraction = m.added_mass / m.sphere_mass_physical;
+  res.mass_scaling = m.scaling.factor * m.scaling.step_floor_scale;
+  res.added_mass_fraction = m.scaling.added_mass / m.scaling.sphere_mass_physical;
+  res.simd = std::string(to_string(m.simd));
   res.h_contact =
       std::hypot(s.r[m.masters[1]] - s.r[m.masters[0]], s.z[m.masters[1]] - s.z[m.masters[0]]);
   res.energy_initial = m.energy_initial;
 
   TimeLoop loop(config, mesh, control, m, s, res.history);
   const RunStatus status = loop.run();
-  res = finish(m, s, loop.rule(), status, loop.balance_max(), z_axis_surface, std::move(res));
+  const RunBookkeeping& book = loop.bookkeeping();
+  res = finish(m, s, book.rule(), status, book.balance_max(), z_axis_surface, std::move(res));
   if (res.status != RunStatus::kSeparated && res.status_detail.empty()) {
     res.status_detail = status_detail(res.status, m, s, loop.last_forces(), s.sphere_velocity);
   }
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  const double element_steps =
-      m.levels.max_level > 0 ? static_cast<double>(s.element_steps)
-                             : static_cast<double>(m.n_elements) * static_cast<double>(s.step);
-  res.element_steps_per_s = element_steps / res.wall_s;
+  res.element_steps_per_s = static_cast<double>(s.element_updates) / res.wall_s;
   if (control.progress) control.progress(1.0);
   return res;
 }

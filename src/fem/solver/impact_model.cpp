@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -100,15 +101,12 @@ void set_nodes(const ImpactConfig& config, const Mesh& mesh, ImpactModel& m) {
 
 /// Elements sorted by body (sphere first), so that each body's loop runs over one range.
 void sort_elements(const Mesh& mesh, ImpactModel& m) {
-  m.element_nodes.clear();
-  m.original_element.clear();
+  m.elements = ElementConstants{};
   for (const Body want : {Body::kSphere, Body::kSubstrate}) {
     for (int e = 0; e < m.n_elements; ++e) {
-      if (mesh.element_body[e] != want) continue;
-      m.element_nodes.push_back(mesh.quads[e]);
-      m.original_element.push_back(e);
+      if (mesh.element_body[e] == want) m.elements.push_back(mesh.quads[e], e);
     }
-    if (want == Body::kSphere) m.n_sphere_elements = static_cast<int>(m.element_nodes.size());
+    if (want == Body::kSphere) m.n_sphere_elements = m.elements.size();
   }
 }
 
@@ -130,12 +128,12 @@ ElementMasses element_masses(const ImpactModel& m) {
   for (int e = 0; e < m.n_elements; ++e) {
     const Quad4Geometry g = initial_geometry(m, e);
     if (!(g.area > 0.0 && g.omega > 0.0)) {
-      throw_invalid("mesh element", m.original_element[e],
+      throw_invalid("mesh element", m.elements.mesh_index[e],
                     "counter-clockwise with positive area and volume");
     }
-    const BodyParams& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
+    const BodyParams& p = m.body_of(e);
     em.mass[e] = p.density * kTwoPi * g.omega;
-    em.step[e] = element_stable_time_step(characteristic_length(g), p.wave_speed, p.b1);
+    em.step[e] = physical_element_step(m, e);
     em.step_min = std::min(em.step_min, em.step[e]);
     if (e < m.n_sphere_elements) em.sphere_mass += em.mass[e];
   }
@@ -165,7 +163,7 @@ std::vector<char> contact_zone_elements(const ImpactConfig& config, const Impact
   }
   std::vector<char> at(m.n_elements, 0);
   for (int e = 0; e < m.n_elements; ++e) {
-    for (int n : m.element_nodes[e]) at[e] = static_cast<char>(at[e] | zone_node[n]);
+    for (int n : m.elements.nodes(e)) at[e] = static_cast<char>(at[e] | zone_node[n]);
   }
   return at;
 }
@@ -195,7 +193,7 @@ double contact_square_step(const ImpactModel& m) {
   const double h = std::hypot(m.r0[b] - m.r0[a], m.z0[b] - m.z0[a]);
   double step = std::numeric_limits<double>::infinity();
   for (const BodyParams* p : {&m.sphere, &m.substrate}) {
-    step = std::min(step, element_stable_time_step(h / std::sqrt(2.0), p->wave_speed, p->b1));
+    step = std::min(step, p->stable_step_at_rest(h / std::sqrt(2.0)));
   }
   return step;
 }
@@ -258,20 +256,20 @@ void set_masses(const ImpactConfig& config, ImpactModel& m) {
   ElementMasses em = element_masses(m);
   em.at_contact = contact_zone_elements(config, m);
   em.step_floor = step_floor(config.solver, m, em);
-  m.dt_critical_physical = em.step_min;
-  m.step_floor_scale = em.step_floor / em.step_min;
-  m.mass_scaling = mass_scaling_factor(config, em);
-  m.sphere_mass_physical = em.sphere_mass;
+  MassScaling& ms = m.scaling;
+  ms.dt_critical_physical = em.step_min;
+  ms.step_floor_scale = em.step_floor / em.step_min;
+  ms.factor = mass_scaling_factor(config, em);
+  ms.sphere_mass_physical = em.sphere_mass;
+  ms.physical_mass.assign(m.n_nodes, 0.0);
+  ms.added_mass = added_mass(em, ms.factor);
   m.mass.assign(m.n_nodes, 0.0);
-  m.physical_mass.assign(m.n_nodes, 0.0);
-  m.step_scale.assign(m.n_elements, 1.0);
-  m.added_mass = added_mass(em, m.mass_scaling);
   m.dt_critical = std::numeric_limits<double>::infinity();
   for (int e = 0; e < m.n_elements; ++e) {
-    for (int n : m.element_nodes[e]) m.physical_mass[n] += em.mass[e] / 4.0;
-    const double s = element_step_scale(em, static_cast<std::size_t>(e), m.mass_scaling);
-    m.step_scale[e] = s;
-    for (int n : m.element_nodes[e]) m.mass[n] += s * s * em.mass[e] / 4.0;
+    for (int n : m.elements.nodes(e)) ms.physical_mass[n] += em.mass[e] / 4.0;
+    const double s = element_step_scale(em, static_cast<std::size_t>(e), ms.factor);
+    m.elements.step_scale[e] = s;
+    for (int n : m.elements.nodes(e)) m.mass[n] += s * s * em.mass[e] / 4.0;
     m.dt_critical = std::min(m.dt_critical, s * em.step[e]);
   }
   m.inv_mass.assign(m.n_nodes, 0.0);
@@ -299,11 +297,12 @@ void set_penalties(const SolverConfig& sc, ImpactModel& m) {
     // was scaled less than the step (away from the contact) so that it stays stable.
     // The cap allows the step floor's share (step_floor): the physical penalty of an unscaled
     // node at the longer step.
-    const double m_master_physical = (1.0 - xi) * m.physical_mass[a] + xi * m.physical_mass[b];
-    m.penalty[s] = std::min(penalty_stiffness(sc.penalty_scale, m.physical_mass[i],
-                                              m_master_physical, m.dt_critical_physical),
+    const MassScaling& ms = m.scaling;
+    const double m_master_physical = (1.0 - xi) * ms.physical_mass[a] + xi * ms.physical_mass[b];
+    m.penalty[s] = std::min(penalty_stiffness(sc.penalty_scale, ms.physical_mass[i],
+                                              m_master_physical, ms.dt_critical_physical),
                             penalty_stiffness(sc.penalty_scale, m.mass[i], m_master,
-                                              m.dt_critical / m.step_floor_scale));
+                                              m.dt_critical / ms.step_floor_scale));
   }
 }
 
@@ -327,13 +326,17 @@ void set_time_scales(const ImpactConfig& config, ImpactModel& m) {
 }  // namespace
 
 Quad4Geometry initial_geometry(const ImpactModel& m, int e) {
-  const auto& nd = m.element_nodes[e];
+  const std::array<int, 4> nd = m.elements.nodes(e);
   double xr[4], xz[4];
   for (int i = 0; i < 4; ++i) {
     xr[i] = m.r0[nd[i]];
     xz[i] = m.z0[nd[i]];
   }
   return quad4_geometry(xr, xz);
+}
+
+double physical_element_step(const ImpactModel& m, int e) {
+  return m.body_of(e).stable_step_at_rest(characteristic_length(initial_geometry(m, e)));
 }
 
 ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
@@ -351,6 +354,7 @@ ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
   set_penalties(config.solver, m);
   set_levels(config.solver, m);
   set_time_scales(config, m);
+  m.simd = simd_level();
   return m;
 }
 
@@ -363,8 +367,8 @@ void init_subcycling(const ImpactModel& m, ImpactState& s) {
     es.r_prev[i].resize(ne);
     es.z_prev[i].resize(ne);
     for (std::size_t e = 0; e < ne; ++e) {
-      es.r_prev[i][e] = m.r0[m.element_nodes[e][i]];
-      es.z_prev[i][e] = m.z0[m.element_nodes[e][i]];
+      es.r_prev[i][e] = m.r0[m.elements.corner[i][e]];
+      es.z_prev[i][e] = m.z0[m.elements.corner[i][e]];
     }
   }
   s.level_dt_min.fill(std::numeric_limits<double>::infinity());
@@ -382,8 +386,7 @@ ImpactState make_initial_state(const ImpactModel& m) {
   }
   s.fr.assign(m.n_nodes, 0.0);
   s.fz.assign(m.n_nodes, 0.0);
-  s.elements.set_nodes(m.element_nodes);
-  s.elements.step_scale = m.step_scale;
+  s.elements.resize(static_cast<std::size_t>(m.n_elements));
   s.cursor.resize(m.slaves.size());
   for (std::size_t k = 0; k < m.slaves.size(); ++k) {
     s.cursor[k] = initial_segment(m.r0.data(), m.masters, m.r0[m.slaves[k]]);

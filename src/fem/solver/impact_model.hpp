@@ -46,12 +46,26 @@ struct SubcyclingLevels {
   std::array<std::vector<int>, kMaxSubcyclingLevels> interface_nodes;
 };
 
+/// Mass scaling (docs/theory/solver.md section 12): what it changed and by how much. The
+/// per-element step scales are in ImpactModel::elements.step_scale.
+struct MassScaling {
+  double factor = 1.0;  ///< the factor F (power of two; 1 = none) [-]
+  /// Step floor: the elements' smallest step after scaling the ones below the contact's
+  /// h-squares, / the smallest physical one (1 = none) [-].
+  double step_floor_scale = 1.0;
+  double dt_critical_physical = 0.0;  ///< smallest physical element stable step at the start [s]
+  std::vector<double> physical_mass;  ///< lumped masses without the scaling [kg]
+  double added_mass = 0.0;            ///< mass added by the scaling, both bodies [kg]
+  double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
+};
+
 struct ImpactModel {
   int n_nodes = 0;
   int n_elements = 0;
-  int n_sphere_elements = 0;                      ///< elements [0, n) are the sphere's
-  std::vector<std::array<int, 4>> element_nodes;  ///< sphere elements first, then substrate
-  std::vector<int> original_element;              ///< mesh index of each (sorted) element
+  int n_sphere_elements = 0;  ///< elements [0, n) are the sphere's
+  /// Connectivity, step scales and mesh indices, sphere elements first, then the substrate's
+  /// (each body sorted by subcycling level).
+  ElementConstants elements;
   BodyParams sphere;
   BodyParams substrate;
   std::vector<double> r0, z0;          ///< nodal positions at the start (sphere at contact) [m]
@@ -74,21 +88,19 @@ struct ImpactModel {
   double z_com_start = 0.0;            ///< sphere c.o.m. height at the start [m]
   long long max_steps = 0;             ///< step budget (solver.max_steps)
   SubcyclingLevels levels;             ///< all 0 unless solver.subcycling_levels > 0
-  /// Mass scaling (docs/theory/solver.md section 12): each (sorted) element's stable step is
-  /// step_scale x its physical one, its density step_scale^2 x the material's [-].
-  std::vector<double> step_scale;
-  std::vector<double> physical_mass;  ///< lumped masses without the scaling [kg]
-  double mass_scaling = 1.0;          ///< the factor F (power of two; 1 = none) [-]
-  /// Step floor (docs/theory/solver.md section 12): the elements' smallest step after scaling
-  /// the ones below the contact's h-squares, / the smallest physical one (1 = none) [-].
-  double step_floor_scale = 1.0;
-  double dt_critical_physical = 0.0;  ///< smallest physical element stable step at the start [s]
-  double added_mass = 0.0;            ///< mass added by the scaling, both bodies [kg]
-  double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
+  MassScaling scaling;                 ///< factor 1 and no floor unless solver.mass_scaling_max > 1
+  SimdLevel simd = SimdLevel::kBaseline;  ///< the hot loops' instruction set (simd_level.hpp)
+
+  /// The parameters of the body element e (sorted index) belongs to.
+  const BodyParams& body_of(int e) const { return e < n_sphere_elements ? sphere : substrate; }
 };
 
 /// Geometry of (sorted) element e at the start positions.
 Quad4Geometry initial_geometry(const ImpactModel& m, int e);
+
+/// Physical stable step [s] of (sorted) element e at the start positions and at rest, without
+/// mass scaling (the model's own step is elements.step_scale[e] times this).
+double physical_element_step(const ImpactModel& m, int e);
 
 /// Builds the model from a config that passed validate() (simulate() checks it); throws
 /// InputError for an invalid mesh (named field).

@@ -4,6 +4,7 @@
 /// stresses, contact cursors, time, and the running energy and response sums. One step
 /// (impact_step.hpp) maps a state to the next.
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -22,6 +23,22 @@ struct EnergySums {
   double contact = 0.0;    ///< penalty energy stored now
 };
 
+/// The trapezoidal integral of F d(delta) over the sampled (force, indentation) pairs: the
+/// force-indentation loop's area, the energy the sphere left in the substrate.
+struct HysteresisLoop {
+  double force = 0.0;            ///< contact force at the last sample [N]
+  double indentation = 0.0;      ///< sphere c.o.m. displacement since the start then [m]
+  double area = 0.0;             ///< integral of F d(indentation) so far [J]
+  double indentation_max = 0.0;  ///< [m]
+
+  void sample(double f, double delta) {
+    area += 0.5 * (force + f) * (delta - indentation);
+    force = f;
+    indentation = delta;
+    indentation_max = std::max(indentation_max, delta);
+  }
+};
+
 struct ImpactState {
   std::vector<double> r, z;    ///< nodal positions [m]
   std::vector<double> vr, vz;  ///< nodal velocities at the last half step [m/s]
@@ -33,23 +50,20 @@ struct ImpactState {
   double dt_prev = 0.0;     ///< last step [s] (0 before the first)
   long long step = 0;
   EnergySums energy;
-  double eps_p_max = 0.0;        ///< largest equivalent plastic strain so far [-]
-  double force = 0.0;            ///< contact force on the sphere, + up [N]
-  double indentation = 0.0;      ///< sphere c.o.m. displacement since the start [m]
-  double hysteresis = 0.0;       ///< integral of F d(indentation) [J]
-  double force_max = 0.0;        ///< [N]
-  double indentation_max = 0.0;  ///< [m]
-  double penetration_max = 0.0;  ///< deepest slave penetration [m]
-  double sphere_velocity = 0.0;  ///< sphere c.o.m. velocity at the last half step, + up [m/s]
-  double sphere_com_z = 0.0;     ///< sphere c.o.m. height at the newest positions [m]
+  double eps_p_max = 0.0;         ///< largest equivalent plastic strain so far [-]
+  double force = 0.0;             ///< contact force on the sphere now, + up [N]
+  double force_max = 0.0;         ///< [N]
+  HysteresisLoop hysteresis;      ///< sampled each step (subcycling: each major cycle)
+  double penetration_max = 0.0;   ///< deepest slave penetration [m]
+  double sphere_velocity = 0.0;   ///< sphere c.o.m. velocity at the last half step, + up [m/s]
+  double sphere_com_z = 0.0;      ///< sphere c.o.m. height at the newest positions [m]
+  long long element_updates = 0;  ///< element updates done (with subcycling < elements x steps)
   // Subcycling only (model.levels.max_level > 0; docs/theory/solver.md section 11): fr/fz then
   // hold the 2^L-weighted forces of the elements due at each node's next update.
   /// Smallest stable step / 2^L over the elements of level L at their latest update [s].
   std::array<double, kMaxSubcyclingLevels + 1> level_dt_min{};
   bool cycle_penetrating = false;    ///< any slave in contact during this major cycle
   double t_first_penetrating = 0.0;  ///< start of the cycle's first step in contact [s]
-  double hysteresis_force = 0.0;     ///< contact force at the last major-cycle boundary [N]
-  long long element_steps = 0;       ///< element updates done [-]
   TransitLedger transit;             ///< energy in transit between levels
 };
 

@@ -11,13 +11,13 @@
 namespace corlab::fem::solver {
 namespace {
 
-/// Node-to-segment penalty contact at x^{n+1}: forces into fr/fz, the stored penalty energy, the
-/// total force on the sphere and the deepest penetration.
-bool apply_contact(
-    const ImpactModel& m, ImpactState& s, double* fr, double* fz, double& force, double& energy) {
+/// Node-to-segment penalty contact at the newest positions: forces into the state's fr/fz, the
+/// stored penalty energy, the contact force on the sphere (s.force, s.force_max) and the deepest
+/// penetration. Returns whether any slave penetrates.
+bool apply_contact(const ImpactModel& m, ImpactState& s) {
   bool penetrating = false;
-  force = 0.0;
-  energy = 0.0;
+  double force = 0.0;
+  double energy = 0.0;
   for (std::size_t k = 0; k < m.slaves.size(); ++k) {
     const int i = m.slaves[k];
     const ContactCandidate c =
@@ -26,11 +26,15 @@ bool apply_contact(
     if (!c.active) continue;
     const int a = m.masters[c.segment];
     const int b = m.masters[c.segment + 1];
-    energy += penalty_force(c.projection, m.penalty[k], fr[i], fz[i], fr[a], fz[a], fr[b], fz[b]);
+    energy += penalty_force(c.projection, m.penalty[k], s.fr[i], s.fz[i], s.fr[a], s.fz[a], s.fr[b],
+                            s.fz[b]);
     force += -m.penalty[k] * c.projection.gap * c.projection.nz;
     s.penetration_max = std::max(s.penetration_max, -c.projection.gap);
     penetrating = true;
   }
+  s.energy.contact = energy;
+  s.force = force;
+  s.force_max = std::max(s.force_max, force);
   return penetrating;
 }
 
@@ -38,7 +42,7 @@ bool apply_contact(
 /// element into the report (its mesh index).
 void record_element_sums(const ImpactModel& m, ImpactState& s, ForceReport& rep) {
   const ElementSums& sums = rep.elements;
-  if (sums.bad_element >= 0) rep.inverted_element = m.original_element[sums.bad_element];
+  if (sums.bad_element >= 0) rep.inverted_element = m.elements.mesh_index[sums.bad_element];
   s.energy.internal += sums.internal_work;
   s.energy.plastic += sums.plastic_work;
   s.energy.hourglass += sums.hourglass_work;
@@ -62,6 +66,7 @@ void add_sums(const ElementSums& a, ElementSums& sums) {
 /// windows of the nodes below each level L >= 1 closed in the energy-in-transit ledger.
 ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
   const SubcyclingLevels& lv = m.levels;
+  const NodalArrays x = nodal_arrays(m, s);
   ElementSums sums;
   for (int l = 0; l <= top; ++l) {
     const int sb = l == 0 ? 0 : lv.sphere_end[l - 1];
@@ -72,22 +77,39 @@ ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
     const bool stable_step = top == lv.max_level;
     if (l > 0) s.transit.before_slow_pass(lv, l - 1, s.fr.data(), s.fz.data());
     ElementSums ls;
-    element_loop_subcycled(m.sphere, s.elements, sb, lv.sphere_end[l], s.r.data(), s.z.data(),
-                           s.fr.data(), s.fz.data(), h, scale, stable_step, ls);
-    element_loop_subcycled(m.substrate, s.elements, ub, lv.substrate_end[l], s.r.data(), s.z.data(),
-                           s.fr.data(), s.fz.data(), h, scale, stable_step, ls);
+    element_loop_subcycled(m.simd, m.sphere, m.elements, s.elements, sb, lv.sphere_end[l], x, h,
+                           scale, stable_step, ls);
+    element_loop_subcycled(m.simd, m.substrate, m.elements, s.elements, ub, lv.substrate_end[l], x,
+                           h, scale, stable_step, ls);
     if (l > 0) {
       s.transit.after_slow_pass(lv, l - 1, 0.5 * h, s.fr.data(), s.fz.data(), s.vr.data(),
                                 s.vz.data());
     }
     if (stable_step) s.level_dt_min[l] = std::ldexp(ls.dt_min, -l);
-    s.element_steps += lv.sphere_end[l] - sb + lv.substrate_end[l] - ub;
+    s.element_updates += lv.sphere_end[l] - sb + lv.substrate_end[l] - ub;
     add_sums(ls, sums);
   }
   return sums;
 }
 
+/// Time advanced by the step just taken.
+void advance_time(ImpactState& s) {
+  s.t += s.dt;
+  ++s.step;
+  s.dt_prev = s.dt;
+}
+
 }  // namespace
+
+NodalArrays nodal_arrays(const ImpactModel& m, ImpactState& s) {
+  return NodalArrays{s.r.data(),      s.z.data(),      s.vr.data(),       s.vz.data(),
+                     s.fr.data(),     s.fz.data(),     m.mass.data(),     m.inv_mass.data(),
+                     m.free_r.data(), m.free_z.data(), m.is_sphere.data()};
+}
+
+void sample_hysteresis(const ImpactModel& m, ImpactState& s) {
+  s.hysteresis.sample(s.force, m.z_com_start - s.sphere_com_z);
+}
 
 int sync_level(long long step, int max_level) {
   int l = 0;
@@ -100,35 +122,17 @@ NodeSums move_nodes_subcycled(const ImpactModel& m, ImpactState& s) {
   const int l = sync_level(s.step, lv.max_level);
   std::array<double, kMaxSubcyclingLevels + 1> step{};
   for (int k = 0; k <= lv.max_level; ++k) step[k] = std::ldexp(s.dt, k);
-  const SubcycledNodes a{lv.node_order.data(),
-                         lv.node_end[l],
-                         step.data(),
-                         lv.node_scale.data(),
-                         0.5 * (s.dt_prev + s.dt),
-                         s.r.data(),
-                         s.z.data(),
-                         s.vr.data(),
-                         s.vz.data(),
-                         s.fr.data(),
-                         s.fz.data(),
-                         m.mass.data(),
-                         m.inv_mass.data(),
-                         m.free_r.data(),
-                         m.free_z.data(),
-                         m.is_sphere.data()};
+  const SubcycledNodes a{nodal_arrays(m, s), lv.node_order.data(), lv.node_end[l],
+                         step.data(),        lv.node_scale.data(), 0.5 * (s.dt_prev + s.dt)};
   // Most nodes due (fast runs, major-cycle boundaries): one contiguous pass over all.
-  const NodeSums ns =
-      2 * lv.node_end[l] >= m.n_nodes ? node_update_due(a, m.n_nodes, l) : node_update_subcycled(a);
+  const NodeSums ns = 2 * lv.node_end[l] >= m.n_nodes ? node_update_due(m.simd, a, m.n_nodes, l)
+                                                      : node_update_subcycled(m.simd, a);
   // The kick just given opens the windows of the levels below l.
   for (int k = 0; k < l; ++k) s.transit.open_windows(lv, k, s.vr.data(), s.vz.data());
   if (l == lv.max_level) {
     s.sphere_velocity = ns.p_sphere / m.sphere_mass;
     s.sphere_com_z = ns.mz_sphere / m.sphere_mass;
-    const double indentation = m.z_com_start - s.sphere_com_z;
-    s.hysteresis += 0.5 * (s.hysteresis_force + s.force) * (indentation - s.indentation);
-    s.hysteresis_force = s.force;
-    s.indentation = indentation;
-    s.indentation_max = std::max(s.indentation_max, indentation);
+    sample_hysteresis(m, s);
   }
   return ns;
 }
@@ -138,17 +142,10 @@ ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
   const int top = sync_level(s.step + 1, m.levels.max_level);
   rep.elements = subcycled_elements(m, s, top);
   record_element_sums(m, s, rep);
-
-  double force = 0.0;
-  rep.penetrating = apply_contact(m, s, s.fr.data(), s.fz.data(), force, s.energy.contact);
+  rep.penetrating = apply_contact(m, s);
   if (rep.penetrating && !s.cycle_penetrating) s.t_first_penetrating = s.t;
   s.cycle_penetrating = s.cycle_penetrating || rep.penetrating;
-  s.force = force;
-  s.force_max = std::max(s.force_max, force);
-
-  s.t += s.dt;
-  ++s.step;
-  s.dt_prev = s.dt;
+  advance_time(s);
   if (top == m.levels.max_level) {
     double dt_min = s.level_dt_min[0];
     for (int l = 1; l <= top; ++l) dt_min = std::min(dt_min, s.level_dt_min[l]);
@@ -159,10 +156,7 @@ ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
 
 NodeSums move_nodes(const ImpactModel& m, ImpactState& s) {
   const double dt_avg = 0.5 * (s.dt_prev + s.dt);
-  const NodeSums ns =
-      node_update(m.n_nodes, s.dt, dt_avg, s.r.data(), s.z.data(), s.vr.data(), s.vz.data(),
-                  s.fr.data(), s.fz.data(), m.mass.data(), m.inv_mass.data(), m.free_r.data(),
-                  m.free_z.data(), m.is_sphere.data());
+  const NodeSums ns = node_update(m.simd, nodal_arrays(m, s), m.n_nodes, s.dt, dt_avg);
   s.sphere_velocity = ns.p_sphere / m.sphere_mass;
   s.sphere_com_z = ns.mz_sphere / m.sphere_mass;
   return ns;
@@ -171,24 +165,15 @@ NodeSums move_nodes(const ImpactModel& m, ImpactState& s) {
 ForceReport compute_forces(const ImpactModel& m, ImpactState& s) {
   ForceReport rep;
   ElementSums& sums = rep.elements;
-  element_loop(m.sphere, s.elements, 0, m.n_sphere_elements, s.r.data(), s.z.data(), s.vr.data(),
-               s.vz.data(), s.fr.data(), s.fz.data(), s.dt, sums);
-  element_loop(m.substrate, s.elements, m.n_sphere_elements, m.n_elements, s.r.data(), s.z.data(),
-               s.vr.data(), s.vz.data(), s.fr.data(), s.fz.data(), s.dt, sums);
+  const NodalArrays x = nodal_arrays(m, s);
+  element_loop(m.simd, m.sphere, m.elements, s.elements, 0, m.n_sphere_elements, x, s.dt, sums);
+  element_loop(m.simd, m.substrate, m.elements, s.elements, m.n_sphere_elements, m.n_elements, x,
+               s.dt, sums);
+  s.element_updates += m.n_elements;
   record_element_sums(m, s, rep);
-
-  double force = 0.0;
-  rep.penetrating = apply_contact(m, s, s.fr.data(), s.fz.data(), force, s.energy.contact);
-  const double indentation = m.z_com_start - s.sphere_com_z;
-  s.hysteresis += 0.5 * (s.force + force) * (indentation - s.indentation);
-  s.force = force;
-  s.indentation = indentation;
-  s.force_max = std::max(s.force_max, force);
-  s.indentation_max = std::max(s.indentation_max, indentation);
-
-  s.t += s.dt;
-  ++s.step;
-  s.dt_prev = s.dt;
+  rep.penetrating = apply_contact(m, s);
+  sample_hysteresis(m, s);
+  advance_time(s);
   s.dt = m.safety_factor * sums.dt_min;
   return rep;
 }

@@ -17,12 +17,20 @@ struct ForceReport {
   int inverted_element = -1;  ///< mesh index of an inverted element, or -1
 };
 
+/// The nodal arrays of the state and the model (element_loop.hpp).
+NodalArrays nodal_arrays(const ImpactModel& model, ImpactState& state);
+
+/// One sample of the force-indentation loop: the contact force now and the sphere's indentation
+/// at its newest c.o.m. height. The plain step samples after each force half, the subcycled one
+/// at each major-cycle boundary.
+void sample_hysteresis(const ImpactModel& model, ImpactState& state);
+
 /// Kinematic half: velocities and positions; returns the kinetic energies at t^n and the sphere's
 /// momentum at t^{n+1/2}.
 NodeSums move_nodes(const ImpactModel& model, ImpactState& state);
 
-/// Force half: stresses, internal, hourglass and contact forces at x^{n+1}; advances t by dt and
-/// sets the next dt from the stable step.
+/// Force half: stresses, internal, hourglass and contact forces at x^{n+1}, a hysteresis sample;
+/// advances t by dt and sets the next dt from the stable step.
 ForceReport compute_forces(const ImpactModel& model, ImpactState& state);
 
 /// Element subcycling (docs/theory/solver.md section 11; model.levels.max_level > 0). Base step k
@@ -34,7 +42,7 @@ int sync_level(long long step, int max_level);
 
 /// Kinematic half of base step k: the nodes of level <= sync_level(k) (those due at t^k) get the
 /// impulses of the elements due at t^k and move over their own step. At a major-cycle boundary
-/// also the sphere's momentum, c.o.m., indentation and hysteresis at t^k; the returned kinetic
+/// also the sphere's momentum and c.o.m. at t^k and a hysteresis sample; the returned kinetic
 /// energy is then the whole model's.
 NodeSums move_nodes_subcycled(const ImpactModel& model, ImpactState& state);
 

@@ -108,6 +108,8 @@ const std::array kFields{
     member<&R::elements>("elements", "-", "elements of the mesh", kBoth),
     member<&R::nodes>("nodes", "-", "nodes of the mesh", kSummary),
     member<&R::steps>("steps", "-", "time steps taken", kBoth),
+    member<&R::element_updates>(
+        "element_updates", "-", "element updates done (subcycling: < elements x steps)", kSummary),
     member<&R::h_contact>("h_contact", "m", "element size at the contact", kSummary),
     member<&R::time_step>("time_step", "s", "initial stable time step", kSummary),
     member<&R::end_time>("end_time", "s", "simulated time at the end", kSummary),
@@ -127,6 +129,8 @@ const std::array kFields{
     member<&R::mass_scaling>("mass_scaling", "-", "base step / the physical one (1 = none)", kBoth),
     member<&R::added_mass_fraction>(
         "added_mass_fraction", "-", "mass added by mass scaling / sphere mass", kBoth),
+    ResultField{"simd", "-", "instruction set of the solver's hot loops (CORLAB_SIMD)",
+                FieldKind::text, &result_member<&R::simd>, kSummary, true},
     ResultField{"corlab_build", "-", "corlab version and git commit of the run (provenance)",
                 FieldKind::text,
                 [](const FieldInput&) -> FieldValue { return std::string(build_id()); }, kBoth,

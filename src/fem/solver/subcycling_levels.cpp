@@ -8,7 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/kernels/subcycling_level.hpp"
 
 namespace corlab::fem::solver {
@@ -17,16 +16,14 @@ namespace {
 /// Stable step of element e at the start positions (as for dt_critical, mass scaling included)
 /// [s].
 double initial_element_step(const ImpactModel& m, int e) {
-  const BodyParams& p = e < m.n_sphere_elements ? m.sphere : m.substrate;
-  return m.step_scale[e] * element_stable_time_step(characteristic_length(initial_geometry(m, e)),
-                                                    p.wave_speed, p.b1);
+  return m.elements.step_scale[e] * physical_element_step(m, e);
 }
 
 /// Level of each node: the smallest level of its elements.
 std::vector<int> node_levels(const ImpactModel& m, const std::vector<int>& element_level) {
   std::vector<int> level(m.n_nodes, kMaxSubcyclingLevels);
   for (int e = 0; e < m.n_elements; ++e) {
-    for (int n : m.element_nodes[e]) level[n] = std::min(level[n], element_level[e]);
+    for (int n : m.elements.nodes(e)) level[n] = std::min(level[n], element_level[e]);
   }
   return level;
 }
@@ -41,7 +38,7 @@ std::vector<char> may_carry_slower(const ImpactModel& m,
   std::vector<char> ok(m.n_nodes, 1);
   for (int e = 0; e < m.n_elements; ++e) {
     const double ratio = own[e] / std::ldexp(m.dt_critical, level[e]);
-    for (int n : m.element_nodes[e]) {
+    for (int n : m.elements.nodes(e)) {
       if (level[e] == node_level[n] && ratio < kInterfaceStepRatio) ok[n] = 0;
     }
   }
@@ -61,7 +58,7 @@ std::vector<int> element_levels(const ImpactModel& m, int max_level) {
   for (int e = 0; e < m.n_elements; ++e) {
     own[e] = initial_element_step(m, e);
     int l = subcycling_level(m.dt_critical, own[e], max_level);
-    for (int n : m.element_nodes[e]) l = contact[n] != 0 ? 0 : l;
+    for (int n : m.elements.nodes(e)) l = contact[n] != 0 ? 0 : l;
     level[e] = l;
   }
   for (bool changed = true; changed;) {
@@ -70,7 +67,7 @@ std::vector<int> element_levels(const ImpactModel& m, int max_level) {
     const std::vector<char> ok = may_carry_slower(m, level, nl, own);
     for (int e = 0; e < m.n_elements; ++e) {
       int lim = level[e];
-      for (int n : m.element_nodes[e]) lim = std::min(lim, nl[n] + (ok[n] != 0 ? 1 : 0));
+      for (int n : m.elements.nodes(e)) lim = std::min(lim, nl[n] + (ok[n] != 0 ? 1 : 0));
       changed = changed || lim != level[e];
       level[e] = lim;
     }
@@ -80,11 +77,10 @@ std::vector<int> element_levels(const ImpactModel& m, int max_level) {
 
 /// SubcyclingLevels::interface_nodes from the element and node levels (elements at a node differ
 /// from it by at most one level).
-void set_interface_nodes(const std::vector<std::array<int, 4>>& element_nodes,
-                         SubcyclingLevels& lv) {
+void set_interface_nodes(const ElementConstants& elements, SubcyclingLevels& lv) {
   std::vector<char> slow(lv.node.size(), 0);
-  for (std::size_t e = 0; e < element_nodes.size(); ++e) {
-    for (int n : element_nodes[e])
+  for (int e = 0; e < elements.size(); ++e) {
+    for (int n : elements.nodes(e))
       slow[n] = static_cast<char>(slow[n] || lv.element[e] > lv.node[n]);
   }
   for (auto& nodes : lv.interface_nodes) nodes.clear();
@@ -102,19 +98,14 @@ void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<in
   const auto by_level = [&](int a, int b) { return level[a] < level[b]; };
   std::stable_sort(order.begin(), order.begin() + m.n_sphere_elements, by_level);
   std::stable_sort(order.begin() + m.n_sphere_elements, order.end(), by_level);
-  std::vector<std::array<int, 4>> nodes(m.n_elements);
-  std::vector<int> original(m.n_elements);
-  std::vector<double> step_scale(m.n_elements);
+  ElementConstants sorted;
   lv.element.assign(m.n_elements, 0);
   for (int k = 0; k < m.n_elements; ++k) {
-    nodes[k] = m.element_nodes[order[k]];
-    original[k] = m.original_element[order[k]];
-    step_scale[k] = m.step_scale[order[k]];
+    sorted.push_back(m.elements.nodes(order[k]), m.elements.mesh_index[order[k]]);
+    sorted.step_scale[k] = m.elements.step_scale[order[k]];
     lv.element[k] = level[order[k]];
   }
-  m.element_nodes = std::move(nodes);
-  m.original_element = std::move(original);
-  m.step_scale = std::move(step_scale);
+  m.elements = std::move(sorted);
   for (int l = 0; l <= kMaxSubcyclingLevels; ++l) {
     const auto below = [&](int x) { return x <= l; };
     const auto mid = lv.element.begin() + m.n_sphere_elements;
@@ -133,7 +124,7 @@ void sort_by_level(ImpactModel& m, const std::vector<int>& level, std::vector<in
     lv.node_end[l] = static_cast<int>(
         std::count_if(lv.node.begin(), lv.node.end(), [&](int x) { return x <= l; }));
   }
-  set_interface_nodes(m.element_nodes, lv);
+  set_interface_nodes(m.elements, lv);
 }
 
 }  // namespace

@@ -10,22 +10,30 @@
 
 namespace corlab::fem {
 
-/// Time histories, one entry per output row (structure of arrays).
-struct ImpactHistory {
-  std::vector<double> time;             ///< t [s], 0 = release at the gap
-  std::vector<double> contact_force;    ///< F, force of the substrate on the sphere [N]
-  std::vector<double> indentation;      ///< delta = sphere c.o.m. displacement - gap [m]
-  std::vector<double> sphere_velocity;  ///< sphere c.o.m. velocity, + towards substrate [m/s]
+/// The time histories' columns, one value each (T = double: one row) or one entry per output
+/// row (T = std::vector<double>: the histories). Their names, units and CSV columns:
+/// history_columns.hpp.
+template <class T>
+struct HistoryColumns {
+  T time;             ///< t [s], 0 = release at the gap
+  T contact_force;    ///< F, force of the substrate on the sphere [N]
+  T indentation;      ///< delta = sphere c.o.m. displacement - gap [m]
+  T sphere_velocity;  ///< sphere c.o.m. velocity, + towards substrate [m/s]
   /// [J] both bodies (product form; with subcycling less the energy in transit between levels,
   /// so that the energy columns add up to the initial energy)
-  std::vector<double> kinetic_energy;
-  std::vector<double> strain_energy;         ///< recoverable elastic strain energy [J]
-  std::vector<double> plastic_dissipation;   ///< [J]
-  std::vector<double> hourglass_energy;      ///< [J]
-  std::vector<double> viscous_dissipation;   ///< bulk viscosity [J]
-  std::vector<double> contact_energy;        ///< penalty energy [J]
-  std::vector<double> energy_balance_error;  ///< (sum of the above - initial) / initial [-]
+  T kinetic_energy;
+  T strain_energy;         ///< recoverable elastic strain energy [J]
+  T plastic_dissipation;   ///< [J]
+  T hourglass_energy;      ///< [J]
+  T viscous_dissipation;   ///< bulk viscosity [J]
+  T contact_energy;        ///< penalty energy [J]
+  T energy_balance_error;  ///< (sum of the above - initial) / initial [-]
 };
+
+/// One row of the time histories.
+using HistoryRow = HistoryColumns<double>;
+/// Time histories, one entry per output row (structure of arrays).
+using ImpactHistory = HistoryColumns<std::vector<double>>;
 
 struct ImpactResult {
   RunStatus status = RunStatus::kNotSeparated;  ///< how the run ended (run_status.hpp)
@@ -59,14 +67,16 @@ struct ImpactResult {
   int elements = 0;
   int nodes = 0;
   long long steps = 0;
-  double h_contact = 0.0;  ///< element size used at the contact [m]
-  double time_step = 0.0;  ///< initial stable time step [s]
+  long long element_updates = 0;  ///< element updates done (subcycling: < elements x steps) [-]
+  double h_contact = 0.0;         ///< element size used at the contact [m]
+  double time_step = 0.0;         ///< initial stable time step [s]
   /// Mass scaling (docs/theory/solver.md section 12): base step / the physical one (1 = none) [-]
   double mass_scaling = 1.0;
   double added_mass_fraction = 0.0;  ///< mass added by the scaling / the sphere's mass [-]
   double end_time = 0.0;             ///< [s]
   double wall_s = 0.0;               ///< wall-clock time of the run [s]
   double element_steps_per_s = 0.0;  ///< throughput [1/s]
+  std::string simd;                  ///< instruction set of the hot loops (simd_level.hpp)
   ImpactHistory history;
 };
 

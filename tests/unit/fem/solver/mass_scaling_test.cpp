@@ -13,7 +13,6 @@
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/simulate.hpp"
 #include "fem/solver/impact_model.hpp"
-#include "support/impact_model_steps.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -39,14 +38,15 @@ ImpactModel model_of(const ImpactConfig& c) {
   return solver::make_impact_model(c, build_impact_mesh(c));
 }
 
-using testing::physical_element_step;
+using solver::physical_element_step;
 
 TEST(MassScaling, OffLeavesMassesAndStepsPhysical) {
   const ImpactModel m = model_of(slow_config(0.1, 1.0));
-  EXPECT_EQ(m.mass_scaling, 1.0);
-  EXPECT_EQ(m.added_mass, 0.0);
-  for (double s : m.step_scale) ASSERT_EQ(s, 1.0);
-  for (int i = 0; i < m.n_nodes; ++i) ASSERT_EQ(m.mass[i], m.physical_mass[i]) << "node " << i;
+  EXPECT_EQ(m.scaling.factor, 1.0);
+  EXPECT_EQ(m.scaling.added_mass, 0.0);
+  for (double s : m.elements.step_scale) ASSERT_EQ(s, 1.0);
+  for (int i = 0; i < m.n_nodes; ++i)
+    ASSERT_EQ(m.mass[i], m.scaling.physical_mass[i]) << "node " << i;
   double step_min = 1e300;
   for (int e = 0; e < m.n_elements; ++e) step_min = std::min(step_min, physical_element_step(m, e));
   EXPECT_DOUBLE_EQ(m.dt_critical, step_min);
@@ -55,32 +55,32 @@ TEST(MassScaling, OffLeavesMassesAndStepsPhysical) {
 TEST(MassScaling, RaisesEveryStepToTheTargetAndAddsLittleMass) {
   const ImpactModel off = model_of(slow_config(0.1, 1.0));
   const ImpactModel m = model_of(slow_config(0.1, 8.0));
-  ASSERT_GE(m.mass_scaling, 2.0) << "a 0.1 m/s impact is quasi-static: scaling should apply";
-  EXPECT_NEAR(m.dt_critical, m.mass_scaling * m.step_floor_scale * off.dt_critical,
+  ASSERT_GE(m.scaling.factor, 2.0) << "a 0.1 m/s impact is quasi-static: scaling should apply";
+  EXPECT_NEAR(m.dt_critical, m.scaling.factor * m.scaling.step_floor_scale * off.dt_critical,
               1e-12 * m.dt_critical);
   for (int e = 0; e < m.n_elements; ++e) {
-    const double step = m.step_scale[e] * physical_element_step(m, e);
+    const double step = m.elements.step_scale[e] * physical_element_step(m, e);
     ASSERT_GE(step, m.dt_critical * (1.0 - 1e-12)) << "element " << e;
     // Scaled only as far as needed, except at the contact (the whole factor).
-    ASSERT_TRUE(m.step_scale[e] == 1.0 || m.step_scale[e] == m.mass_scaling ||
+    ASSERT_TRUE(m.elements.step_scale[e] == 1.0 || m.elements.step_scale[e] == m.scaling.factor ||
                 std::abs(step - m.dt_critical) < 1e-9 * m.dt_critical)
         << "element " << e;
   }
-  EXPECT_GT(m.added_mass, 0.0);
-  EXPECT_LE(m.added_mass, solver::kMaxAddedMassFraction * m.sphere_mass_physical);
+  EXPECT_GT(m.scaling.added_mass, 0.0);
+  EXPECT_LE(m.scaling.added_mass, solver::kMaxAddedMassFraction * m.scaling.sphere_mass_physical);
   double total = 0.0, physical = 0.0;
   for (int i = 0; i < m.n_nodes; ++i) {
     total += m.mass[i];
-    physical += m.physical_mass[i];
+    physical += m.scaling.physical_mass[i];
   }
-  EXPECT_NEAR(total - physical, m.added_mass, 1e-9 * total);
+  EXPECT_NEAR(total - physical, m.scaling.added_mass, 1e-9 * total);
 }
 
 TEST(MassScaling, TheContactKeepsItsPhysicalPenalty) {
   const ImpactConfig c = slow_config(0.1, 8.0);
   const ImpactModel off = model_of(slow_config(0.1, 1.0));
   const ImpactModel m = model_of(c);
-  ASSERT_GE(m.mass_scaling, 2.0);
+  ASSERT_GE(m.scaling.factor, 2.0);
   ASSERT_EQ(m.slaves, off.slaves);
   const double r_contact = predicted_contact_radius(c);
   int checked = 0;
@@ -89,7 +89,7 @@ TEST(MassScaling, TheContactKeepsItsPhysicalPenalty) {
     EXPECT_NEAR(m.penalty[s], off.penalty[s], 1e-9 * off.penalty[s]) << "slave " << s;
     // F^2, more where an element at the node was also below the step floor (the axis column).
     EXPECT_GE(m.mass[m.slaves[s]],
-              m.mass_scaling * m.mass_scaling * off.mass[m.slaves[s]] * (1.0 - 1e-12));
+              m.scaling.factor * m.scaling.factor * off.mass[m.slaves[s]] * (1.0 - 1e-12));
     ++checked;
   }
   EXPECT_GT(checked, 5);
@@ -100,11 +100,11 @@ TEST(MassScaling, TheContactKeepsItsPhysicalPenalty) {
 
 TEST(MassScaling, RefusedWhereTheAddedInertiaWouldBeFelt) {
   // At 5 m/s rho v^2 / sigma_y ~ 7e-4: scaling by 4 would add 5e-3 > 1e-4.
-  EXPECT_EQ(model_of(slow_config(5.0, 8.0)).mass_scaling, 1.0);
+  EXPECT_EQ(model_of(slow_config(5.0, 8.0)).scaling.factor, 1.0);
   // And with the bound at zero, nowhere.
   ImpactConfig c = slow_config(0.1, 8.0);
   c.solver.mass_scaling_inertia = 0.0;
-  EXPECT_EQ(model_of(c).mass_scaling, 1.0);
+  EXPECT_EQ(model_of(c).scaling.factor, 1.0);
 }
 
 // The step floor at an impact too fast for F (the paper case, 5 m/s): only the elements whose
@@ -116,16 +116,15 @@ TEST(StepFloor, RaisesOnlyTheElementsBelowTheContactSquares) {
   physical.solver.mass_scaling_max = 1.0;
   const ImpactModel off = model_of(physical);
   const ImpactModel m = model_of(c);
-  ASSERT_EQ(m.mass_scaling, 1.0);
-  EXPECT_EQ(off.step_floor_scale, 1.0);
+  ASSERT_EQ(m.scaling.factor, 1.0);
+  EXPECT_EQ(off.scaling.step_floor_scale, 1.0);
   // The axis squares (hoop term, h / sqrt(3)) and the sphere core's smallest elements (0.139 mm
   // against h / sqrt(2) = 0.177 mm: solver.md section 5) lie below the floor.
-  EXPECT_GT(m.step_floor_scale, 1.2);
+  EXPECT_GT(m.scaling.step_floor_scale, 1.2);
   const double h = c.mesh.h_min;
-  const double square =
-      element_stable_time_step(h / std::sqrt(2.0), m.substrate.wave_speed, m.substrate.b1);
+  const double square = m.substrate.stable_step_at_rest(h / std::sqrt(2.0));
   EXPECT_LE(m.dt_critical, square * (1.0 + 1e-9));
-  EXPECT_NEAR(m.dt_critical, m.step_floor_scale * off.dt_critical, 1e-12 * m.dt_critical);
+  EXPECT_NEAR(m.dt_critical, m.scaling.step_floor_scale * off.dt_critical, 1e-12 * m.dt_critical);
   // Scaled by more than 1 %: the axis column's squares (every one touching the contact) and the
   // sphere core's distorted elements next to the contact (measured: 131 of 2763). The zone's
   // own squares lie within round-off of the floor (scaled by < 1.001).
@@ -133,27 +132,27 @@ TEST(StepFloor, RaisesOnlyTheElementsBelowTheContactSquares) {
   int axis_contact_squares = 0;
   for (int e = 0; e < m.n_elements; ++e) {
     const double physical_step = physical_element_step(m, e);
-    if (m.step_scale[e] == 1.0) {
+    if (m.elements.step_scale[e] == 1.0) {
       ASSERT_GE(physical_step, m.dt_critical * (1.0 - 1e-12)) << "element " << e;
       continue;
     }
     ASSERT_LT(physical_step, m.dt_critical) << "element " << e;
-    ASSERT_NEAR(m.step_scale[e] * physical_step, m.dt_critical, 1e-12 * m.dt_critical);
-    if (m.step_scale[e] > 1.01) ++scaled;
+    ASSERT_NEAR(m.elements.step_scale[e] * physical_step, m.dt_critical, 1e-12 * m.dt_critical);
+    if (m.elements.step_scale[e] > 1.01) ++scaled;
     bool on_axis = false;
     bool at_contact = false;
-    for (int n : m.element_nodes[e]) {
+    for (int n : m.elements.nodes(e)) {
       on_axis = on_axis || m.r0[n] == 0.0;
       at_contact = at_contact || n == m.masters[0] || n == m.slaves.front();
     }
-    if (on_axis && at_contact && m.step_scale[e] > 1.2) ++axis_contact_squares;
+    if (on_axis && at_contact && m.elements.step_scale[e] > 1.2) ++axis_contact_squares;
   }
   EXPECT_GT(scaled, 0);
   EXPECT_LT(scaled, m.n_elements / 10) << "a floor, not a scaling of the mesh";
   EXPECT_EQ(axis_contact_squares, 2) << "the axis squares at the contact, one per body";
-  EXPECT_GT(m.added_mass, 0.0);
-  EXPECT_LE(m.added_mass, solver::kMaxAddedMassFraction * m.sphere_mass_physical);
-  EXPECT_EQ(m.dt_critical_physical, off.dt_critical);
+  EXPECT_GT(m.scaling.added_mass, 0.0);
+  EXPECT_LE(m.scaling.added_mass, solver::kMaxAddedMassFraction * m.scaling.sphere_mass_physical);
+  EXPECT_EQ(m.scaling.dt_critical_physical, off.dt_critical);
   ASSERT_EQ(m.slaves, off.slaves);
   for (std::size_t s = 0; s < m.slaves.size(); ++s) {
     EXPECT_NEAR(m.penalty[s], off.penalty[s], 1e-9 * off.penalty[s]) << "slave " << s;
@@ -167,9 +166,9 @@ TEST(StepFloor, BoundedByThePenaltysShareOfTheStabilityBudget) {
   c.solver.safety_factor = 0.88;  // limit 1 / sqrt(1.28) = 0.8839
   const ImpactModel m = model_of(c);
   const double bound = std::sqrt((1.0 / (0.88 * 0.88) - 1.0) / c.solver.penalty_scale);
-  EXPECT_GT(m.step_floor_scale, 1.0);
-  EXPECT_LE(m.step_floor_scale, bound * (1.0 + 1e-12));
-  EXPECT_LT(m.step_floor_scale, 1.03);
+  EXPECT_GT(m.scaling.step_floor_scale, 1.0);
+  EXPECT_LE(m.scaling.step_floor_scale, bound * (1.0 + 1e-12));
+  EXPECT_LT(m.scaling.step_floor_scale, 1.03);
 }
 
 // Where the elements below the contact squares are heavy (a 70 m/s crater: a wide zone of axis
@@ -178,9 +177,9 @@ TEST(StepFloor, BoundedByTheAddedMass) {
   ImpactConfig c;
   c.impact.velocity = 70.0;
   const ImpactModel m = model_of(c);
-  EXPECT_GT(m.step_floor_scale, 1.0);
-  EXPECT_NEAR(m.added_mass, solver::kMaxAddedMassFraction * m.sphere_mass_physical,
-              1e-6 * m.added_mass);
+  EXPECT_GT(m.scaling.step_floor_scale, 1.0);
+  EXPECT_NEAR(m.scaling.added_mass, solver::kMaxAddedMassFraction * m.scaling.sphere_mass_physical,
+              1e-6 * m.scaling.added_mass);
 }
 
 // What holds the factor back is the mesh's thin, heavy elements away from the contact. The
@@ -200,12 +199,12 @@ TEST(MassScaling, TheSphereSkinTransitionsLetASlowImpactScaleByFour) {
   c.substrate.material.yield_stress = 100e6;
   ASSERT_GE(c.solver.mass_scaling_max, 4.0);
   const ImpactModel m = model_of(c);
-  EXPECT_EQ(m.mass_scaling, 4.0);
+  EXPECT_EQ(m.scaling.factor, 4.0);
   // F multiplies the step floor, so the added mass is 6.6e-4 of the sphere's with
   // it (2.6e-4 without it, on the build before the floor).
-  EXPECT_LE(m.added_mass, solver::kMaxAddedMassFraction * m.sphere_mass_physical);
+  EXPECT_LE(m.scaling.added_mass, solver::kMaxAddedMassFraction * m.scaling.sphere_mass_physical);
   c.mesh.transitions = 0.0;
-  EXPECT_EQ(model_of(c).mass_scaling, 2.0);
+  EXPECT_EQ(model_of(c).scaling.factor, 2.0);
 }
 
 // The scaled run gives the e of the physical one to 2e-5 (relative), in 1 / mass_scaling of the

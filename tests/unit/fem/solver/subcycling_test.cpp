@@ -12,7 +12,6 @@
 #include "corlab/fem/solver/simulate.hpp"
 #include "fem/solver/impact_model.hpp"
 #include "fem/solver/impact_step.hpp"
-#include "support/impact_model_steps.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -46,7 +45,7 @@ ImpactModel small_model(int levels) {
 
 // The model's stable step of element e at the start (mass scaling included) [s].
 double element_step(const ImpactModel& m, int e) {
-  return m.step_scale[e] * testing::physical_element_step(m, e);
+  return m.elements.step_scale[e] * solver::physical_element_step(m, e);
 }
 
 TEST(Subcycling, OffLeavesTheModelUnleveled) {
@@ -71,14 +70,14 @@ TEST(Subcycling, LevelsRespectTheStableStepAndTheContact) {
                 kSubcyclingLevelMargin * element_step(m, e) * 1.000001)
           << "element " << e << " level " << l;
     }
-    for (int n : m.element_nodes[e]) node_min[n] = std::min(node_min[n], l);
+    for (int n : m.elements.nodes(e)) node_min[n] = std::min(node_min[n], l);
   }
   for (int n = 0; n < m.n_nodes; ++n) EXPECT_EQ(lv.node[n], node_min[n]) << "node " << n;
   for (int n : m.slaves) EXPECT_EQ(lv.node[n], 0);
   for (int n : m.masters) EXPECT_EQ(lv.node[n], 0);
   // Elements touching a contact node are level 0; neighbours differ by at most one level.
   for (int e = 0; e < m.n_elements; ++e) {
-    for (int n : m.element_nodes[e]) {
+    for (int n : m.elements.nodes(e)) {
       const bool contact = std::count(m.slaves.begin(), m.slaves.end(), n) > 0 ||
                            std::count(m.masters.begin(), m.masters.end(), n) > 0;
       if (contact) {
@@ -117,7 +116,7 @@ TEST(Subcycling, InterfaceNodesCarryAnElementOneLevelUp) {
   EXPECT_GT(count, 0U) << "a graded mesh has interfaces between levels";
   std::vector<char> slow(m.n_nodes, 0);
   for (int e = 0; e < m.n_elements; ++e) {
-    for (int n : m.element_nodes[e])
+    for (int n : m.elements.nodes(e))
       slow[n] = static_cast<char>(slow[n] || lv.element[e] > lv.node[n]);
   }
   for (int n = 0; n < m.n_nodes; ++n) EXPECT_EQ(listed[n] >= 0, slow[n] != 0) << "node " << n;
@@ -142,7 +141,7 @@ TEST(Subcycling, InterfaceNodesHaveSlackForTheSlowerImpulse) {
     for (const auto& nodes : lv.interface_nodes)
       for (int n : nodes) interface[n] = 1;
     for (int e = 0; e < m.n_elements; ++e) {
-      for (int n : m.element_nodes[e]) {
+      for (int n : m.elements.nodes(e)) {
         if (interface[n] == 0 || lv.element[e] != lv.node[n]) continue;
         EXPECT_GE(element_step(m, e),
                   0.999999 * kInterfaceStepRatio * std::ldexp(m.dt_critical, lv.element[e]))

@@ -1,0 +1,61 @@
+// The energy balance, history rows and stop rule of a run (run_bookkeeping.hpp).
+#include "fem/solver/run_bookkeeping.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "corlab/fem/solver/history_columns.hpp"
+
+namespace corlab::fem::solver {
+
+RunBookkeeping::RunBookkeeping(const ImpactModel& model,
+                               bool stop_at_max_compression,
+                               ImpactHistory& history)
+    : m_(model),
+      stop_at_max_compression_(stop_at_max_compression),
+      history_(history),
+      rule_(model.t_wave, model.velocity),
+      v_com_prev_(-model.velocity) {}
+
+std::optional<RunStatus> RunBookkeeping::sample(const ImpactState& s, double kinetic, bool row) {
+  // The sphere's velocity at the sampled time: the mean of the half steps around it.
+  const double v_mean = 0.5 * (s.sphere_velocity + v_com_prev_);
+  v_com_prev_ = s.sphere_velocity;
+  const EnergySums& w = s.energy;
+  const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact;
+  const double balance = (total - m_.energy_initial) / m_.energy_initial;
+  if (!std::isfinite(balance)) {
+    balance_max_ = std::numeric_limits<double>::quiet_NaN();
+    return RunStatus::kNonFinite;
+  }
+  balance_max_ = std::max(balance_max_, std::abs(balance));
+  if (row) {
+    append_row(history_, HistoryRow{.time = s.t,
+                                    .contact_force = s.force,
+                                    .indentation = s.hysteresis.indentation,
+                                    .sphere_velocity = -v_mean,
+                                    .kinetic_energy = kinetic,
+                                    .strain_energy = w.internal - w.plastic,
+                                    .plastic_dissipation = w.plastic,
+                                    .hourglass_energy = w.hourglass,
+                                    .viscous_dissipation = w.viscous,
+                                    .contact_energy = w.contact,
+                                    .energy_balance_error = balance});
+  }
+  return std::nullopt;
+}
+
+std::optional<RunStatus> RunBookkeeping::stop(
+    const ImpactState& s, double ke_sphere, double window, double since, bool penetrating) {
+  rule_.accumulate(ke_sphere, window);
+  const auto decision = rule_.update(s.t, since, penetrating, s.sphere_velocity);
+  if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
+  if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
+  if (stop_at_max_compression_ && rule_.touched() && s.sphere_velocity >= 0.0) {
+    return RunStatus::kMaxCompression;
+  }
+  return std::nullopt;
+}
+
+}  // namespace corlab::fem::solver

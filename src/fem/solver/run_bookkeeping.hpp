@@ -1,0 +1,48 @@
+#pragma once
+/// @file run_bookkeeping.hpp
+/// What every time loop of an impact run keeps the same way, whatever its stepping scheme (plain
+/// or subcycled; docs/dev/architecture.md, "New geometries"): the energy balance and the history
+/// rows at the times it samples, and the stop rule over the windows between them. Private to the
+/// solver.
+
+#include <optional>
+
+#include "corlab/fem/solver/impact_result.hpp"
+#include "corlab/fem/solver/run_status.hpp"
+#include "corlab/fem/solver/separation_rule.hpp"
+#include "fem/solver/impact_model.hpp"
+#include "fem/solver/impact_state.hpp"
+
+namespace corlab::fem::solver {
+
+class RunBookkeeping {
+ public:
+  /// History rows go to `history`; `stop_at_max_compression` ends a run at the sphere's turning
+  /// point (SimulationControl).
+  RunBookkeeping(const ImpactModel& model, bool stop_at_max_compression, ImpactHistory& history);
+
+  /// At a sampled time (the state's; every node in sync), `kinetic` the kinetic energy then [J]
+  /// (product form, less the subcycling's energy in transit): the energy balance, and a history
+  /// row when `row`. kNonFinite when the balance is not finite.
+  std::optional<RunStatus> sample(const ImpactState& state, double kinetic, bool row);
+
+  /// The stop rule at the end of a window of `window` [s] over which the sphere's kinetic energy
+  /// was `ke_sphere` [J]; `penetrating`: a slave was in contact in it, for the last `since` [s].
+  /// kSeparated, kNotSeparated or kMaxCompression when the run ends.
+  std::optional<RunStatus> stop(
+      const ImpactState& state, double ke_sphere, double window, double since, bool penetrating);
+
+  const SeparationRule& rule() const { return rule_; }
+  /// Largest |energy balance| / initial energy so far (NaN once non-finite) [-].
+  double balance_max() const { return balance_max_; }
+
+ private:
+  const ImpactModel& m_;
+  bool stop_at_max_compression_;
+  ImpactHistory& history_;
+  SeparationRule rule_;
+  double v_com_prev_;  ///< sphere c.o.m. velocity at the last sample [m/s]
+  double balance_max_ = 0.0;
+};
+
+}  // namespace corlab::fem::solver
