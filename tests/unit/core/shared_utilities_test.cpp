@@ -6,10 +6,8 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -18,6 +16,7 @@
 #include "corlab/core/interrupt.hpp"
 #include "corlab/core/text.hpp"
 #include "corlab/core/thread_pool.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab {
 namespace {
@@ -39,16 +38,11 @@ TEST(OneLine, ReplacesLineBreaksWithBlanks) {
 }
 
 TEST(AtomicFile, ReplacesTheContentAndLeavesNoTemporary) {
-  const fs::path dir = fs::temp_directory_path() / "corlab_atomic_file_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_dir("atomic");
   const fs::path file = dir / "a.json";
   write_file_atomically(file, "first");
   write_file_atomically(file, "second\n");
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_EQ(text.str(), "second\n");
+  EXPECT_EQ(test::slurp(file), "second\n");
   EXPECT_FALSE(fs::exists(dir / "a.json.tmp"));
   EXPECT_THROW(write_file_atomically(dir / "no" / "such" / "dir.json", "x"), std::runtime_error);
   fs::remove_all(dir);

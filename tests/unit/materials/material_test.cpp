@@ -3,18 +3,17 @@
 #include "corlab/materials/material.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 
 #include "corlab/core/error.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab {
 namespace {
@@ -149,14 +148,9 @@ TEST(MaterialDatabase, DataDirectoryHonoursEnvironment) {
 
 class DatabaseFile : public ::testing::Test {
  protected:
-  std::filesystem::path write(const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("corlab_material_test_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    const auto file =
-        dir /
-        (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".toml");
-    std::ofstream(file) << text;
+  static std::filesystem::path write(const std::string& text) {
+    const auto file = test::fresh_dir("database") / "materials.toml";
+    test::spit(file, text);
     return file;
   }
 };

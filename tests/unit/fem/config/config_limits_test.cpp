@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +12,7 @@
 #include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -113,10 +113,10 @@ TEST(ConfigLimits, MaterialKeysApplyFirstWhateverTheOrder) {
 }
 
 TEST(ConfigLimits, TomlArrayForAScalarAndEmptyNumberAreErrors) {
-  const auto dir = std::filesystem::temp_directory_path();
+  const auto dir = test::fresh_dir("configs");
   const auto write = [&](const std::string& name, const std::string& text) {
     const auto file = dir / name;
-    std::ofstream(file) << text;
+    test::spit(file, text);
     return file;
   };
   auto message = [](const std::filesystem::path& f) {

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -68,28 +68,20 @@ TEST(ImpactConfig, ErrorsNameKeyValueAndConstraint) {
 }
 
 TEST(ImpactConfig, LoadsToml) {
-  const auto file = std::filesystem::temp_directory_path() / "corlab_impact_config_test.toml";
-  {
-    std::ofstream out(file);
-    out << "[impact]\nvelocity = 2\n[substrate]\nmaterial = \"steel_ma2023,sy=700e6\"\n"
-           "[output]\ntimes = [1e-5, 3e-5]\nhistory_every = 4\n";
-  }
+  const auto file = test::fresh_dir("config") / "impact.toml";
+  test::spit(file,
+             "[impact]\nvelocity = 2\n[substrate]\nmaterial = \"steel_ma2023,sy=700e6\"\n"
+             "[output]\ntimes = [1e-5, 3e-5]\nhistory_every = 4\n");
   const ImpactConfig c = load_impact_config(file);
   EXPECT_DOUBLE_EQ(c.impact.velocity, 2.0);
   EXPECT_DOUBLE_EQ(*c.substrate.material.yield_stress, 700e6);
   EXPECT_EQ(c.output.field_times.size(), 2u);
   EXPECT_EQ(c.output.history_every, 4);
-  {
-    std::ofstream out(file);
-    out << "[impact]\nvelocty = 2\n";
-  }
+  test::spit(file, "[impact]\nvelocty = 2\n");
   EXPECT_NE(error_of([&] { load_impact_config(file); }).find("impact.velocty"), std::string::npos);
-  {
-    std::ofstream out(file);
-    out << "[impact\nvelocity = 2\n";
-  }
+  test::spit(file, "[impact\nvelocity = 2\n");
   EXPECT_NE(error_of([&] { load_impact_config(file); }).find("line"), std::string::npos);
-  std::filesystem::remove(file);
+  std::filesystem::remove_all(file.parent_path());
 }
 
 }  // namespace
