@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "corlab/core/error.hpp"
@@ -136,14 +137,52 @@ TEST(MaterialDatabase, UnknownNameMessage) {
   }
 }
 
-TEST(MaterialDatabase, DataDirectoryHonoursEnvironment) {
-  const char* old = std::getenv("CORLAB_DATA_DIR");
-  const std::string saved = old ? old : "";
-  ::setenv("CORLAB_DATA_DIR", "/tmp/corlab-data-test", 1);
+// Sets CORLAB_DATA_DIR (nullptr: unsets it) for one scope, then puts back what was there.
+class DataDirEnvironment {
+ public:
+  explicit DataDirEnvironment(const char* value) {
+    if (const char* old = std::getenv("CORLAB_DATA_DIR")) saved_ = old;
+    if (value != nullptr) {
+      ::setenv("CORLAB_DATA_DIR", value, 1);
+    } else {
+      ::unsetenv("CORLAB_DATA_DIR");
+    }
+  }
+  ~DataDirEnvironment() {
+    if (saved_) {
+      ::setenv("CORLAB_DATA_DIR", saved_->c_str(), 1);
+    } else {
+      ::unsetenv("CORLAB_DATA_DIR");
+    }
+  }
+  DataDirEnvironment(const DataDirEnvironment&) = delete;
+  DataDirEnvironment& operator=(const DataDirEnvironment&) = delete;
+
+ private:
+  std::optional<std::string> saved_;
+};
+
+TEST(DataDirectory, TheEnvironmentComesFirst) {
+  const auto installed = test::fresh_dir("installed");
+  test::spit(installed / "materials.toml", "");
+  const DataDirEnvironment env("/tmp/corlab-data-test");
   EXPECT_EQ(data_directory(), std::filesystem::path("/tmp/corlab-data-test"));
-  ::unsetenv("CORLAB_DATA_DIR");
-  EXPECT_EQ(data_directory(), std::filesystem::path(CORLAB_DATA_DIR));
-  if (old) ::setenv("CORLAB_DATA_DIR", saved.c_str(), 1);
+  EXPECT_EQ(data_directory(installed), std::filesystem::path("/tmp/corlab-data-test"));
+}
+
+TEST(DataDirectory, UnsetOrEmptyTakesTheInstalledCopyElseTheSourceTree) {
+  const auto installed = test::fresh_dir("installed");
+  for (const char* value : {static_cast<const char*>(nullptr), ""}) {
+    SCOPED_TRACE(value == nullptr ? "unset" : "empty");
+    const DataDirEnvironment env(value);
+    EXPECT_EQ(data_directory(), std::filesystem::path(CORLAB_DATA_DIR));
+    // an installed directory without materials.toml is no copy
+    EXPECT_EQ(data_directory(installed), std::filesystem::path(CORLAB_DATA_DIR));
+    EXPECT_EQ(data_directory(installed / "missing"), std::filesystem::path(CORLAB_DATA_DIR));
+    test::spit(installed / "materials.toml", "");
+    EXPECT_EQ(data_directory(installed), installed);
+    std::filesystem::remove(installed / "materials.toml");
+  }
 }
 
 class DatabaseFile : public ::testing::Test {
