@@ -14,20 +14,13 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "support/input_errors.hpp"
 #include "support/scratch_files.hpp"
 
 namespace corlab {
 namespace {
 
-template <class F>
-void expect_input_error(F&& f, const std::string& message) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError; expected: " << message;
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), message);
-  }
-}
+using test::expect_input_error;
 
 Material steel() {
   return Material{.name = "s",

@@ -12,6 +12,7 @@
 #include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "support/input_errors.hpp"
 #include "support/scratch_files.hpp"
 
 namespace corlab::fem {
@@ -19,14 +20,11 @@ namespace {
 
 // The message of the InputError that applying `items` (key=value) and validating throws.
 std::string refusal(const std::vector<std::string>& items) {
-  try {
+  return test::input_error_message([&] {
     ImpactConfig c;
     apply_settings(c, items, "--set");
     validate(c);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  });
 }
 
 struct Reproducer {
@@ -120,12 +118,7 @@ TEST(ConfigLimits, TomlArrayForAScalarAndEmptyNumberAreErrors) {
     return file;
   };
   auto message = [](const std::filesystem::path& f) {
-    try {
-      (void)load_impact_config(f);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return test::input_error_message([&] { (void)load_impact_config(f); });
   };
   EXPECT_EQ(message(write("corlab_cfg_a.toml", "[impact]\nvelocity = [5.0]\n")),
             "invalid impact.velocity = 'an array': must be a single value, not a list");

@@ -7,19 +7,13 @@
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "support/input_errors.hpp"
 #include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::input_error_message;
 
 TEST(ImpactConfig, DefaultsAreThePaperCase) {
   const ImpactConfig c;
@@ -51,18 +45,20 @@ TEST(ImpactConfig, ApplySettingSetsEveryKind) {
 
 TEST(ImpactConfig, ErrorsNameKeyValueAndConstraint) {
   ImpactConfig c;
-  const std::string unknown = error_of([&] { apply_setting(c, "impact.speed", "3"); });
+  const std::string unknown = input_error_message([&] { apply_setting(c, "impact.speed", "3"); });
   EXPECT_NE(unknown.find("impact.speed"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("impact.velocity"), std::string::npos) << unknown;
-  const std::string bad = error_of([&] { apply_setting(c, "impact.velocity", "fast"); });
+  const std::string bad = input_error_message([&] { apply_setting(c, "impact.velocity", "fast"); });
   EXPECT_EQ(bad, "invalid impact.velocity = 'fast': must be a finite number");
   c.impact.velocity = -1.0;
-  const std::string neg = error_of([&] { validate(c); });
+  const std::string neg = input_error_message([&] { validate(c); });
   EXPECT_NE(neg.find("invalid impact.velocity = -1"), std::string::npos) << neg;
   ImpactConfig d;
   d.solver.safety_factor = 1.5;
-  EXPECT_NE(error_of([&] { validate(d); }).find("solver.safety_factor"), std::string::npos);
-  const std::string mat = error_of([&] { apply_setting(d, "sphere.material", "unobtainium"); });
+  EXPECT_NE(input_error_message([&] { validate(d); }).find("solver.safety_factor"),
+            std::string::npos);
+  const std::string mat =
+      input_error_message([&] { apply_setting(d, "sphere.material", "unobtainium"); });
   EXPECT_NE(mat.find("unobtainium"), std::string::npos) << mat;
   EXPECT_EQ(mat.find('\n'), std::string::npos);
 }
@@ -78,9 +74,10 @@ TEST(ImpactConfig, LoadsToml) {
   EXPECT_EQ(c.output.field_times.size(), 2u);
   EXPECT_EQ(c.output.history_every, 4);
   test::spit(file, "[impact]\nvelocty = 2\n");
-  EXPECT_NE(error_of([&] { load_impact_config(file); }).find("impact.velocty"), std::string::npos);
+  EXPECT_NE(input_error_message([&] { load_impact_config(file); }).find("impact.velocty"),
+            std::string::npos);
   test::spit(file, "[impact\nvelocity = 2\n");
-  EXPECT_NE(error_of([&] { load_impact_config(file); }).find("line"), std::string::npos);
+  EXPECT_NE(input_error_message([&] { load_impact_config(file); }).find("line"), std::string::npos);
   std::filesystem::remove_all(file.parent_path());
 }
 
