@@ -1,5 +1,7 @@
 // Dataset export from a sweep directory written with synthetic results: rows in design order,
 // dimensionless inputs, inclusion rule, columns.json matching the header, provenance lines.
+#include "corlab/dataset/dataset_export.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,7 +9,6 @@
 #include <nlohmann/json.hpp>
 
 #include "corlab/core/error.hpp"
-#include "corlab/dataset/dataset_export.hpp"
 #include "corlab/dataset/dataset_spec.hpp"
 #include "corlab/study/results_table.hpp"
 #include "support/scratch_files.hpp"
