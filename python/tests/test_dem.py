@@ -1,6 +1,5 @@
 """Tests of the DEM bindings (corlab.dem): exact chi, impact integration, exports."""
 import json
-import os
 import subprocess
 
 import numpy as np
@@ -83,13 +82,12 @@ def test_bad_input_is_value_error():
         corlab.dem.simulate_impact("hertz", {}, 1.0, 1.0)
 
 
-@pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
-def test_cli_writes_all_files_and_reads_an_fe_table(tmp_path):
+def test_cli_writes_all_files_and_reads_an_fe_table(tmp_path, corlab_bin):
     table = tmp_path / "results.csv"
     table.write_text("case_id,status,velocity,e\n"
                      "a,ok,0.5,0.8\nb,ok,1,0.7\nc,failed,2,\nd,ok,4,0.55\n")
     out = tmp_path / "x"
-    done = subprocess.run([os.environ["CORLAB_BIN"], "dem", "--type", "steel_ma2023:0.004",
+    done = subprocess.run([corlab_bin, "dem", "--type", "steel_ma2023:0.004",
                            "--wall", "steel_ma2023", "--wall-only", "--table", str(table),
                            "--v-min", "0.5", "--v-max", "4", "--fit-points", "4",
                            "--out", str(out)],
@@ -106,9 +104,8 @@ def test_cli_writes_all_files_and_reads_an_fe_table(tmp_path):
     assert fit["parameter"] > 0 and fit["max_abs_error"] < 0.1
 
 
-@pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
-def test_cli_bad_input_is_one_line_and_nonzero(tmp_path):
-    done = subprocess.run([os.environ["CORLAB_BIN"], "dem", "--type", "steel_ma2023:0.004",
+def test_cli_bad_input_is_one_line_and_nonzero(tmp_path, corlab_bin):
+    done = subprocess.run([corlab_bin, "dem", "--type", "steel_ma2023:0.004",
                            "--restitution", "1.5", "--out", str(tmp_path)],
                           capture_output=True, text=True, timeout=60)
     assert done.returncode != 0

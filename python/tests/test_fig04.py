@@ -30,13 +30,12 @@ def test_fig4_without_snapshots_is_missing(tmp_path):
     assert vtu.field_snapshots(str(tmp_path / "nothing")) == []
 
 
-@pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
-def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path):
+def test_reproduce_writes_fields_and_fig4_reads_them(tmp_path, corlab_bin):
     studies = tmp_path / "studies" / "coarse"
     studies.mkdir(parents=True)
     (studies / "verification_hertz.toml").write_text(TINY_HERTZ)
     out = tmp_path / "out"
-    cmd = [os.environ["CORLAB_BIN"], "reproduce", "--preset", "coarse", "--out", str(out),
+    cmd = [corlab_bin, "reproduce", "--preset", "coarse", "--out", str(out),
            "--studies", str(tmp_path / "studies"), "--only", "verification_hertz", "--jobs", "2",
            "--quiet"]
     done = subprocess.run(cmd, capture_output=True, text=True, timeout=300)

@@ -2,7 +2,6 @@
 fit_paper (Ma et al. 2023 forms on a synthetic results.csv)."""
 import csv
 import math
-import os
 import subprocess
 import pathlib
 
@@ -136,7 +135,7 @@ def test_fit_paper_missing_file_is_a_value_error(tmp_path):
         corlab.fit_paper(str(tmp_path / "nope.csv"))
 
 
-def test_fit_lists_every_excluded_row_with_its_reason(tmp_path):
+def test_fit_lists_every_excluded_row_with_its_reason(tmp_path, corlab_bin):
     """issue 12 item 3: rows with e = nan / inf / < 0, failed or elastic are named, not lost."""
     rows = paper_rows()
     bad = {"bad_nan": "nan", "bad_inf": "inf", "bad_negative": "-0.5"}
@@ -157,14 +156,14 @@ def test_fit_lists_every_excluded_row_with_its_reason(tmp_path):
     assert fit["rows"] == len(rows)
     assert fit["rows_excluded"] == len(reasons) == len(rows) - fit["restitution_law"]["points_used"]
     assert fit["restitution_law"]["slope"]["value"] == pytest.approx(0.056, abs=1e-10)
-    if os.environ.get("CORLAB_BIN"):  # the CLI lists them too, one per line
-        out = subprocess.run([os.environ["CORLAB_BIN"], "fit", str(tmp_path / "results.csv")],
-                             capture_output=True, text=True, check=True).stdout
-        assert f"excluded rows ({len(reasons)}):" in out
-        assert "  bad_inf: e = inf\n" in out and "  bad_failed: status = failed\n" in out
+    # the CLI lists them too, one per line
+    out = subprocess.run([corlab_bin, "fit", str(tmp_path / "results.csv")],
+                         capture_output=True, text=True, check=True).stdout
+    assert f"excluded rows ({len(reasons)}):" in out
+    assert "  bad_inf: e = inf\n" in out and "  bad_failed: status = failed\n" in out
 
 
-def test_fit_leaves_out_suspect_runs_unless_asked_and_says_which(tmp_path):
+def test_fit_leaves_out_suspect_runs_unless_asked_and_says_which(tmp_path, corlab_bin):
     """issue 12 item 1: a run flagged suspect (quality guards) is not fitted by default."""
     rows = paper_rows()
     write_results(tmp_path / "clean.csv", rows, extra=["suspect"])
@@ -180,16 +179,15 @@ def test_fit_leaves_out_suspect_runs_unless_asked_and_says_which(tmp_path):
     kept = corlab.fit_paper(str(tmp_path / "results.csv"), include_suspect=True)
     assert "bad_suspect" not in {r["case_id"] for r in kept["excluded"]}
     assert kept["restitution_law"]["points_used"] == clean["points_used"] + 1
-    if os.environ.get("CORLAB_BIN"):
-        cli = [os.environ["CORLAB_BIN"], "fit", str(tmp_path / "results.csv")]
-        out = subprocess.run(cli, capture_output=True, text=True, check=True).stdout
-        assert f"  bad_suspect: suspect ({reason})\n" in out
-        out = subprocess.run(cli + ["--include-suspect"], capture_output=True, text=True,
-                             check=True).stdout
-        assert "bad_suspect" not in out
-        form = ["--form", "e ~ a + s*ln(k1)", "--param", "a=1,s=0.05", "--json"]
-        out = subprocess.run(cli + form, capture_output=True, text=True, check=True).stdout
-        assert "bad_suspect" in out
+    cli = [corlab_bin, "fit", str(tmp_path / "results.csv")]
+    out = subprocess.run(cli, capture_output=True, text=True, check=True).stdout
+    assert f"  bad_suspect: suspect ({reason})\n" in out
+    out = subprocess.run(cli + ["--include-suspect"], capture_output=True, text=True,
+                         check=True).stdout
+    assert "bad_suspect" not in out
+    form = ["--form", "e ~ a + s*ln(k1)", "--param", "a=1,s=0.05", "--json"]
+    out = subprocess.run(cli + form, capture_output=True, text=True, check=True).stdout
+    assert "bad_suspect" in out
 
 
 def test_fit_counts_a_repeated_row_once_and_says_so(tmp_path):

@@ -1,12 +1,9 @@
-"""The reproduction report: figures and HTML from a synthetic output directory, and (with
-CORLAB_BIN set) `corlab reproduce` end to end on a tiny spec, including resuming."""
+"""The reproduction report: figures and HTML from a synthetic output directory, and `corlab
+reproduce` end to end on a tiny spec (the CLI from CORLAB_BIN), including resuming."""
 import csv
 import json
 import math
-import os
 import subprocess
-
-import pytest
 
 import corlab
 from corlab import report
@@ -180,13 +177,12 @@ description = "tiny Table 2 for the test"
 """
 
 
-@pytest.mark.skipif(not os.environ.get("CORLAB_BIN"), reason="CORLAB_BIN not set")
-def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path):
+def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path, corlab_bin):
     studies = tmp_path / "studies" / "coarse"
     studies.mkdir(parents=True)
     (studies / "table2.toml").write_text(TINY_SPEC)
     out = tmp_path / "out"
-    cmd = [os.environ["CORLAB_BIN"], "reproduce", "--preset", "coarse", "--out", str(out),
+    cmd = [corlab_bin, "reproduce", "--preset", "coarse", "--out", str(out),
            "--studies", str(tmp_path / "studies"), "--only", "table2", "--jobs", "2", "--quiet"]
     first = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     assert first.returncode == 0, first.stderr

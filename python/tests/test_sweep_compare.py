@@ -4,6 +4,8 @@ import pathlib
 import subprocess
 import sys
 
+import corlab
+
 SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "tests" / "regression" / "sweep_compare.py"
 HEADER = "case_id,e,e_coarse,energy_balance_error,wall_s\n"
 
@@ -64,3 +66,23 @@ def test_exact_ignores_timing_and_sees_any_other_difference(tmp_path):
     code, text = compare(a, moved)
     assert code == 1
     assert "rows differ" in text
+
+
+def test_exact_leaves_out_every_machine_dependent_column_of_the_table(tmp_path):
+    timing = [f["name"] for f in corlab.result_fields() if f["in_csv"] and f["machine_dependent"]]
+    assert timing, "the table marks no column machine_dependent"
+    header = ["case_id", "e", *timing]
+    a, b = tmp_path / "a.csv", tmp_path / "b.csv"
+    a.write_text(",".join(header) + "\nc1,0.5," + ",".join("1" for _ in timing) + "\n")
+    b.write_text(",".join(header) + "\nc1,0.5," + ",".join("2" for _ in timing) + "\n")
+    assert compare(str(a), str(b), "1") == (0, "identical: 1 rows (timing columns excluded)\n")
+    b.write_text(",".join(header) + "\nc1,0.6," + ",".join("1" for _ in timing) + "\n")
+    assert compare(str(a), str(b))[0] == 1
+
+
+def test_exact_without_the_corlab_module_fails_and_says_so(tmp_path):
+    a = write(tmp_path / "a.csv", [("c1", 0.5, 0.51, 1e-6, 2.0)])
+    # -I: no PYTHONPATH, so no corlab module
+    out = subprocess.run([sys.executable, "-I", str(SCRIPT), a, a], capture_output=True, text=True)
+    assert out.returncode == 2
+    assert "cannot import the corlab module" in out.stderr and "PYTHONPATH" in out.stderr

@@ -31,7 +31,7 @@ const std::vector<LawInfo>& law_catalog() {
       {"hu_guo", "Hu S., Guo X. (2015), Mech. Mach. Theory 85:14-31", "chi = 3(1 - e)/(2 e)",
        Status::kUnverified,
        "one source (issue 11 text); consistent with its stated delivered e = 0.271 at e = 0.3 "
-       "(tests/unit/dem/dem_hysteresis_chi_test). A second, independent implementation (the "
+       "(tests/unit/dem/hysteresis_chi_test). A second, independent implementation (the "
        "DyS multibody code, contact_model.py, 2015-16) uses 3(1 - e)/(4 e), half of it, which "
        "would deliver 0.446 at e = 0.3: the two sources disagree, the paper itself not read"},
       {"carvalho_martins", "Carvalho A.S., Martins J.M. (2019), Mech. Mach. Theory 139:174-194",
@@ -74,7 +74,7 @@ const std::vector<LawInfo>& law_catalog() {
        "Hertz to p_y, then F = F_y + pi p_y R (delta - delta_y); Hertz unloading with R_p",
        Status::kVerifiedSecondSource,
        "e(v) by ODE equals corlab's thornton1997 closed form "
-       "(tests/unit/dem/dem_contact_ode_test)"},
+       "(tests/unit/dem/contact_ode_test)"},
   };
   return catalog;
 }

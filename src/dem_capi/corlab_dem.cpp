@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -50,16 +49,11 @@ corlab_dem_pair* make_pair(const corlab::dem::RestitutionCurve& curve,
   return pair;
 }
 
-// $CORLAB_DATA_DIR, else the installed copy next to this library, else the build's data.
+// The library may run where the source tree is not: data_directory() then takes the copy that
+// `cmake --install` put under the configured prefix.
 const corlab::MaterialDatabase& material_database() {
-  static const corlab::MaterialDatabase db = [] {
-    const std::filesystem::path installed =
-        std::filesystem::path(CORLAB_DEM_INSTALL_DATA_DIR) / "materials.toml";
-    if (std::getenv("CORLAB_DATA_DIR") == nullptr && std::filesystem::exists(installed)) {
-      return corlab::MaterialDatabase::load(installed);
-    }
-    return corlab::MaterialDatabase::builtin();
-  }();
+  static const corlab::MaterialDatabase db = corlab::MaterialDatabase::load(
+      corlab::data_directory(CORLAB_DEM_INSTALL_DATA_DIR) / "materials.toml");
   return db;
 }
 

@@ -48,6 +48,6 @@ cat "$work/resume.err"
 grep -q "$((total - done_rows)) ran (0 failed, 0 not separated), $done_rows already done" \
   "$work/resume.err" || fail "resume did not run exactly the $((total - done_rows)) missing cases"
 "$corlab" sweep "$spec" --out "$work/fresh" --jobs 2 --quiet
-python3 "$here/sweep_compare.py" "$work/fresh/results.csv" "$work/run/results.csv" "$total" ||
+/usr/bin/python3 "$here/sweep_compare.py" "$work/fresh/results.csv" "$work/run/results.csv" "$total" ||
   fail "interrupted + resumed sweep differs from an uninterrupted one"
 echo "PASS"

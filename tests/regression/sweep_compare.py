@@ -1,7 +1,9 @@
 """Compare two sweep results.csv files.
 
-Exact (the regression tests): same header, same rows after sorting by case_id, with the timing
-columns (wall_s, element_steps_per_s) left out. Exit 0 if equal, 1 with a diff line if not.
+Exact (the regression tests): same header, same rows after sorting by case_id, with the
+machine-dependent columns left out (timings, the build: `machine_dependent` in the one table of
+result fields, read through the corlab module, so run with PYTHONPATH=<build>/python). Exit 0 if
+equal, 1 with a diff line if not, 2 if the corlab module cannot be imported.
     python3 sweep_compare.py A.csv B.csv [expected_rows]
 
 Relative (two solver versions, e.g. before and after a change, as the README's and the closing
@@ -13,21 +15,32 @@ balance of each (NaN entries skipped), and the summed wall_s. Exit 1 if the file
 import csv
 import sys
 
-TIMING = {"wall_s", "element_steps_per_s"}
+
+def timing_columns():
+    """The machine-dependent columns of results.csv, from src/fem/solver/result_fields.cpp."""
+    try:
+        import corlab
+    except ImportError as err:
+        print(f"sweep_compare.py: cannot import the corlab module ({err}), which names the timing"
+              " columns: run with PYTHONPATH=<build>/python (built with CORLAB_BUILD_PYTHON=ON)",
+              file=sys.stderr)
+        sys.exit(2)
+    return {f["name"] for f in corlab.result_fields() if f["in_csv"] and f["machine_dependent"]}
 
 
-def load(path):
+def load(path, timing):
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader)
-        keep = [i for i, c in enumerate(header) if c not in TIMING]
+        keep = [i for i, c in enumerate(header) if c not in timing]
         rows = sorted(tuple(r[i] for i in keep) for r in reader)
     return header, rows
 
 
 def exact(argv):
-    ha, a = load(argv[0])
-    hb, b = load(argv[1])
+    timing = timing_columns()
+    ha, a = load(argv[0], timing)
+    hb, b = load(argv[1], timing)
     if ha != hb:
         print(f"headers differ:\n  {ha}\n  {hb}")
         return 1

@@ -58,7 +58,7 @@ interrupt() {
     fail "$sig: rerun failed: $(cat "$dir.last")"
   grep -q "0 ran (0 failed, 0 not separated), $total already done" "$dir.last" ||
     fail "$sig: a rerun after completion had work left: $(cat "$dir.last")"
-  python3 "$here/sweep_compare.py" "$dir/results.csv" "$work/ref/results.csv" "$total" ||
+  /usr/bin/python3 "$here/sweep_compare.py" "$dir/results.csv" "$work/ref/results.csv" "$total" ||
     fail "$sig: $kills interruptions + resume differ from an uninterrupted run"
   echo "$sig: $kills interruptions in $tries starts ($rows rows kept before the last resume), results" \
     "identical to the uninterrupted run (reference ${ref_ms} ms)"

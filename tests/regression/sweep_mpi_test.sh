@@ -13,7 +13,7 @@ total=$("$corlab" sweep "$spec" --dry-run 2>/dev/null | tail -n +2 | wc -l)
 mpirun -n 2 --oversubscribe "$corlab" sweep "$spec" --out "$work/mpi" --quiet 2> "$work/mpi.log"
 cat "$work/mpi.log"
 grep -q "2 MPI ranks" "$work/mpi.log" || { echo "FAIL: the sweep did not run over 2 ranks"; exit 1; }
-python3 "$here/sweep_compare.py" "$work/local/results.csv" "$work/mpi/results.csv" "$total"
+/usr/bin/python3 "$here/sweep_compare.py" "$work/local/results.csv" "$work/mpi/results.csv" "$total"
 
 # Kill simulation: keep the header and 2 rows plus half a row, rerun under MPI.
 csv=$work/mpi/results.csv
@@ -23,5 +23,5 @@ mpirun -n 2 --oversubscribe "$corlab" sweep "$spec" --out "$work/mpi" --quiet 2>
 cat "$work/resume.log"
 grep -q "$((total - 2)) ran (0 failed, 0 not separated), 2 already done" "$work/resume.log" ||
   { echo "FAIL: the resumed MPI sweep did not run exactly the $((total - 2)) missing cases"; exit 1; }
-python3 "$here/sweep_compare.py" "$work/local/results.csv" "$csv" "$total"
+/usr/bin/python3 "$here/sweep_compare.py" "$work/local/results.csv" "$csv" "$total"
 echo "PASS"

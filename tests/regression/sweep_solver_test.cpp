@@ -3,13 +3,14 @@
 // the solver is deterministic across thread counts, and a cancelled sweep resumes to the same
 // table.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 
 #include "corlab/study/results_table.hpp"
 #include "corlab/study/sweep.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::study {
 namespace {
@@ -18,19 +19,15 @@ namespace fs = std::filesystem;
 
 const fs::path kSpec = CORLAB_SOURCE_DIR "/tests/data/sweeps/tiny.toml";
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("corlab_sweep_solver_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
+using test::fresh_path;
 
-/// The table without the timing columns, sorted by case id.
+/// The table without the machine-dependent columns (timing_columns()), sorted by case id.
 std::vector<std::vector<std::string>> comparable(const fs::path& csv) {
   const ResultsTable table = read_results(csv).sorted_by("case_id");
+  const auto& timing = timing_columns();
   std::vector<std::vector<std::string>> rows(table.size());
   for (const auto& column : table.columns()) {
-    if (column == "wall_s" || column == "element_steps_per_s") continue;
+    if (std::find(timing.begin(), timing.end(), column) != timing.end()) continue;
     for (std::size_t r = 0; r < table.size(); ++r) rows[r].push_back(table.cell(r, column));
   }
   return rows;
@@ -45,7 +42,7 @@ SweepOptions options(int jobs) {
 
 TEST(SweepSolver, TinySweepRunsEveryCaseWithPhysicalResults) {
   const SweepSpec spec = load_sweep_spec(kSpec);
-  const fs::path out = fresh_dir("two_threads");
+  const fs::path out = fresh_path("two_threads");
   const SweepSummary summary = run_sweep(spec, out, options(2));
   EXPECT_EQ(summary.total, 6);
   EXPECT_EQ(summary.ran, 6);
@@ -75,8 +72,8 @@ TEST(SweepSolver, TinySweepRunsEveryCaseWithPhysicalResults) {
 
 TEST(SweepSolver, OneThreadAndTwoThreadsGiveTheSameTable) {
   const SweepSpec spec = load_sweep_spec(kSpec);
-  const fs::path one = fresh_dir("one");
-  const fs::path two = fresh_dir("two");
+  const fs::path one = fresh_path("one");
+  const fs::path two = fresh_path("two");
   run_sweep(spec, one, options(1));
   run_sweep(spec, two, options(2));
   EXPECT_EQ(comparable(one / "results.csv"), comparable(two / "results.csv"));
@@ -84,10 +81,10 @@ TEST(SweepSolver, OneThreadAndTwoThreadsGiveTheSameTable) {
 
 TEST(SweepSolver, CancelledSweepKeepsRowsAndResumesToTheSameTable) {
   const SweepSpec spec = load_sweep_spec(kSpec);
-  const fs::path reference = fresh_dir("reference");
+  const fs::path reference = fresh_path("reference");
   run_sweep(spec, reference, options(2));
 
-  const fs::path out = fresh_dir("cancelled");
+  const fs::path out = fresh_path("cancelled");
   std::atomic<bool> cancel{false};
   std::atomic<int> finished{0};
   SweepOptions first = options(1);

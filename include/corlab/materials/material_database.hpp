@@ -20,7 +20,7 @@ class MaterialDatabase {
  public:
   /// Reads a TOML file of [name] tables; throws InputError on a malformed file or entry.
   static MaterialDatabase load(const std::filesystem::path& file);
-  /// The shipped database: $CORLAB_DATA_DIR/materials.toml, else the source tree's data/.
+  /// The shipped database: materials.toml of data_directory().
   static const MaterialDatabase& builtin();
 
   /// Throws InputError "invalid <field> = '<name>': must be one of ..." for an unknown name.
@@ -38,7 +38,9 @@ Material parse_material_spec(std::string_view spec,
                              std::string_view field,
                              const MaterialDatabase& database = MaterialDatabase::builtin());
 
-/// Directory of shipped data files: $CORLAB_DATA_DIR if set, else the source tree's data/.
-std::filesystem::path data_directory();
+/// Directory of shipped data files, the one rule for every caller: $CORLAB_DATA_DIR if set and
+/// not empty; else `installed` if it holds materials.toml (an installed copy: the DEM C library
+/// passes <prefix>/share/corlab of its build); else the source tree's data/.
+std::filesystem::path data_directory(const std::filesystem::path& installed = {});
 
 }  // namespace corlab

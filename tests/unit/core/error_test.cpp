@@ -6,20 +6,15 @@
 #include <limits>
 #include <string>
 
+#include "support/input_errors.hpp"
+
 namespace corlab {
 namespace {
 
-std::string message_of(void (*f)()) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no exception";
-}
+using test::input_error_message;
 
 TEST(InputError, NamesFieldValueAndConstraint) {
-  const std::string msg = message_of([] { require_positive("sphere.E", -2e11, "[Pa]"); });
+  const std::string msg = input_error_message([] { require_positive("sphere.E", -2e11, "[Pa]"); });
   EXPECT_EQ(msg, "invalid sphere.E = -200000000000: must be > 0 [Pa]");
   EXPECT_EQ(msg.find('\n'), std::string::npos);
 }
@@ -34,12 +29,12 @@ TEST(InputError, RejectsNonFiniteValues) {
 TEST(InputError, RangesAreOpenOrClosedAsNamed) {
   EXPECT_THROW(require_open_range("nu", 0.5, -1.0, 0.5), InputError);
   EXPECT_NO_THROW(require_closed_range("x", 0.5, -1.0, 0.5));
-  EXPECT_EQ(message_of([] { require_open_range("substrate.nu", 0.7, -1.0, 0.5); }),
+  EXPECT_EQ(input_error_message([] { require_open_range("substrate.nu", 0.7, -1.0, 0.5); }),
             "invalid substrate.nu = 0.7: must be in (-1, 0.5)");
 }
 
 TEST(InputError, TextValuesAreQuoted) {
-  EXPECT_EQ(message_of([] { throw_invalid("model", "foo", "one of [a, b]"); }),
+  EXPECT_EQ(input_error_message([] { throw_invalid("model", "foo", "one of [a, b]"); }),
             "invalid model = 'foo': must be one of [a, b]");
 }
 

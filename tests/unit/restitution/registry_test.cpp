@@ -11,6 +11,7 @@
 
 #include "corlab/core/error.hpp"
 #include "pairs.hpp"
+#include "support/input_errors.hpp"
 
 namespace corlab::restitution {
 namespace {
@@ -19,16 +20,7 @@ using testing::alumina;
 using testing::aluminium;
 using testing::steel;
 
-// Expects an InputError whose message equals `message`.
-template <class F>
-void expect_input_error(F&& f, const std::string& message) {
-  try {
-    f();
-    ADD_FAILURE() << "no InputError; expected: " << message;
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), message);
-  }
-}
+using test::expect_input_error;
 
 std::vector<double> log_grid(double lo, double hi, int n) {
   std::vector<double> v(n);

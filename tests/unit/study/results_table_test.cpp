@@ -2,41 +2,24 @@
 #include "corlab/study/results_table.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <sstream>
 
 #include "corlab/core/error.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::study {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("corlab_results_table_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void spit(const fs::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  out << text;
-}
+using test::fresh_dir;
+using test::slurp;
+using test::spit;
 
 TEST(Csv, QuotesWhatNeedsQuotingAndSplitsBack) {
   const std::vector<std::string> fields{"plain",    "a,b",          "say \"hi\"", "",

@@ -4,22 +4,16 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "support/input_errors.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::input_error_message;
 
 TEST(ImpactConfig, DefaultsAreThePaperCase) {
   const ImpactConfig c;
@@ -51,45 +45,40 @@ TEST(ImpactConfig, ApplySettingSetsEveryKind) {
 
 TEST(ImpactConfig, ErrorsNameKeyValueAndConstraint) {
   ImpactConfig c;
-  const std::string unknown = error_of([&] { apply_setting(c, "impact.speed", "3"); });
+  const std::string unknown = input_error_message([&] { apply_setting(c, "impact.speed", "3"); });
   EXPECT_NE(unknown.find("impact.speed"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("impact.velocity"), std::string::npos) << unknown;
-  const std::string bad = error_of([&] { apply_setting(c, "impact.velocity", "fast"); });
+  const std::string bad = input_error_message([&] { apply_setting(c, "impact.velocity", "fast"); });
   EXPECT_EQ(bad, "invalid impact.velocity = 'fast': must be a finite number");
   c.impact.velocity = -1.0;
-  const std::string neg = error_of([&] { validate(c); });
+  const std::string neg = input_error_message([&] { validate(c); });
   EXPECT_NE(neg.find("invalid impact.velocity = -1"), std::string::npos) << neg;
   ImpactConfig d;
   d.solver.safety_factor = 1.5;
-  EXPECT_NE(error_of([&] { validate(d); }).find("solver.safety_factor"), std::string::npos);
-  const std::string mat = error_of([&] { apply_setting(d, "sphere.material", "unobtainium"); });
+  EXPECT_NE(input_error_message([&] { validate(d); }).find("solver.safety_factor"),
+            std::string::npos);
+  const std::string mat =
+      input_error_message([&] { apply_setting(d, "sphere.material", "unobtainium"); });
   EXPECT_NE(mat.find("unobtainium"), std::string::npos) << mat;
   EXPECT_EQ(mat.find('\n'), std::string::npos);
 }
 
 TEST(ImpactConfig, LoadsToml) {
-  const auto file = std::filesystem::temp_directory_path() / "corlab_impact_config_test.toml";
-  {
-    std::ofstream out(file);
-    out << "[impact]\nvelocity = 2\n[substrate]\nmaterial = \"steel_ma2023,sy=700e6\"\n"
-           "[output]\ntimes = [1e-5, 3e-5]\nhistory_every = 4\n";
-  }
+  const auto file = test::fresh_dir("config") / "impact.toml";
+  test::spit(file,
+             "[impact]\nvelocity = 2\n[substrate]\nmaterial = \"steel_ma2023,sy=700e6\"\n"
+             "[output]\ntimes = [1e-5, 3e-5]\nhistory_every = 4\n");
   const ImpactConfig c = load_impact_config(file);
   EXPECT_DOUBLE_EQ(c.impact.velocity, 2.0);
   EXPECT_DOUBLE_EQ(*c.substrate.material.yield_stress, 700e6);
   EXPECT_EQ(c.output.field_times.size(), 2u);
   EXPECT_EQ(c.output.history_every, 4);
-  {
-    std::ofstream out(file);
-    out << "[impact]\nvelocty = 2\n";
-  }
-  EXPECT_NE(error_of([&] { load_impact_config(file); }).find("impact.velocty"), std::string::npos);
-  {
-    std::ofstream out(file);
-    out << "[impact\nvelocity = 2\n";
-  }
-  EXPECT_NE(error_of([&] { load_impact_config(file); }).find("line"), std::string::npos);
-  std::filesystem::remove(file);
+  test::spit(file, "[impact]\nvelocty = 2\n");
+  EXPECT_NE(input_error_message([&] { load_impact_config(file); }).find("impact.velocty"),
+            std::string::npos);
+  test::spit(file, "[impact\nvelocity = 2\n");
+  EXPECT_NE(input_error_message([&] { load_impact_config(file); }).find("line"), std::string::npos);
+  std::filesystem::remove_all(file.parent_path());
 }
 
 }  // namespace

@@ -6,37 +6,31 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <regex>
-#include <sstream>
 #include <string>
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/mesh/mesh_quality.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
 
 const std::filesystem::path kMeshDir = std::filesystem::path(CORLAB_DATA_DIR) / "meshes";
 
-std::string read_text(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::slurp;
 
 /// Writes a variant of the example .geo into the build tree and returns its path.
 std::filesystem::path geo_variant(const std::string& name,
                                   const std::string& from,
                                   const std::string& to) {
-  std::string text = read_text(kMeshDir / "example_impact.geo");
+  std::string text = slurp(kMeshDir / "example_impact.geo");
   text = std::regex_replace(text, std::regex(from), to);
   const auto dir = std::filesystem::path(CORLAB_BINARY_DIR) / "test_output" / "gmsh_reader";
   std::filesystem::create_directories(dir);
   const auto path = dir / name;
-  std::ofstream(path) << text;
+  test::spit(path, text);
   return path;
 }
 

@@ -5,11 +5,11 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "corlab/fem/config/config_keys.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -63,7 +63,7 @@ TEST(ImpactOutput, HistoryCsvHasUnitsAndRows) {
       v->push_back(i);
     }
   }
-  const auto file = std::filesystem::temp_directory_path() / "corlab_history_test.csv";
+  const auto file = test::fresh_dir("history") / "history.csv";
   write_history_csv(h, file);
   std::ifstream in(file);
   std::string header;
@@ -72,7 +72,7 @@ TEST(ImpactOutput, HistoryCsvHasUnitsAndRows) {
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, 3);
-  std::filesystem::remove(file);
+  std::filesystem::remove_all(file.parent_path());
 }
 
 }  // namespace

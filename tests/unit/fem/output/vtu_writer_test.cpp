@@ -4,13 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <regex>
 #include <sstream>
 #include <string>
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -21,12 +21,7 @@ std::filesystem::path out_dir() {
   return dir;
 }
 
-std::string read_text(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::slurp;
 
 long count(const std::string& text, const std::string& what) {
   long n = 0;
@@ -74,7 +69,7 @@ TEST(VtuWriter, WritesAWellFormedFileWithFields) {
   snap.plastic_strain.assign(ne, 0.01);
   const auto path = out_dir() / "snapshot.vtu";
   write_vtu(path, snap);
-  const std::string text = read_text(path);
+  const std::string text = slurp(path);
   // XML well-formedness (balanced elements of this flat schema)
   EXPECT_EQ(text.rfind("<?xml", 0), 0u);
   EXPECT_EQ(count(text, "<DataArray"), count(text, "</DataArray>"));

@@ -1,5 +1,7 @@
 // The impact integrator against closed forms: Hertz (e = 1, contact time, max overlap), linear
 // spring-dashpot, Thornton (1997) closed-form CoR, Tsuji/LAMMPS mapping.
+#include "corlab/dem/contact_ode.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "corlab/core/error.hpp"
 #include "corlab/core/units.hpp"
 #include "corlab/dem/calibration.hpp"
-#include "corlab/dem/contact_ode.hpp"
 #include "corlab/dem/lammps_mapping.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/thornton1997.hpp"

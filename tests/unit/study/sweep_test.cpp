@@ -1,12 +1,12 @@
 // run_sweep machinery with injected runners (no solver): rows, resume, interruption, failures,
 // threads. The end-to-end run with the real solver is tests/regression/sweep_solver_test.cpp.
+#include "corlab/study/sweep.hpp"
+
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <set>
@@ -14,9 +14,8 @@
 #include <thread>
 
 #include "corlab/core/error.hpp"
-#include "corlab/study/progress.hpp"
 #include "corlab/study/results_table.hpp"
-#include "corlab/study/sweep.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::study {
 namespace {
@@ -38,19 +37,9 @@ name = "fake"
 "substrate.material" = "steel_ma2023"
 )";
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("corlab_sweep_run_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using test::fresh_path;
+using test::slurp;
+using test::spit;
 
 /// A deterministic stand-in for fem::simulate that counts its calls and the configs it saw.
 struct FakeSolver {
@@ -98,7 +87,7 @@ SweepOptions quiet(FakeSolver& solver, int jobs) {
 
 TEST(Sweep, RunsEveryCaseAndWritesOneRowEach) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
-  const fs::path out = fresh_dir("all");
+  const fs::path out = fresh_path("all");
   FakeSolver solver;
   const SweepSummary summary = run_sweep(spec, out, quiet(solver, 2));
   EXPECT_EQ(summary.total, 12);
@@ -131,7 +120,7 @@ TEST(Sweep, RunsEveryCaseAndWritesOneRowEach) {
 
 TEST(Sweep, RerunOfAFinishedSweepRunsNothing) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
-  const fs::path out = fresh_dir("rerun");
+  const fs::path out = fresh_path("rerun");
   FakeSolver first;
   run_sweep(spec, out, quiet(first, 2));
   const std::string before = slurp(out / "results.csv");
@@ -145,7 +134,7 @@ TEST(Sweep, RerunOfAFinishedSweepRunsNothing) {
 
 TEST(Sweep, ResumesAfterAKillWithoutRerunningFinishedCases) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
-  const fs::path out = fresh_dir("resume");
+  const fs::path out = fresh_path("resume");
   FakeSolver first;
   run_sweep(spec, out, quiet(first, 1));
   // Simulate a kill: keep the header and 8 rows, then half of the 9th row.
@@ -157,10 +146,7 @@ TEST(Sweep, ResumesAfterAKillWithoutRerunningFinishedCases) {
   std::string killed;
   for (std::size_t i = 0; i < 9; ++i) killed += lines[i] + "\n";
   killed += lines[9].substr(0, lines[9].size() / 2);
-  {
-    std::ofstream file(out / "results.csv", std::ios::binary | std::ios::trunc);
-    file << killed;
-  }
+  spit(out / "results.csv", killed);
   FakeSolver second;
   const SweepSummary summary = run_sweep(spec, out, quiet(second, 2));
   EXPECT_EQ(second.calls.load(), 4) << "only the 3 missing cases and the partial one rerun";
@@ -184,7 +170,7 @@ TEST(Sweep, ResumesAfterAKillWithoutRerunningFinishedCases) {
 
 TEST(Sweep, InterruptionKeepsFinishedRowsAndARerunCompletes) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
-  const fs::path out = fresh_dir("cancel");
+  const fs::path out = fresh_path("cancel");
   std::atomic<bool> cancel{false};
   FakeSolver solver;
   solver.sleep = std::chrono::milliseconds(5);
@@ -215,7 +201,7 @@ TEST(Sweep, InterruptionKeepsFinishedRowsAndARerunCompletes) {
 
 TEST(Sweep, FailedCasesAreRecordedAndDoNotStopTheSweep) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
-  const fs::path out = fresh_dir("failed");
+  const fs::path out = fresh_path("failed");
   FakeSolver solver;
   solver.fail_at_velocity = 5.0;
   solver.not_separated_at_velocity = 20.0;
@@ -253,7 +239,7 @@ name = "many"
 "sphere.rho" = [1000, 2000, 3000, 4000, 5000]
 )";
   const SweepSpec spec = parse_sweep_spec(spec_text, "many.toml");
-  const fs::path out = fresh_dir("threads");
+  const fs::path out = fresh_path("threads");
   FakeSolver solver;
   const SweepSummary summary = run_sweep(spec, out, quiet(solver, 8));
   EXPECT_EQ(summary.ran, 80);
@@ -263,7 +249,7 @@ name = "many"
 }
 
 TEST(Sweep, RefusesAResultsTableOfAnotherSpec) {
-  const fs::path out = fresh_dir("other");
+  const fs::path out = fresh_path("other");
   FakeSolver solver;
   run_sweep(parse_sweep_spec(kSpec, "fake.toml"), out, quiet(solver, 1));
   const SweepSpec other =
@@ -274,7 +260,7 @@ TEST(Sweep, RefusesAResultsTableOfAnotherSpec) {
 
 TEST(Sweep, TwoSweepsCannotShareADirectoryAtOnce) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
-  const fs::path out = fresh_dir("lock");
+  const fs::path out = fresh_path("lock");
   std::atomic<bool> release{false};
   std::atomic<bool> started{false};
   SweepOptions slow;
@@ -297,49 +283,9 @@ TEST(Sweep, TwoSweepsCannotShareADirectoryAtOnce) {
   EXPECT_EQ(solver.calls.load(), 0);
 }
 
-TEST(Progress, EtaAndText) {
-  EXPECT_LT(eta_seconds(-1.0, 10, 2), 0.0);
-  EXPECT_EQ(eta_seconds(3.0, 10, 2), 15.0);
-  EXPECT_EQ(eta_seconds(3.0, 3, 2), 6.0);
-  EXPECT_EQ(eta_seconds(3.0, 0, 2), 0.0);
-  EXPECT_EQ(format_duration(-1), "--");
-  EXPECT_EQ(format_duration(12.4), "12s");
-  EXPECT_EQ(format_duration(185), "3m05s");
-  EXPECT_EQ(format_duration(3720), "1h02m");
-  const std::string text = progress_text(6, 12, 185, 185, 1);
-  EXPECT_NE(text.find("6/12"), std::string::npos) << text;
-  EXPECT_NE(text.find(" 50%"), std::string::npos) << text;
-  EXPECT_NE(text.find("elapsed 3m05s"), std::string::npos) << text;
-  EXPECT_NE(text.find("ETA 3m05s"), std::string::npos) << text;
-  EXPECT_NE(text.find("(1 failed)"), std::string::npos) << text;
-}
-
-TEST(Progress, PlainLinesWhenNotATerminal) {
-  std::FILE* file = std::tmpfile();
-  ASSERT_NE(file, nullptr);
-  ProgressBar bar(file, 4, 2, /*terminal=*/0);
-  bar.update(0, 0, -1.0, true);
-  bar.update(1, 0, 1.0);  // throttled: not drawn
-  bar.update(2, 0, 1.0);  // throttled
-  bar.finish();
-  std::rewind(file);
-  std::string text;
-  for (int c; (c = std::fgetc(file)) != EOF;) text += static_cast<char>(c);
-  std::fclose(file);
-  EXPECT_EQ(text.find('\r'), std::string::npos);
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 2) << text;
-  EXPECT_NE(text.find("2/4"), std::string::npos) << text;
-}
-
-}  // namespace
-}  // namespace corlab::study
-
-namespace corlab::study {
-namespace {
-
 TEST(Sweep, OnlyRunsTheSelectedCasesAndCountsThemAsTheTotal) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
-  const fs::path out = fresh_dir("only");
+  const fs::path out = fresh_path("only");
   FakeSolver solver;
   SweepOptions options = quiet(solver, 1);
   options.only = parse_case_selection("0,2-3,11,3,0", spec.run_count(), "--only");  // repeats
@@ -362,7 +308,7 @@ TEST(Sweep, InOrderRunsTheSpecsOrderElseLongestFirst) {
   const SweepSpec spec = parse_sweep_spec(kSpec, "fake.toml");
   const auto runs = spec.expand();
   for (const bool in_order : {true, false}) {
-    const fs::path out = fresh_dir(in_order ? "in_order" : "longest_first");
+    const fs::path out = fresh_path(in_order ? "in_order" : "longest_first");
     FakeSolver solver;
     SweepOptions options = quiet(solver, 1);  // one worker: rows in the order run
     options.spec_order = in_order;

@@ -1,5 +1,7 @@
 // Exact hysteresis-damping relation chi (1+e) = ln[(1+chi)/(1-e chi)]: closed form, ODE, published
 // approximations.
+#include "corlab/dem/hysteresis_chi.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "corlab/core/error.hpp"
 #include "corlab/dem/calibration.hpp"
 #include "corlab/dem/contact_ode.hpp"
-#include "corlab/dem/hysteresis_chi.hpp"
 
 namespace corlab::dem {
 namespace {

@@ -1,4 +1,6 @@
 // Fits of one-parameter laws to a target e(v), tables and their interpolation error.
+#include "corlab/dem/calibration.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/units.hpp"
-#include "corlab/dem/calibration.hpp"
 #include "corlab/dem/contact_ode.hpp"
 #include "corlab/dem/hysteresis_chi.hpp"
 #include "corlab/dem/uniform_table.hpp"

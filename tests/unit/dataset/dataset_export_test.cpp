@@ -1,30 +1,24 @@
 // Dataset export from a sweep directory written with synthetic results: rows in design order,
 // dimensionless inputs, inclusion rule, columns.json matching the header, provenance lines.
+#include "corlab/dataset/dataset_export.hpp"
+
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "corlab/core/error.hpp"
-#include "corlab/dataset/dataset_export.hpp"
 #include "corlab/dataset/dataset_spec.hpp"
 #include "corlab/study/results_table.hpp"
+#include "support/scratch_files.hpp"
 
 namespace corlab::dataset {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("corlab_export_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using test::fresh_dir;
 
 // A sweep directory of the 8-point design whose points 1, 2, 4, 5, 6 finished (out of order):
 // 2 clean, 4 with a 1 % energy balance, 5 not separated, 6 with a hourglass flag.
@@ -32,7 +26,7 @@ fs::path synthetic_sweep() {
   const fs::path dir = fresh_dir("sweep");
   const std::string text =
       dataset_spec_toml(DatasetDesign{.name = "t", .points = 8, .box = {}}, "test");
-  std::ofstream(dir / "spec.toml") << text;
+  test::spit(dir / "spec.toml", text);
   const study::SweepSpec spec = study::parse_sweep_spec(text, "spec.toml");
   const auto runs = spec.expand();
   const auto keys = spec.swept_keys();
@@ -104,8 +98,8 @@ TEST(DatasetExport, RowsInDesignOrderWithInputsAndTheInclusionRule) {
 
 TEST(DatasetExport, RefusesResultsOfAnotherSpec) {
   const fs::path sweep = synthetic_sweep();
-  std::ofstream(sweep / "spec.toml")
-      << dataset_spec_toml(DatasetDesign{.name = "t", .points = 2, .box = {}}, "test");
+  test::spit(sweep / "spec.toml",
+             dataset_spec_toml(DatasetDesign{.name = "t", .points = 2, .box = {}}, "test"));
   try {
     (void)export_dataset(sweep, fresh_dir("foreign"));
     FAIL() << "exported results of another spec";

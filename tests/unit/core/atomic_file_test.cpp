@@ -1,0 +1,28 @@
+// File replacement (atomic_file.hpp): new content in one step, no temporary left behind.
+#include "corlab/core/atomic_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "support/scratch_files.hpp"
+
+namespace corlab {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(AtomicFile, ReplacesTheContentAndLeavesNoTemporary) {
+  const fs::path dir = test::fresh_dir("atomic");
+  const fs::path file = dir / "a.json";
+  write_file_atomically(file, "first");
+  write_file_atomically(file, "second\n");
+  EXPECT_EQ(test::slurp(file), "second\n");
+  EXPECT_FALSE(fs::exists(dir / "a.json.tmp"));
+  EXPECT_THROW(write_file_atomically(dir / "no" / "such" / "dir.json", "x"), std::runtime_error);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace corlab

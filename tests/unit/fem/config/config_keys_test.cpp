@@ -1,0 +1,32 @@
+// The one table of config keys (config_keys.hpp): it drives --help, and every key takes the text
+// of its default.
+#include "corlab/fem/config/config_keys.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "corlab/fem/config/impact_config.hpp"
+
+namespace corlab::fem {
+namespace {
+
+TEST(ConfigKeys, TableDrivesHelpAndCoversEveryKey) {
+  const std::string help = config_keys_help();
+  for (const auto& key : config_keys()) {
+    EXPECT_NE(help.find(std::string(key.key)), std::string::npos) << key.key;
+    EXPECT_FALSE(key.doc.empty()) << key.key;
+    // Every key can be set from the text of its default.
+    ImpactConfig c;
+    if (key.kind == KeyKind::material || key.kind == KeyKind::path) continue;
+    EXPECT_NO_THROW(set_config_key(c, key.key, config_value_text(ImpactConfig{}, key.key)))
+        << key.key;
+    EXPECT_NO_THROW(validate(c)) << key.key;
+  }
+  EXPECT_NE(help.find("solver.max_steps"), std::string::npos);
+  // The defaults lie inside every range.
+  EXPECT_NO_THROW(validate_key_ranges(ImpactConfig{}));
+}
+
+}  // namespace
+}  // namespace corlab::fem
