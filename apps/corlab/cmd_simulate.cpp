@@ -70,7 +70,7 @@ int run_simulate(const SimulateOptions& opt) {
     fmt::print(
         "e = {:.4f}  e_energy = {:.4f}  F_max = {:.5g} N  delta_max = {:.5g} m  t_contact = {:.5g} "
         "s  energy_balance_error = {:.2e}  elements = {}  steps = {}  wall = {:.2f} s\n",
-        result.e, result.e_energy, result.force_max, result.indentation_max, result.contact_time,
+        result.e, result.e_energy, result.F_max, result.delta_max, result.t_contact,
         result.energy_balance_error, result.elements, result.steps, result.wall_s);
   } else {
     fmt::print(

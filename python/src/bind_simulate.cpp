@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <variant>
 
 #include "bindings.hpp"
@@ -12,6 +13,7 @@
 #include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/output/impact_output.hpp"
+#include "corlab/fem/solver/history_columns.hpp"
 #include "corlab/fem/solver/result_fields.hpp"
 #include "corlab/fem/solver/simulate.hpp"
 
@@ -72,6 +74,70 @@ py::list result_fields_list() {
   return fields;
 }
 
+py::list history_columns_list() {
+  py::list columns;
+  for (const auto& c : fem::history_columns()) {
+    py::dict d;
+    d["name"] = std::string(c.name);
+    d["unit"] = std::string(c.unit);
+    d["description"] = std::string(c.description);
+    d["csv_header"] = fem::history_csv_header(c);
+    columns.append(d);
+  }
+  return columns;
+}
+
+/// A field's value as Python: None-like NaN for an empty value (e of a failed run), else the
+/// value itself.
+py::object field_object(const fem::FieldValue& value) {
+  return std::visit(
+      [](const auto& v) -> py::object {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>) {
+          return py::float_(std::numeric_limits<double>::quiet_NaN());
+        } else {
+          return py::cast(v);
+        }
+      },
+      value);
+}
+
+/// A JSON value (the config echo) as Python objects.
+py::object json_object(const nlohmann::json& j) {
+  if (j.is_object()) {
+    py::dict d;
+    for (const auto& [key, value] : j.items()) d[py::str(key)] = json_object(value);
+    return d;
+  }
+  if (j.is_array()) {
+    py::list l;
+    for (const auto& value : j) l.append(json_object(value));
+    return l;
+  }
+  if (j.is_boolean()) return py::bool_(j.get<bool>());
+  if (j.is_number_integer()) return py::int_(j.get<long long>());
+  if (j.is_number()) return py::float_(j.get<double>());
+  if (j.is_string()) return py::str(j.get<std::string>());
+  return py::none();
+}
+
+/// simulate()'s dict: the summary fields of the result-field table, "config" (the echo of every
+/// config key) and "history" (one numpy array per history column).
+py::dict result_dict(const fem::ImpactResult& result, const fem::ImpactConfig& config) {
+  py::dict out;
+  const fem::FieldInput in{&result, &config, result.wall_s};
+  for (const auto& f : fem::result_fields()) {
+    if ((f.outputs & fem::kSummary) != 0) out[py::str(std::string(f.name))] = field_object(f.value(in));
+  }
+  out["config"] = json_object(fem::config_to_json(config));
+  py::dict history;
+  for (const auto& c : fem::history_columns()) {
+    history[py::str(std::string(c.name))] = to_numpy(result.history.*c.series);
+  }
+  out["history"] = history;
+  return out;
+}
+
 }  // namespace
 
 void bind_simulate(py::module_& m) {
@@ -80,6 +146,11 @@ void bind_simulate(py::module_& m) {
         "with name, unit (SI; '-' dimensionless), description, kind (real | integer | boolean | "
         "text), in_summary (simulate()'s dict, summary.json), in_csv (a sweep's results.csv, in "
         "column order) and machine_dependent (timings).");
+
+  m.def("history_columns", &history_columns_list,
+        "The time histories' columns (one table in C++, src/fem/solver/history_columns.cpp): a "
+        "list of dicts with name (simulate()['history'] key), unit (SI; '-' dimensionless), "
+        "description and csv_header (history.csv's column).");
 
   m.def(
       "simulate",
@@ -98,37 +169,7 @@ void bind_simulate(py::module_& m) {
           py::gil_scoped_release release;
           result = fem::simulate(config);
         }
-        const nlohmann::json summary = fem::summary_to_json(result, config);
-        py::dict out;
-        for (const auto& [key, value] : summary.items()) {
-          if (value.is_number_float()) {
-            out[py::str(key)] = value.get<double>();
-          } else if (value.is_number_integer()) {
-            out[py::str(key)] = value.get<long long>();
-          } else if (value.is_boolean()) {
-            out[py::str(key)] = value.get<bool>();
-          } else if (value.is_string()) {
-            out[py::str(key)] = value.get<std::string>();
-          } else if (value.is_null()) {
-            out[py::str(key)] = std::numeric_limits<double>::quiet_NaN();  // e of a failed run
-          }
-        }
-        out["config"] = py::module_::import("json").attr("loads")(summary["config"].dump());
-        const fem::ImpactHistory& h = result.history;
-        py::dict hist;
-        hist["time"] = to_numpy(h.time);
-        hist["contact_force"] = to_numpy(h.contact_force);
-        hist["indentation"] = to_numpy(h.indentation);
-        hist["sphere_velocity"] = to_numpy(h.sphere_velocity);
-        hist["kinetic_energy"] = to_numpy(h.kinetic_energy);
-        hist["strain_energy"] = to_numpy(h.strain_energy);
-        hist["plastic_dissipation"] = to_numpy(h.plastic_dissipation);
-        hist["hourglass_energy"] = to_numpy(h.hourglass_energy);
-        hist["viscous_dissipation"] = to_numpy(h.viscous_dissipation);
-        hist["contact_energy"] = to_numpy(h.contact_energy);
-        hist["energy_balance_error"] = to_numpy(h.energy_balance_error);
-        out["history"] = hist;
-        return out;
+        return result_dict(result, config);
       },
       py::arg("settings") = py::dict(), py::arg("config_file") = py::none(),
       R"(Runs one explicit FE impact (elastic sphere on an elastic-plastic substrate).

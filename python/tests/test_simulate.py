@@ -80,3 +80,33 @@ def test_result_fields_are_the_summary_keys_and_the_csv_columns():
     r = corlab.simulate({**SMALL, "impact.velocity": 1.0, "substrate.sigma_y": "none"})
     summary = {f["name"] for f in fields if f["in_summary"]}
     assert set(r) - {"config", "history"} == summary
+
+
+def test_history_columns_are_the_history_keys_and_the_csv_header(tmp_path, corlab_bin):
+    """One table (history_columns.cpp): simulate()'s history arrays and history.csv's header."""
+    import csv
+    import json
+    import subprocess
+    columns = corlab.history_columns()
+    names = [c["name"] for c in columns]
+    assert names[0] == "time" and "energy_balance_error" in names
+    assert all(c["unit"] and c["description"] for c in columns)
+    settings = {**SMALL, "impact.velocity": 1.0, "substrate.sigma_y": "none"}
+    r = corlab.simulate(settings)
+    assert list(r["history"]) == names
+    cmd = [corlab_bin, "simulate", "--quiet", "--out", str(tmp_path)]
+    for key, value in settings.items():
+        cmd += ["--set", f"{key}={value}"]
+    subprocess.run(cmd, check=True)
+    with open(tmp_path / "history.csv") as f:
+        rows = list(csv.reader(f))
+    assert rows[0] == [c["csv_header"] for c in columns]
+    assert rows[0][:2] == ["time_s", "contact_force_N"]
+    assert len(rows) - 1 == len(r["history"]["time"])
+    # The dict is summary.json's fields: the same names and, for the numbers, the same values.
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    for f in corlab.result_fields():
+        if f["in_summary"] and not f["machine_dependent"] and f["kind"] != "text":
+            want = summary[f["name"]]
+            got = r[f["name"]]
+            assert (want is None and np.isnan(got)) or got == want, f["name"]

@@ -99,7 +99,7 @@ ImpactResult finish(const ImpactModel& m,
   res.separated = clean;
   res.e = clean ? s.sphere_velocity / m.velocity : kNaN;
   res.e_energy = clean ? std::sqrt(std::max(ke_final, 0.0) / e0) : kNaN;
-  res.contact_time = rule.contact_time();
+  res.t_contact = rule.contact_time();
   res.crater_depth = z_axis_surface - s.z[m.masters[0]];
   res.plastic_strain_max = s.eps_p_max;
   res.energy_sphere_loss = e0 - ke_final;
@@ -108,8 +108,8 @@ ImpactResult finish(const ImpactModel& m,
   res.energy_viscous = s.energy.viscous;
   res.energy_balance_error = balance_max;
   res.hysteresis_area = s.hysteresis.area;
-  res.force_max = s.force_max;
-  res.indentation_max = s.hysteresis.indentation_max;
+  res.F_max = s.force_max;
+  res.delta_max = s.hysteresis.indentation_max;
   res.penetration_max = s.penetration_max;
   res.substrate_von_mises_max = substrate_von_mises_max(m, s);
   res.steps = s.step;

@@ -54,6 +54,18 @@ constexpr ResultField member(std::string_view name,
   return {name, unit, description, member_kind<Member>(), &result_member<Member>, outputs};
 }
 
+/// The same for a machine-dependent member (timings, instruction set): left out when two runs
+/// are compared.
+template <auto Member>
+constexpr ResultField machine_member(std::string_view name,
+                                     std::string_view unit,
+                                     std::string_view description,
+                                     std::uint8_t outputs) {
+  ResultField f = member<Member>(name, unit, description, outputs);
+  f.machine_dependent = true;
+  return f;
+}
+
 /// A real-valued field computed from the case's inputs (written for failed runs too).
 constexpr ResultField derived(std::string_view name,
                               std::string_view unit,
@@ -86,51 +98,55 @@ FieldValue k1_of(const FieldInput& in) {
 
 using R = ImpactResult;
 
+// A field that is the ImpactResult member of the same name (written once, so the two cannot
+// drift), machine-dependent or not.
+#define CORLAB_RESULT_MEMBER(member_name, ...) member<&R::member_name>(#member_name, __VA_ARGS__)
+#define CORLAB_MACHINE_MEMBER(member_name, ...) \
+  machine_member<&R::member_name>(#member_name, __VA_ARGS__)
+
 // The order is the results.csv column order (existing files are resumed only with the same
 // header): add a CSV field at the end of the result members, before the derived inputs.
 const std::array kFields{
-    member<&R::e>("e", "-", "CoR from momentum: rebound / impact c.o.m. velocity", kBoth),
-    member<&R::e_energy>("e_energy", "-", "CoR from the sphere's rebound kinetic energy", kBoth),
-    member<&R::force_max>("F_max", "N", "largest contact force", kBoth),
-    member<&R::indentation_max>("delta_max", "m", "largest indentation", kBoth),
-    member<&R::contact_time>("t_contact", "s", "duration of contact", kBoth),
-    member<&R::crater_depth>("crater_depth", "m", "residual surface depth on the axis", kBoth),
-    member<&R::plastic_strain_max>("plastic_strain_max", "-", "largest plastic strain", kBoth),
-    member<&R::energy_initial>("energy_initial", "J", "sphere kinetic energy at impact", kBoth),
-    member<&R::energy_sphere_loss>("energy_sphere_loss", "J", "initial - rebound KE", kBoth),
-    member<&R::energy_dissipated_plastic>("energy_dissipated_plastic", "J", "plastic work", kBoth),
-    member<&R::energy_hourglass>("energy_hourglass", "J", "hourglass energy at the end", kBoth),
-    member<&R::energy_viscous>("energy_viscous", "J", "bulk-viscosity dissipation", kSummary),
-    member<&R::energy_balance_error>("energy_balance_error", "-", "max |balance| / initial", kBoth),
-    member<&R::hysteresis_area>("hysteresis_area", "J", "closed integral of F d(delta)", kBoth),
-    member<&R::penetration_max>("penetration_max", "m", "largest penalty penetration", kSummary),
-    member<&R::separated>("separated", "-", "the sphere left before t_max", kSummary),
-    member<&R::elements>("elements", "-", "elements of the mesh", kBoth),
-    member<&R::nodes>("nodes", "-", "nodes of the mesh", kSummary),
-    member<&R::steps>("steps", "-", "time steps taken", kBoth),
-    member<&R::element_updates>(
-        "element_updates", "-", "element updates done (subcycling: < elements x steps)", kSummary),
-    member<&R::h_contact>("h_contact", "m", "element size at the contact", kSummary),
-    member<&R::time_step>("time_step", "s", "initial stable time step", kSummary),
-    member<&R::end_time>("end_time", "s", "simulated time at the end", kSummary),
+    CORLAB_RESULT_MEMBER(e, "-", "CoR from momentum: rebound / impact c.o.m. velocity", kBoth),
+    CORLAB_RESULT_MEMBER(e_energy, "-", "CoR from the sphere's rebound kinetic energy", kBoth),
+    CORLAB_RESULT_MEMBER(F_max, "N", "largest contact force", kBoth),
+    CORLAB_RESULT_MEMBER(delta_max, "m", "largest indentation", kBoth),
+    CORLAB_RESULT_MEMBER(t_contact, "s", "duration of contact", kBoth),
+    CORLAB_RESULT_MEMBER(crater_depth, "m", "residual surface depth on the axis", kBoth),
+    CORLAB_RESULT_MEMBER(plastic_strain_max, "-", "largest plastic strain", kBoth),
+    CORLAB_RESULT_MEMBER(energy_initial, "J", "sphere kinetic energy at impact", kBoth),
+    CORLAB_RESULT_MEMBER(energy_sphere_loss, "J", "initial - rebound KE", kBoth),
+    CORLAB_RESULT_MEMBER(energy_dissipated_plastic, "J", "plastic work", kBoth),
+    CORLAB_RESULT_MEMBER(energy_hourglass, "J", "hourglass energy at the end", kBoth),
+    CORLAB_RESULT_MEMBER(energy_viscous, "J", "bulk-viscosity dissipation", kSummary),
+    CORLAB_RESULT_MEMBER(energy_balance_error, "-", "max |balance| / initial", kBoth),
+    CORLAB_RESULT_MEMBER(hysteresis_area, "J", "closed integral of F d(delta)", kBoth),
+    CORLAB_RESULT_MEMBER(penetration_max, "m", "largest penalty penetration", kSummary),
+    CORLAB_RESULT_MEMBER(separated, "-", "the sphere left before t_max", kSummary),
+    CORLAB_RESULT_MEMBER(elements, "-", "elements of the mesh", kBoth),
+    CORLAB_RESULT_MEMBER(nodes, "-", "nodes of the mesh", kSummary),
+    CORLAB_RESULT_MEMBER(steps, "-", "time steps taken", kBoth),
+    CORLAB_RESULT_MEMBER(
+        element_updates, "-", "element updates done (subcycling: < elements x steps)", kSummary),
+    CORLAB_RESULT_MEMBER(h_contact, "m", "element size at the contact", kSummary),
+    CORLAB_RESULT_MEMBER(time_step, "s", "initial stable time step", kSummary),
+    CORLAB_RESULT_MEMBER(end_time, "s", "simulated time at the end", kSummary),
     ResultField{"wall_s", "s", "wall-clock time of the run", FieldKind::real, &wall_time, kBoth,
                 true},
-    ResultField{"element_steps_per_s", "1/s", "throughput", FieldKind::real,
-                &result_member<&R::element_steps_per_s>, kBoth, true},
-    member<&R::e_error>("e_error", "-", "discretisation-error estimate of e (two-grid GCI)", kBoth),
-    member<&R::e_coarse>(
-        "e_coarse", "-", "e on the mesh twice as coarse (error-bar companion)", kBoth),
-    member<&R::suspect>("suspect", "-", "why the run is suspect (empty: it is not)", kBoth),
-    member<&R::status>("status", "-", "how the run ended (run_status.hpp)", kSummary),
-    member<&R::status_detail>(
-        "status_detail", "-", "one line on a run that did not rebound", kSummary),
-    member<&R::substrate_von_mises_max>(
-        "substrate_von_mises_max", "Pa", "largest substrate von Mises stress at the end", kSummary),
-    member<&R::mass_scaling>("mass_scaling", "-", "base step / the physical one (1 = none)", kBoth),
-    member<&R::added_mass_fraction>(
-        "added_mass_fraction", "-", "mass added by mass scaling / sphere mass", kBoth),
-    ResultField{"simd", "-", "instruction set of the solver's hot loops (CORLAB_SIMD)",
-                FieldKind::text, &result_member<&R::simd>, kSummary, true},
+    CORLAB_MACHINE_MEMBER(element_steps_per_s, "1/s", "throughput", kBoth),
+    CORLAB_RESULT_MEMBER(e_error, "-", "discretisation-error estimate of e (two-grid GCI)", kBoth),
+    CORLAB_RESULT_MEMBER(
+        e_coarse, "-", "e on the mesh twice as coarse (error-bar companion)", kBoth),
+    CORLAB_RESULT_MEMBER(suspect, "-", "why the run is suspect (empty: it is not)", kBoth),
+    CORLAB_RESULT_MEMBER(status, "-", "how the run ended (run_status.hpp)", kSummary),
+    CORLAB_RESULT_MEMBER(status_detail, "-", "one line on a run that did not rebound", kSummary),
+    CORLAB_RESULT_MEMBER(
+        substrate_von_mises_max, "Pa", "largest substrate von Mises stress at the end", kSummary),
+    CORLAB_RESULT_MEMBER(mass_scaling, "-", "base step / the physical one (1 = none)", kBoth),
+    CORLAB_RESULT_MEMBER(
+        added_mass_fraction, "-", "mass added by mass scaling / sphere mass", kBoth),
+    CORLAB_MACHINE_MEMBER(
+        simd, "-", "instruction set of the solver's hot loops (CORLAB_SIMD)", kSummary),
     ResultField{"corlab_build", "-", "corlab version and git commit of the run (provenance)",
                 FieldKind::text,
                 [](const FieldInput&) -> FieldValue { return std::string(build_id()); }, kBoth,
@@ -151,6 +167,9 @@ const std::array kFields{
             "impact velocity",
             [](const FieldInput& in) -> FieldValue { return in.config->impact.velocity; }),
 };
+
+#undef CORLAB_RESULT_MEMBER
+#undef CORLAB_MACHINE_MEMBER
 
 }  // namespace
 

@@ -16,9 +16,9 @@ std::string suspect_reason(const ImpactResult& r, const QualityLimits& limits) {
     return fmt::format("hourglass energy {:.3g} % of the initial energy (limit {:.3g} %)",
                        100.0 * hourglass, 100.0 * limits.hourglass_energy);
   }
-  if (r.indentation_max > 0.0 && r.penetration_max > limits.penetration * r.indentation_max) {
+  if (r.delta_max > 0.0 && r.penetration_max > limits.penetration * r.delta_max) {
     return fmt::format("contact penetration {:.3g} % of the indentation (limit {:.3g} %)",
-                       100.0 * r.penetration_max / r.indentation_max, 100.0 * limits.penetration);
+                       100.0 * r.penetration_max / r.delta_max, 100.0 * limits.penetration);
   }
   return {};
 }

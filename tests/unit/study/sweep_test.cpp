@@ -66,7 +66,7 @@ struct FakeSolver {
       fem::ImpactResult r;
       r.e = 1.0 / (1.0 + 0.01 * v * config.sphere.material.density / 1000.0);
       r.e_energy = r.e * r.e;
-      r.force_max = v * 100.0;
+      r.F_max = v * 100.0;
       r.separated = v != not_separated_at_velocity;
       r.status = r.separated ? fem::RunStatus::kSeparated : fem::RunStatus::kNotSeparated;
       r.elements = 100;

@@ -48,9 +48,9 @@ struct ImpactResult {
   /// discretisation-error estimate of e: e +/- e_error [-] (discretisation_error.hpp; NaN unless
   /// estimated)
   double e_error = std::numeric_limits<double>::quiet_NaN();
-  double force_max = 0.0;           ///< F_max [N]
-  double indentation_max = 0.0;     ///< delta_max [m]
-  double contact_time = 0.0;        ///< duration of contact [s]
+  double F_max = 0.0;               ///< largest contact force [N]
+  double delta_max = 0.0;           ///< largest indentation (sphere c.o.m. displacement) [m]
+  double t_contact = 0.0;           ///< duration of contact [s]
   double crater_depth = 0.0;        ///< residual depth of the substrate surface on the axis [m]
   double plastic_strain_max = 0.0;  ///< largest equivalent plastic strain left [-]
   double energy_initial = 0.0;      ///< sphere kinetic energy at impact [J]

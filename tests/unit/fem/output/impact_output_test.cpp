@@ -17,7 +17,7 @@ namespace {
 TEST(ImpactOutput, SummaryHasTheDocumentedKeys) {
   ImpactResult r;
   r.e = 0.53;
-  r.force_max = 1e5;
+  r.F_max = 1e5;
   const auto j = summary_to_json(r, ImpactConfig{});
   for (const char* key :
        {"e", "e_energy", "F_max", "delta_max", "t_contact", "energy_initial",

@@ -44,7 +44,7 @@ TEST(ExplicitSolver, ElasticPunchIsStableAndConservesEnergy) {
     ASSERT_LT(r.history.kinetic_energy[i], (1.0 + 1e-6) * r.energy_initial) << "row " << i;
     ASSERT_TRUE(std::isfinite(r.history.strain_energy[i]));
   }
-  EXPECT_GT(r.force_max, 0.0);
+  EXPECT_GT(r.F_max, 0.0);
   EXPECT_GT(r.e, 0.0);
   EXPECT_LE(r.e, 1.0 + 1e-6);
   EXPECT_EQ(r.energy_dissipated_plastic, 0.0);
@@ -113,7 +113,7 @@ TEST(ExplicitSolverStatus, TMaxDuringContactIsNotSeparated) {
   ImpactConfig c = punch_config(2.0, false);
   const ImpactResult full = run_impact(c, punch());
   ASSERT_EQ(full.status, RunStatus::kSeparated);
-  c.solver.t_max = 0.5 * full.contact_time;
+  c.solver.t_max = 0.5 * full.t_contact;
   const ImpactResult r = run_impact(c, punch());
   EXPECT_EQ(r.status, RunStatus::kNotSeparated);
   EXPECT_FALSE(r.separated);

@@ -14,7 +14,7 @@ ImpactResult clean_run() {
   r.energy_initial = 100.0;
   r.energy_balance_error = 4.6e-7;  // paper case
   r.energy_hourglass = 0.049;       // 0.049 %
-  r.indentation_max = 1e-3;
+  r.delta_max = 1e-3;
   r.penetration_max = 3.5e-6;  // 0.35 %
   return r;
 }
