@@ -22,6 +22,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/core/interrupt.hpp"
 #include "corlab/core/process.hpp"
+#include "corlab/fem/solver/simd_level.hpp"
 #include "corlab/paper/reproduce.hpp"
 
 namespace corlab::cli {
@@ -120,6 +121,7 @@ int make_report(const fs::path& out_dir) {
 
 int run(const ReproduceArgs& args) {
   if (args.jobs < 0) throw_invalid("--jobs", args.jobs, ">= 0 (0 = all cores)");
+  fem::simd_level();  // a bad $CORLAB_SIMD is refused before any output
   study::ReproduceOptions options;
   options.preset = args.preset;
   options.error_estimate = args.error_estimate;

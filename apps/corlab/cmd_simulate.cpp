@@ -16,6 +16,7 @@
 #include "corlab/fem/output/impact_output.hpp"
 #include "corlab/fem/output/vtu_writer.hpp"
 #include "corlab/fem/solver/discretisation_error.hpp"
+#include "corlab/fem/solver/simd_level.hpp"
 #include "corlab/fem/solver/simulate.hpp"
 #include "corlab/study/progress.hpp"
 
@@ -35,6 +36,7 @@ int run_simulate(const SimulateOptions& opt) {
   if (!opt.config_file.empty()) config = fem::load_impact_config(opt.config_file);
   fem::apply_settings(config, opt.settings, "--set");
   fem::validate(config);
+  fem::simd_level();  // a bad $CORLAB_SIMD is refused before any output
   const std::filesystem::path out(opt.out_dir);
   std::error_code ec;
   std::filesystem::create_directories(out, ec);

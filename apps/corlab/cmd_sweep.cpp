@@ -19,6 +19,7 @@
 #include "corlab/core/interrupt.hpp"
 #include "corlab/fem/solver/discretisation_error.hpp"
 #include "corlab/fem/solver/run_cost.hpp"
+#include "corlab/fem/solver/simd_level.hpp"
 #include "corlab/study/progress.hpp"
 #include "corlab/study/sweep.hpp"
 #include "corlab/study/sweep_spec.hpp"
@@ -86,6 +87,7 @@ study::SweepSpec load_spec(const std::string& file) {
 }
 
 int run(const SweepArgs& args) {
+  fem::simd_level();  // a bad $CORLAB_SIMD is refused before any output
   const study::SweepSpec spec = load_spec(args.spec);
   const std::vector<std::size_t> only =
       args.only.empty() ? std::vector<std::size_t>{}

@@ -57,6 +57,12 @@ printf '[impact]\nvelocity = 5.0\nvelocity = 6.0\n' > "$work/dup.toml"
 sim "dup.toml" --config "$work/dup.toml"
 printf '[sphere]\nradius = 0b101\n' > "$work/radius.toml"
 sim "sphere.radius = 5" --config "$work/radius.toml"
+# The hot loops' instruction set (simd_level.hpp): an unknown $CORLAB_SIMD is refused before any
+# output, by each command that runs the solver.
+CORLAB_SIMD=avx9 refused "CORLAB_SIMD = 'avx9'" simulate --out "$work/simd" --quiet
+[ ! -e "$work/simd" ] || fail "a bad CORLAB_SIMD left an output directory"
+CORLAB_SIMD=avx9 refused "CORLAB_SIMD" sweep "$(dirname "$0")/../data/sweeps/tiny.toml" --out "$work/sw"
+CORLAB_SIMD=avx9 refused "CORLAB_SIMD" reproduce --preset coarse --out "$work/rp" --no-report
 
 # The parser library's own errors: one line, exit 2.
 refused "not expected: --bogus" simulate --bogus --out "$work/sim"
