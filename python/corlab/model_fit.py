@@ -79,7 +79,7 @@ def fit(table, inputs, mask, fixed=None):
         return {**fixed, **dict(zip((f[0] for f in free), p))}
 
     def residuals(p):
-        return (_core.corlab2026_restitution(sub, coefficients(p)) - e) / e
+        return _core.relative_errors(_core.corlab2026_restitution(sub, coefficients(p)), e)
 
     start = [p[1] for p in free]
     bounds = ([p[2] for p in free], [p[3] for p in free])
@@ -116,7 +116,7 @@ def run(path, resamples=BOOTSTRAP, fixed=None):
     train, random_out, corner = split(table)
     coefficients = fit(table, inputs, train, fixed)
     e_model = predict(inputs, coefficients)
-    rel = (e_model - table["e"]) / table["e"]
+    rel = _core.relative_errors(e_model, table["e"])
     return {
         "model": "corlab2026",
         "dataset": str(path),
