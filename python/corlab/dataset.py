@@ -74,16 +74,6 @@ def predictions(table, model):
     return predict_rows(model, [s[0] for s in specs], [s[1] for s in specs], table["velocity"])
 
 
-def versus(e_fe, e_ours, e_other):
-    """How two models' relative errors against e_fe compare: (stats of ours, stats of the
-    other, cases where ours is at least as close, cases)."""
-    ours, other = _core.relative_errors(e_ours, e_fe), _core.relative_errors(e_other, e_fe)
-    ok = np.isfinite(ours) & np.isfinite(other)
-    return (_core.relative_error_stats(e_ours[ok], e_fe[ok]),
-            _core.relative_error_stats(e_other[ok], e_fe[ok]),
-            int(np.sum(np.abs(ours[ok]) <= np.abs(other[ok]))), int(ok.sum()))
-
-
 def in_model_box(table, info):
     """Rows inside a model's own validity: the whole dataset for corlab's own model (status
     verified-dataset: fitted to this box); else an elastic sphere, a perfectly plastic substrate

@@ -1,8 +1,9 @@
 // `corlab reproduce`, the numbers of the report: every number report.html prints or a figure draws
 // that is not a fit itself (the Hertz reference of the verification runs, the mesh table, the
-// errors of eq. 19 per case and overall, our coefficients against the paper's, the runs and
-// solver time on disk, the model lines of Figs. 3 and 6-10). The Python report (corlab.report)
-// only reads, formats and plots them: no formula or published constant lives on both sides.
+// errors of eq. 19 per case and overall, corlab2026 against eq. 19 on Table 2, our coefficients
+// against the paper's, the runs and solver time on disk, the model lines of Figs. 3 and 6-10). The
+// Python report (corlab.report) only reads, formats and plots them: no formula or published
+// constant lives on both sides.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -195,6 +196,41 @@ json model_error(const json& comparison, const char* model) {
   return {{"groups", per_group}, {"overall", overall}};
 }
 
+json stats_json(const RelativeErrorStats& s) {
+  return {{"n", s.n}, {"rms", s.rms}, {"worst", s.worst}, {"bias", s.bias}};
+}
+
+/// corlab2026 against eq. 19 with the paper's constants (ma2023) on the Table 2 runs, both for each
+/// run's own materials: their relative errors over the runs where both are defined, and in how
+/// many of those corlab2026 is at least as close to the FE e.
+json corlab2026_versus_eq19(const json& comparison) {
+  std::vector<double> e_fe;
+  std::vector<double> e_ours;
+  std::vector<double> e_paper;
+  for (const auto& c : comparison) {
+    if (c["study"] != "table2") continue;
+    e_fe.push_back(number(c, "e_fe"));
+    e_ours.push_back(number(c, "e_corlab2026"));
+    e_paper.push_back(number(c, "e_paper"));
+  }
+  const std::vector<double> all_ours = relative_errors(e_ours, e_fe);
+  const std::vector<double> all_paper = relative_errors(e_paper, e_fe);
+  std::vector<double> ours;
+  std::vector<double> paper;
+  int closer = 0;
+  for (std::size_t i = 0; i < all_ours.size(); ++i) {
+    if (!std::isfinite(all_ours[i]) || !std::isfinite(all_paper[i])) continue;
+    ours.push_back(all_ours[i]);
+    paper.push_back(all_paper[i]);
+    if (std::abs(all_ours[i]) <= std::abs(all_paper[i])) ++closer;
+  }
+  return {{"study", "table2"},
+          {"cases", ours.size()},
+          {"corlab2026_at_least_as_close", closer},
+          {"corlab2026", stats_json(relative_error_stats(ours))},
+          {"ma2023", stats_json(relative_error_stats(paper))}};
+}
+
 /// A fitted coefficient next to a published value: relative difference and whether the
 /// published value lies in our 95 % interval.
 json versus(const json& coefficient, double paper) {
@@ -360,6 +396,7 @@ void add_comparison_numbers(json& fits) {
   const json comparison = fits.value("comparison", json::array());
   fits["model_error"] = {{"e_paper", model_error(comparison, "e_paper")},
                          {"e_ours", model_error(comparison, "e_ours")}};
+  fits["corlab2026_versus_eq19"] = corlab2026_versus_eq19(comparison);
   fits["versus_paper"] = versus_paper(fits);
 }
 
