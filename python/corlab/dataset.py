@@ -74,15 +74,6 @@ def predictions(table, model):
     return predict_rows(model, [s[0] for s in specs], [s[1] for s in specs], table["velocity"])
 
 
-def versus(e_fe, e_ours, e_other):
-    """How two models' relative errors against e_fe compare: (stats of ours, stats of the
-    other, cases where ours is at least as close, cases)."""
-    ours, other = (e_ours - e_fe) / e_fe, (e_other - e_fe) / e_fe
-    ok = np.isfinite(ours) & np.isfinite(other)
-    return (error_stats(ours[ok]), error_stats(other[ok]),
-            int(np.sum(np.abs(ours[ok]) <= np.abs(other[ok]))), int(ok.sum()))
-
-
 def in_model_box(table, info):
     """Rows inside a model's own validity: the whole dataset for corlab's own model (status
     verified-dataset: fitted to this box); else an elastic sphere, a perfectly plastic substrate
@@ -98,24 +89,16 @@ def in_model_box(table, info):
     return ok
 
 
-def error_stats(relative_errors):
-    """n, RMS, worst (largest magnitude, signed) and mean (bias) of relative errors."""
-    r = np.asarray(relative_errors, dtype=float)
-    r = r[np.isfinite(r)]
-    if r.size == 0:
-        return {"n": 0, "rms": math.nan, "worst": math.nan, "bias": math.nan}
-    return {"n": int(r.size), "rms": float(np.sqrt(np.mean(r * r))),
-            "worst": float(r[np.argmax(np.abs(r))]), "bias": float(np.mean(r))}
-
-
 def score(table, e_model, mask=None):
-    """Error statistics of predictions e_model against the FE e, overall and per regime."""
-    rel = (e_model - table["e"]) / table["e"]
-    mask = np.ones(rel.size, dtype=bool) if mask is None else mask
+    """Relative-error statistics (n, rms, worst, bias: corlab.relative_error_stats) of
+    predictions e_model against the FE e, overall and per regime."""
+    e = table["e"]
+    mask = np.ones(e.size, dtype=bool) if mask is None else mask
     names = np.array(regime(table["velocity_ratio"]))
-    out = {"all": error_stats(rel[mask])}
+    out = {"all": _core.relative_error_stats(e_model[mask], e[mask])}
     for name, _ in REGIMES:
-        out[name] = error_stats(rel[mask & (names == name)])
+        rows = mask & (names == name)
+        out[name] = _core.relative_error_stats(e_model[rows], e[rows])
     return out
 
 
@@ -139,7 +122,7 @@ def error_figure(table, path):
     fig, axes = plt.subplots(len(names), 2, figsize=(8, 1.6 * len(names)), sharex="col",
                              sharey=True, squeeze=False)
     for row, name in enumerate(names):
-        rel = (predictions(table, name) - table["e"]) / table["e"]
+        rel = _core.relative_errors(predictions(table, name), table["e"])
         for col, key in enumerate(("k1", "k2")):
             ax = axes[row][col]
             ax.axhline(0.0, color="0.6", lw=0.8)

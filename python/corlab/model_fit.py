@@ -9,12 +9,14 @@ is 0 mod 5) and a corner, the largest modulus ratios (E_sphere / E_substrate > 4
 coefficients minimise the sum of squared relative errors (e_model - e_FE) / e_FE over the rest
 (scipy least_squares, trust-region reflective within physical bounds, from a fixed start: the
 same data give the same coefficients). The model is evaluated by the C++ kernel
-(corlab._core.corlab2026_restitution), the one the library, the CLI and DEM exports use.
+(corlab._core.corlab2026_restitution), the one the library, the CLI and DEM exports use. The
+build generates the library's coefficients from data/fe_restitution/model_fit.json (a configure
+dependency, cmake/Corlab2026Coefficients.cmake): a refit written there reaches
+corlab2026_fitted() at the next build.
 """
 import argparse
 import json
 import math
-import pathlib
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -77,7 +79,7 @@ def fit(table, inputs, mask, fixed=None):
         return {**fixed, **dict(zip((f[0] for f in free), p))}
 
     def residuals(p):
-        return (_core.corlab2026_restitution(sub, coefficients(p)) - e) / e
+        return _core.relative_errors(_core.corlab2026_restitution(sub, coefficients(p)), e)
 
     start = [p[1] for p in free]
     bounds = ([p[2] for p in free], [p[3] for p in free])
@@ -114,7 +116,7 @@ def run(path, resamples=BOOTSTRAP, fixed=None):
     train, random_out, corner = split(table)
     coefficients = fit(table, inputs, train, fixed)
     e_model = predict(inputs, coefficients)
-    rel = (e_model - table["e"]) / table["e"]
+    rel = _core.relative_errors(e_model, table["e"])
     return {
         "model": "corlab2026",
         "dataset": str(path),
@@ -146,17 +148,6 @@ def _finite(obj):
     return obj
 
 
-def write_cpp_coefficients(path, coefficients):
-    """Replaces the initializer of corlab2026_fitted() in the C++ source with `coefficients`
-    (shortest round-trip text: the C++ doubles are the JSON's, bit for bit)."""
-    text = pathlib.Path(path).read_text()
-    begin = text.index("return Corlab2026Coefficients{")
-    end = text.index("};", begin) + 2
-    fields = ",\n".join(f"      .{n} = {coefficients[n]!r}" for n in NAMES)
-    text = text[:begin] + "return Corlab2026Coefficients{\n" + fields + "};" + text[end:]
-    pathlib.Path(path).write_text(text)
-
-
 def parse_fixed(items, parser):
     """{name: value} of --fix NAME=VALUE items (a clear error for an unknown name or value)."""
     fixed = {}
@@ -176,7 +167,6 @@ def main(argv=None):
     parser.add_argument("dataset", help="dataset.csv (corlab dataset export)")
     parser.add_argument("--out", required=True, help="model_fit.json to write")
     parser.add_argument("--bootstrap", type=int, default=BOOTSTRAP, help="resamples")
-    parser.add_argument("--cpp-source", help="corlab2026.cpp whose corlab2026_fitted() to update")
     parser.add_argument("--fix", action="append", default=[], metavar="NAME=VALUE",
                         help="pin a coefficient (an ablation; repeatable)")
     args = parser.parse_args(argv)
@@ -185,8 +175,6 @@ def main(argv=None):
         json.dump(_finite(result), f, indent=2, sort_keys=True)
         f.write("\n")
     s = result["scores"]
-    if args.cpp_source:
-        write_cpp_coefficients(args.cpp_source, result["coefficients"])
     print(f"corlab2026: {result['rows_train']} rows fitted; RMS / worst relative error: train "
           f"{s['train']['all']['rms']:.4f} / {s['train']['all']['worst']:+.4f}, random holdout "
           f"{s['random holdout']['all']['rms']:.4f} / {s['random holdout']['all']['worst']:+.4f},"

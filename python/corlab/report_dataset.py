@@ -1,13 +1,13 @@
 """The report's "beyond the paper" section: corlab's FE dataset (data/fe_restitution), its model
 corlab2026 and every registered model's scores on it, and corlab2026 against Ma eq. 19 on the
-Table 2 runs of the report's directory."""
+Table 2 runs of the report's directory. The numbers come from model_fit.json, model_scores.json
+and fit.json (written by the C++), the figure's from the C++ models and relative errors
+(corlab._core): no formula or material constant lives here."""
 import json
 import os
 import sys
 
-import numpy as np
-
-from . import _core, dataset
+from . import dataset
 from .html_table import esc, fmt, pct, table
 
 
@@ -15,24 +15,16 @@ def _score_cells(s):
     return [str(s["n"]), pct(s["rms"], 1), pct(s["worst"], 1), pct(s["bias"], 1)]
 
 
-def table2_versus_eq19(out_dir):
-    """corlab2026 against Ma eq. 19 (ma2023) on the Table 2 runs of this directory. Returns
-    (rows of the summary table, cases where corlab2026 is at least as close, cases)."""
-    path = os.path.join(out_dir, "table2", "results.csv")
-    if not os.path.exists(path):
+def table2_versus_eq19(fit):
+    """corlab2026 against Ma eq. 19 (ma2023) on the Table 2 runs, as fit.json has them
+    ("corlab2026_versus_eq19", computed by the C++ for each run's own materials). Returns (rows
+    of the summary table, cases where corlab2026 is at least as close, cases)."""
+    t2 = fit.get("fits", {}).get("corlab2026_versus_eq19") or {}
+    if not t2.get("cases"):
         return [], 0, 0
-    t = _core.read_results(path)
-    ok = np.array([s == "ok" for s in t["status"]]) & np.isfinite(t["sigma_y"])
-    # Table 2: E = 210 GPa, nu = 0.3 for both bodies, substrate rho = 7850 kg/m^3.
-    e_mod = t["E_star"][ok] * 2 * (1 - 0.09)
-    spheres = [f"E={e!r},nu=0.3,rho={r!r}" for e, r in zip(e_mod, t["sphere_rho"][ok])]
-    substrates = [f"E={e!r},nu=0.3,rho=7850,sy={y!r}" for e, y in zip(e_mod, t["sigma_y"][ok])]
-    e = {n: dataset.predict_rows(n, spheres, substrates, t["velocity"][ok])
-         for n in ("corlab2026", "ma2023")}
-    ours, paper, better, cases = dataset.versus(t["e"][ok], e["corlab2026"], e["ma2023"])
-    rows = [[esc("corlab2026"), *_score_cells(ours)],
-            [esc("ma2023 (eq. 19)"), *_score_cells(paper)]]
-    return rows, better, cases
+    rows = [[esc("corlab2026"), *_score_cells(t2["corlab2026"])],
+            [esc("ma2023 (eq. 19)"), *_score_cells(t2["ma2023"])]]
+    return rows, t2["corlab2026_at_least_as_close"], t2["cases"]
 
 
 def dataset_section(fit, out_dir):
@@ -65,7 +57,7 @@ def dataset_section(fit, out_dir):
                   'against the FE dataset"></p>')
     except Exception as err:  # a broken figure must not lose the rest of the report
         print(f"corlab.report: dataset figure failed: {err}", file=sys.stderr)
-    t2_rows, better, cases = table2_versus_eq19(out_dir)
+    t2_rows, better, cases = table2_versus_eq19(fit)
     t2 = ""
     if cases:
         t2 = (f"<h3>The paper's corner: the Table 2 runs of this directory</h3><p>corlab2026 is "

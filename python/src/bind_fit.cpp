@@ -1,11 +1,17 @@
-// Bindings for the fit area: corlab.fit_linear, corlab.fit_expression, corlab.fit_paper.
-// Results are plain dicts (the JSON forms of fit_io.hpp, the same as `corlab fit --json`).
+// Bindings for the fit area: corlab.fit_linear, corlab.fit_expression, corlab.fit_paper,
+// corlab.relative_errors, corlab.relative_error_stats. Results are plain dicts (the JSON forms of
+// fit_io.hpp, the same as `corlab fit --json`).
 #include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <span>
+
 #include "bindings.hpp"
+#include "corlab/core/error.hpp"
 #include "corlab/fit/fit_expression.hpp"
 #include "corlab/fit/linear_regression.hpp"
+#include "corlab/fit/relative_error.hpp"
 #include "corlab/paper/fit_io.hpp"
 #include "corlab/study/results_table.hpp"
 
@@ -18,9 +24,49 @@ py::object to_python(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
 }
 
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::span<const double> values(const Array& a, const char* field) {
+  if (a.ndim() != 1) throw_invalid(field, static_cast<double>(a.ndim()), "1 dimension");
+  return {a.data(), static_cast<std::size_t>(a.size())};
+}
+
+// Model and reference values against each other: the relative errors and their statistics.
+void bind_relative_error(py::module_& m) {
+  m.def(
+      "relative_errors",
+      [](const Array& model, const Array& reference) {
+        const auto r = study::relative_errors(values(model, "model values"),
+                                              values(reference, "reference values"));
+        return py::array_t<double>(static_cast<py::ssize_t>(r.size()), r.data());
+      },
+      py::arg("model"), py::arg("reference"),
+      "(model - reference) / reference, element by element [-] (not finite where the reference "
+      "is 0 or a value is not finite); ValueError for arrays of different sizes.");
+  m.def(
+      "relative_error_stats",
+      [](const Array& model, const Array& reference) {
+        const study::RelativeErrorStats s = study::relative_error_stats(
+            values(model, "model values"), values(reference, "reference values"));
+        py::dict d;
+        d["n"] = s.n;
+        d["rms"] = s.rms;
+        d["worst"] = s.worst;
+        d["bias"] = s.bias;
+        return d;
+      },
+      py::arg("model"), py::arg("reference"),
+      R"doc(Statistics of the relative errors (model - reference) / reference [-] (relative_error.hpp).
+
+Returns {"n": pairs counted, "rms": sqrt(mean r^2), "worst": the r of the largest magnitude,
+signed, "bias": mean r}; pairs whose r is not finite are left out (NaN statistics when none is
+left). The sums run in numpy's order: numpy's mean of the same errors is the same double.)doc");
+}
+
 }  // namespace
 
 void bind_fit(py::module_& m) {
+  bind_relative_error(m);
   m.def(
       "fit_linear",
       [](const Eigen::MatrixXd& X, const Eigen::VectorXd& y, std::vector<std::string> names,

@@ -1,12 +1,16 @@
 """The reproduction report: figures and HTML from a synthetic output directory, and `corlab
 reproduce` end to end on a tiny spec (the CLI from CORLAB_BIN), including resuming."""
+import ast
 import csv
+import importlib
 import json
 import math
+import os
+import re
 import subprocess
 
 import corlab
-from corlab import report
+from corlab import report, report_dataset
 
 ES = 210e9 / (2 * (1 - 0.3 ** 2))
 
@@ -148,16 +152,132 @@ def test_report_takes_hertz_and_paper_numbers_from_fit_json(tmp_path):
                      "e = 0.5300 at h_min = 1 mm, 0.5258 at h_min = 0.5 mm", "0.0042"):
         assert expected in text, expected
     assert (out / "figures" / "fig03_force_indentation.png").exists()
-    # No formula or constant of the paper or of Hertz is left on the Python side.
+    # No formula or constant of the paper or of Hertz is left on the Python side (and none in any
+    # module of the report: test_no_formula_or_constant_in_any_module_of_the_report).
     from corlab import figures
     for name in ("PAPER", "SIGMA0", "E0", "effective_modulus", "_hertz_force"):
         assert not hasattr(figures, name), name
     assert not hasattr(report, "overall_error")
-    for module in (report, figures):
-        source = open(module.__file__).read()
-        for literal in ("0.056", "1.16", "0.253", "15.81", "12.61", "12.63", "2.94", "0.0693",
-                        "4 / 3", "4.0 / 3.0", "math.pi"):
-            assert literal not in source, (module.__name__, literal)
+
+
+def report_modules():
+    """{name: file} of every corlab module the report imports, directly or through another one,
+    found by reading their imports: a module the report starts to use is checked without an
+    edit here."""
+    found, todo = {}, ["corlab.report"]
+    while todo:
+        name = todo.pop()
+        if name in found:
+            continue
+        try:
+            module = importlib.import_module(name)
+        except ModuleNotFoundError:  # `from .html_table import esc`: esc is no module
+            continue
+        found[name] = module.__file__
+        if not module.__file__.endswith(".py"):
+            continue  # corlab._core: the C++
+        for node in ast.walk(ast.parse(open(module.__file__).read())):
+            if isinstance(node, ast.Import):
+                todo += [a.name for a in node.names if a.name.split(".")[0] == "corlab"]
+            elif isinstance(node, ast.ImportFrom):
+                base = (f"corlab.{node.module}" if node.module else "corlab") if node.level \
+                    else node.module or ""
+                if base.split(".")[0] == "corlab":
+                    todo += [base] + [f"{base}.{a.name}" for a in node.names]
+    return {n: f for n, f in found.items() if f.endswith(".py")}
+
+
+#: The paper's published constants and Hertz's formula (fit.json's "paper", fem::hertz_reference).
+PUBLISHED = ("0.056", "1.16", "0.253", "15.81", "12.61", "12.63", "2.94", "0.0693", "4 / 3",
+             "4.0 / 3.0", "math.pi")
+#: Material constants of the studies (each run's config holds them): steel's rho, E and nu^2.
+MATERIAL_NUMBERS = (7850.0, 210e9, 0.09)
+#: A material spec with a typed-in property ("E=...,nu=0.3,rho=7850"): materials re-derived.
+TYPED_SPEC = re.compile(r"\b(?:E|nu|rho|sy|H)=[-+.\d]")
+
+
+def _is_number(node, value=None):
+    return (isinstance(node, ast.Constant) and type(node.value) in (int, float)
+            and (value is None or node.value == value))
+
+
+def _mentions_e_star(node):
+    return any(isinstance(n, ast.Constant) and n.value == "E_star"
+               or isinstance(n, ast.Name) and n.id.lower() == "e_star" for n in ast.walk(node))
+
+
+def formula_findings(source):
+    """Where `source` holds a material constant, a typed-in material spec, arithmetic on E*
+    beyond a unit (E from E*, k1, ...) or a factor 1 - nu^2, and the paper's or Hertz's
+    constants: (line, what) pairs."""
+    out = [(0, f"published constant {c!r}") for c in PUBLISHED if c in source]
+    for node in ast.walk(ast.parse(source)):
+        line = getattr(node, "lineno", 0)
+        if _is_number(node) and node.value in MATERIAL_NUMBERS:
+            out.append((line, f"material constant {node.value!r}"))
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str) \
+                and TYPED_SPEC.search(node.value):
+            out.append((line, f"material spec {node.value!r}"))
+        elif isinstance(node, ast.BinOp) and _mentions_e_star(node) and not (
+                isinstance(node.op, ast.Div) and _is_number(node.right)
+                and math.log10(node.right.value).is_integer()):  # E* in GPa is formatting
+            out.append((line, "arithmetic on E*"))
+        elif isinstance(node, ast.BinOp) and isinstance(node.op, ast.Sub) \
+                and _is_number(node.left, 1) and (_is_number(node.right) or (
+                    isinstance(node.right, ast.BinOp) and isinstance(node.right.op, ast.Pow))):
+            out.append((line, "1 - nu^2"))
+    return out
+
+
+def test_no_formula_or_constant_in_any_module_of_the_report():
+    """Every number of the report comes from fit.json, model_fit.json, model_scores.json or the
+    C++ (corlab._core): no module it imports holds a formula or a material or published
+    constant."""
+    modules = report_modules()
+    assert {"corlab.report", "corlab.figures", "corlab.report_dataset", "corlab.dataset",
+            "corlab.html_table", "corlab.vtu"} <= set(modules), sorted(modules)
+    for name, path in modules.items():
+        findings = formula_findings(open(path).read())
+        assert findings == [], (name, findings)
+
+
+def test_table2_against_eq19_is_fit_jsons(tmp_path):
+    """corlab2026 against eq. 19 on Table 2: the numbers of fit.json as they are (the C++
+    computes them for each run's own materials; there is no table2/results.csv to compute from
+    here), and no table without them."""
+    data = tmp_path / "data"
+    data.mkdir()
+    shipped = os.path.join(os.path.dirname(__file__), "..", "..", "data", "fe_restitution")
+    for name in ("model_fit.json", "model_scores.json"):
+        (data / name).write_text(open(os.path.join(shipped, name)).read())
+    versus = {"study": "table2", "cases": 9, "corlab2026_at_least_as_close": 7,
+              "corlab2026": {"n": 9, "rms": 0.01234, "worst": 0.04567, "bias": -0.00789},
+              "ma2023": {"n": 9, "rms": 0.09876, "worst": -0.32109, "bias": 0.01111}}
+    fit = {"dataset_dir": str(data), "fits": {"corlab2026_versus_eq19": versus}}
+    html = report_dataset.dataset_section(fit, str(tmp_path / "out"))
+    assert "in 7 of 9 cases" in html
+    for row in ("<td>corlab2026</td><td>9</td><td>1.2 %</td><td>4.6 %</td><td>-0.8 %</td>",
+                "<td>ma2023 (eq. 19)</td><td>9</td><td>9.9 %</td><td>-32.1 %</td><td>1.1 %</td>"):
+        assert row in html, row
+    del fit["fits"]["corlab2026_versus_eq19"]
+    assert "The paper's corner" not in report_dataset.dataset_section(fit, str(tmp_path / "out"))
+
+
+def test_the_guard_finds_what_the_report_used_to_compute():
+    """The lines that derived Table 2's materials in the report (E from E*, nu, rho) and Hertz's
+    force, as they were: each is found."""
+    before = (
+        'e_mod = t["E_star"][ok] * 2 * (1 - 0.09)\n'
+        'spheres = [f"E={e!r},nu=0.3,rho={r!r}" for e, r in zip(e_mod, t["sphere_rho"][ok])]\n'
+        'substrates = [f"E={e!r},nu={nu!r},rho=7850,sy={y!r}" for e, y in zip(e_mod, sy)]\n'
+        'es = 210e9 / (2 * (1 - nu ** 2))\n'
+        'force = 4 / 3 * es * math.sqrt(r) * d ** 1.5\n')
+    found = formula_findings(before)
+    for what in ("arithmetic on E*", "1 - nu^2", "material constant 0.09",
+                 "material constant 210000000000.0", "rho=7850",
+                 "published constant '4 / 3'"):
+        assert any(what in w for _, w in found), (what, found)
+    assert {line for line, _ in found} >= {1, 2, 3, 4}
 
 
 def test_report_main_without_fit_json_fails_cleanly(tmp_path):
@@ -199,9 +319,18 @@ def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path, corlab_bin):
     assert fit["studies_total"]["ran"] == 6
     assert "fig6" in fit["figure_lines"] and "fig8" in fit["figure_lines"]
     assert all(c["k1"] > 0 for c in fit["fits"]["comparison"])
+    # corlab2026 for each run's own materials (the spec's defaults: steel_ma2023, E = 210 GPa,
+    # nu = 0.3, rho = 7850), and against eq. 19 over the six runs
+    for c in fit["fits"]["comparison"]:
+        assert c["e_corlab2026"] == corlab.predict(
+            "corlab2026", "E=210e9,nu=0.3,rho=7850", f"E=210e9,nu=0.3,rho=7850,sy={c['sigma_y']!r}",
+            c["velocity"])
+    t2 = fit["fits"]["corlab2026_versus_eq19"]
+    assert t2["cases"] == 6 and t2["corlab2026"]["n"] == t2["ma2023"]["n"] == 6
     assert (out / "report.html").exists()
     html_text = (out / "report.html").read_text()
     assert f"RMS relative error {100 * overall['rms_relative_error']:.2f} %" in html_text
+    assert f"in {t2['corlab2026_at_least_as_close']} of 6 cases" in html_text
     assert (out / "figures" / "fig06_e_vs_lnk1.png").exists()
     second = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
     assert second.returncode == 0, second.stderr

@@ -5,9 +5,11 @@
 #include <gsl/gsl_cdf.h>
 
 #include <cmath>
+#include <span>
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fit/relative_error.hpp"
 
 namespace corlab::study {
 
@@ -30,16 +32,13 @@ GoodnessOfFit goodness_of_fit(const Eigen::VectorXd& observed,
   const double mean = observed.mean();
   const double total = (observed.array() - mean).square().sum();
   g.r_squared = total > 0 ? 1.0 - g.residual_sum_squares / total : 1.0;
-  double sum_sq = 0.0;
-  int counted = 0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (observed[i] == 0.0) continue;  // relative error undefined
-    const double rel = std::abs(residuals[i]) / std::abs(observed[i]);
-    g.max_relative_error = std::max(g.max_relative_error, rel);
-    sum_sq += rel * rel;
-    ++counted;
+  const RelativeErrorStats rel =
+      relative_error_stats(std::span(fitted.data(), static_cast<std::size_t>(fitted.size())),
+                           std::span(observed.data(), static_cast<std::size_t>(n)));
+  if (rel.n > 0) {
+    g.max_relative_error = std::abs(rel.worst);
+    g.rms_relative_error = rel.rms;
   }
-  g.rms_relative_error = counted > 0 ? std::sqrt(sum_sq / counted) : 0.0;
   return g;
 }
 

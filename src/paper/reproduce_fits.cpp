@@ -196,18 +196,20 @@ void fit_back_calculated_yield_velocity(const StudyFiles& files, const OurFits& 
   }
 }
 
-/// e of the paper's eq. 19 with its published constants (the registered "ma2023" model); NaN
-/// where the model refuses the case.
-double paper_model_e(const fem::ImpactConfig& c, double v) {
+/// e of a registered model (the paper's eq. 19 with its published constants: "ma2023"; corlab's
+/// own: "corlab2026") for a run's own sphere and substrate, as its config has them; NaN where the
+/// model refuses the case.
+double registered_model_e(const std::string& model, const fem::ImpactConfig& c, double v) {
   try {
-    return restitution::make_model("ma2023", c.sphere.material, c.substrate.material).cor(v);
+    return restitution::make_model(model, c.sphere.material, c.substrate.material).cor(v);
   } catch (const std::exception&) {
     return kNaN;
   }
 }
 
 /// One entry of "comparison" per clean run of `study` (FE e with its error bar, eq. 19 with the
-/// paper's and with our constants); `groups` gets the config of every (rho, E*, sigma_y) group.
+/// paper's and with our constants, corlab2026); `groups` gets the config of every (rho, E*,
+/// sigma_y) group.
 void compare_study_runs(const std::string& study,
                         const SweepSpec& spec,
                         const ResultsTable& ok,
@@ -240,8 +242,9 @@ void compare_study_runs(const std::string& study,
                           {"k1", k1(p.E_star, p.rho, v[i])},
                           {"e_fe", e[i]},
                           {"e_error", e_error[i]},
-                          {"e_paper", paper_model_e(c, v[i])},
-                          {"e_ours", ours.e(p, v[i])}});
+                          {"e_paper", registered_model_e("ma2023", c, v[i])},
+                          {"e_ours", ours.e(p, v[i])},
+                          {"e_corlab2026", registered_model_e("corlab2026", c, v[i])}});
   }
 }
 

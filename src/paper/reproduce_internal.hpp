@@ -56,7 +56,8 @@ nlohmann::json verification_numbers(const std::filesystem::path& out_dir,
                                     const std::filesystem::path& studies_dir,
                                     const std::string& preset,
                                     const nlohmann::json& paper);
-/// Adds "model_error" (eq. 19 against the FE runs, per case and overall) and "versus_paper" (our
+/// Adds "model_error" (eq. 19 against the FE runs, per case and overall),
+/// "corlab2026_versus_eq19" (corlab2026 against eq. 19 on the Table 2 runs) and "versus_paper" (our
 /// coefficients against the published ones) to fit.json's "fits".
 void add_comparison_numbers(nlohmann::json& fits);
 /// fit.json's "figure_lines": the model lines of Figs. 6-10 sampled from `fits`.

@@ -1,8 +1,9 @@
 // `corlab reproduce`, the numbers of the report: every number report.html prints or a figure draws
 // that is not a fit itself (the Hertz reference of the verification runs, the mesh table, the
-// errors of eq. 19 per case and overall, our coefficients against the paper's, the runs and
-// solver time on disk, the model lines of Figs. 3 and 6-10). The Python report (corlab.report)
-// only reads, formats and plots them: no formula or published constant lives on both sides.
+// errors of eq. 19 per case and overall, corlab2026 against eq. 19 on Table 2, our coefficients
+// against the paper's, the runs and solver time on disk, the model lines of Figs. 3 and 6-10). The
+// Python report (corlab.report) only reads, formats and plots them: no formula or published
+// constant lives on both sides.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <utility>
 
 #include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fit/relative_error.hpp"
 #include "corlab/materials/material.hpp"
 #include "corlab/paper/fit_paper.hpp"
 #include "corlab/study/results_table.hpp"
@@ -144,16 +146,18 @@ json mesh_runs(const std::vector<HistoryRun>& runs) {
   return out;
 }
 
-/// Relative errors (e_model - e_FE)/e_FE of one model over the compared runs: per (study, group)
-/// (mean, RMS, largest with its velocity) and over all runs (RMS, largest).
+/// Relative errors (e_model - e_FE)/e_FE of one model over the compared runs
+/// (relative_error_stats): per (study, group) (mean, RMS, largest with its velocity) and over all
+/// runs (RMS, largest magnitude).
 json model_error(const json& comparison, const char* model) {
   struct Group {
     int runs = 0;
-    std::vector<double> rel;
+    std::vector<double> e_model;
+    std::vector<double> e_fe;
     std::vector<double> velocity;
   };
   std::map<std::pair<std::string, std::string>, Group> groups;
-  std::vector<const Group*> first_seen;  // the overall numbers sum in the order of the runs
+  std::vector<const Group*> first_seen;  // the overall numbers take the groups in this order
   for (const auto& c : comparison) {
     const double e_fe = number(c, "e_fe");
     const double e_m = number(c, model);
@@ -161,48 +165,70 @@ json model_error(const json& comparison, const char* model) {
     auto [it, added] = groups.try_emplace(
         std::make_pair(c["study"].get<std::string>(), c["group"].get<std::string>()));
     if (added) first_seen.push_back(&it->second);
-    ++it->second.runs;
-    if (e_fe == 0.0) continue;
-    it->second.rel.push_back((e_m - e_fe) / e_fe);
-    it->second.velocity.push_back(number(c, "velocity"));
+    Group& g = it->second;
+    ++g.runs;
+    g.e_model.push_back(e_m);
+    g.e_fe.push_back(e_fe);
+    g.velocity.push_back(number(c, "velocity"));
   }
-  auto rms = [](double sum_sq, std::size_t n) {
-    return std::sqrt(sum_sq / static_cast<double>(n));
-  };
   json per_group = json::array();
   for (const auto& [key, g] : groups) {
-    if (g.rel.empty()) continue;
-    double sum = 0.0;
-    double sum_sq = 0.0;
-    std::size_t worst = 0;
-    for (std::size_t i = 0; i < g.rel.size(); ++i) {
-      sum += g.rel[i];
-      sum_sq += g.rel[i] * g.rel[i];
-      if (std::abs(g.rel[i]) > std::abs(g.rel[worst])) worst = i;
-    }
-    const auto n = g.rel.size();
+    const RelativeErrorStats s = relative_error_stats(g.e_model, g.e_fe);
+    if (s.n == 0) continue;
     per_group.push_back({{"study", key.first},
                          {"group", key.second},
                          {"runs", g.runs},
-                         {"mean_relative_error", sum / static_cast<double>(n)},
-                         {"rms_relative_error", rms(sum_sq, n)},
-                         {"largest_relative_error", g.rel[worst]},
-                         {"largest_at_velocity", g.velocity[worst]}});
+                         {"mean_relative_error", s.bias},
+                         {"rms_relative_error", s.rms},
+                         {"largest_relative_error", s.worst},
+                         {"largest_at_velocity", g.velocity[s.worst_index]}});
   }
-  double sum_sq = 0.0;
-  double largest = 0.0;
-  std::size_t n = 0;
+  std::vector<double> e_model;
+  std::vector<double> e_fe;
   for (const Group* g : first_seen) {
-    for (const double r : g->rel) {
-      sum_sq += r * r;
-      largest = std::max(largest, std::abs(r));
-      ++n;
-    }
+    e_model.insert(e_model.end(), g->e_model.begin(), g->e_model.end());
+    e_fe.insert(e_fe.end(), g->e_fe.begin(), g->e_fe.end());
   }
-  json overall = {{"runs", n},
-                  {"rms_relative_error", n > 0 ? rms(sum_sq, n) : kNaN},
-                  {"largest_relative_error", n > 0 ? largest : kNaN}};
+  const RelativeErrorStats all = relative_error_stats(e_model, e_fe);
+  json overall = {{"runs", all.n},
+                  {"rms_relative_error", all.rms},
+                  {"largest_relative_error", std::abs(all.worst)}};
   return {{"groups", per_group}, {"overall", overall}};
+}
+
+json stats_json(const RelativeErrorStats& s) {
+  return {{"n", s.n}, {"rms", s.rms}, {"worst", s.worst}, {"bias", s.bias}};
+}
+
+/// corlab2026 against eq. 19 with the paper's constants (ma2023) on the Table 2 runs, both for each
+/// run's own materials: their relative errors over the runs where both are defined, and in how
+/// many of those corlab2026 is at least as close to the FE e.
+json corlab2026_versus_eq19(const json& comparison) {
+  std::vector<double> e_fe;
+  std::vector<double> e_ours;
+  std::vector<double> e_paper;
+  for (const auto& c : comparison) {
+    if (c["study"] != "table2") continue;
+    e_fe.push_back(number(c, "e_fe"));
+    e_ours.push_back(number(c, "e_corlab2026"));
+    e_paper.push_back(number(c, "e_paper"));
+  }
+  const std::vector<double> all_ours = relative_errors(e_ours, e_fe);
+  const std::vector<double> all_paper = relative_errors(e_paper, e_fe);
+  std::vector<double> ours;
+  std::vector<double> paper;
+  int closer = 0;
+  for (std::size_t i = 0; i < all_ours.size(); ++i) {
+    if (!std::isfinite(all_ours[i]) || !std::isfinite(all_paper[i])) continue;
+    ours.push_back(all_ours[i]);
+    paper.push_back(all_paper[i]);
+    if (std::abs(all_ours[i]) <= std::abs(all_paper[i])) ++closer;
+  }
+  return {{"study", "table2"},
+          {"cases", ours.size()},
+          {"corlab2026_at_least_as_close", closer},
+          {"corlab2026", stats_json(relative_error_stats(ours))},
+          {"ma2023", stats_json(relative_error_stats(paper))}};
 }
 
 /// A fitted coefficient next to a published value: relative difference and whether the
@@ -370,6 +396,7 @@ void add_comparison_numbers(json& fits) {
   const json comparison = fits.value("comparison", json::array());
   fits["model_error"] = {{"e_paper", model_error(comparison, "e_paper")},
                          {"e_ours", model_error(comparison, "e_ours")}};
+  fits["corlab2026_versus_eq19"] = corlab2026_versus_eq19(comparison);
   fits["versus_paper"] = versus_paper(fits);
 }
 

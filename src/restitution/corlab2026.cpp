@@ -1,8 +1,12 @@
 #include "corlab/restitution/corlab2026.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
+#include <string_view>
+#include <utility>
 
 #include "corlab/core/units.hpp"
 #include "corlab/restitution/first_yield.hpp"
@@ -65,21 +69,81 @@ double first_body_cap(const Corlab2026Inputs& in,
   return std::max(1.0, cap);
 }
 
+// The fitted coefficients {name, value}: data/fe_restitution/model_fit.json's "coefficients",
+// generated at configure time (cmake/Corlab2026Coefficients.cmake).
+struct FittedValue {
+  std::string_view name;
+  double value;
+};
+constexpr auto kFitted = std::to_array<FittedValue>({
+#include "corlab2026_fitted.inc"
+});
+
+constexpr int times_fitted(std::string_view name) {
+  int n = 0;
+  for (const auto& f : kFitted) n += f.name == name ? 1 : 0;
+  return n;
+}
+
+constexpr bool listed(std::string_view name) {
+  return std::any_of(kCorlab2026Coefficients.begin(), kCorlab2026Coefficients.end(),
+                     [&](const auto& c) { return c.first == name; });
+}
+
+// A name as a template argument, so that a failed check names the coefficient (GCC: "In
+// instantiation of ... [with Name<...> coefficient = Name<5>{"kappa"}]").
+template <std::size_t N>
+struct Name {
+  std::array<char, N + 1> text{};  // 0-terminated: GCC prints it as a string
+  constexpr explicit Name(std::string_view s) { std::copy_n(s.begin(), N, text.begin()); }
+  constexpr std::string_view view() const { return {text.data(), N}; }
+};
+
+template <Name coefficient>
+constexpr bool fitted_once() {
+  static_assert(times_fitted(coefficient.view()) == 1,
+                "a coefficient of kCorlab2026Coefficients (named above) is missing from "
+                "data/fe_restitution/model_fit.json");
+  return true;
+}
+
+template <Name coefficient>
+constexpr bool in_the_list() {
+  static_assert(listed(coefficient.view()),
+                "data/fe_restitution/model_fit.json has a coefficient (named above) that "
+                "kCorlab2026Coefficients lacks");
+  return true;
+}
+
+template <std::size_t... I>
+constexpr bool every_coefficient_fitted(std::index_sequence<I...> /*unused*/) {
+  constexpr auto& list = kCorlab2026Coefficients;
+  return (fitted_once<Name<list[I].first.size()>(list[I].first)>() && ...);
+}
+
+template <std::size_t... I>
+constexpr bool every_fitted_value_listed(std::index_sequence<I...> /*unused*/) {
+  return (in_the_list<Name<kFitted[I].name.size()>(kFitted[I].name)>() && ...);
+}
+
+static_assert(every_coefficient_fitted(std::make_index_sequence<kCorlab2026Coefficients.size()>{}));
+static_assert(every_fitted_value_listed(std::make_index_sequence<kFitted.size()>{}));
+
+constexpr Corlab2026Coefficients fitted_coefficients() {
+  Corlab2026Coefficients k;
+  for (const auto& [name, member] : kCorlab2026Coefficients) {
+    for (const auto& f : kFitted) {
+      if (f.name == name) k.*member = f.value;
+    }
+  }
+  return k;
+}
+
 }  // namespace
 
 Corlab2026Coefficients corlab2026_fitted() {
-  // data/fe_restitution/model_fit.json, "coefficients" (python/corlab/model_fit.py).
-  return Corlab2026Coefficients{.c1 = 0.2537807046309275,
-                                .phi_max = 2.749961889027828,
-                                .kappa = 1.24190383172949,
-                                .kappa_cavity = 5.028969585766255,
-                                .b = 1.947265089159724,
-                                .c = 0.5665472364849098,
-                                .gamma_sphere = 0.5973759056918005,
-                                .gamma_substrate = 0.4825119016814686,
-                                .compliance_first = 0.554183208694375,
-                                .compliance_other = 1.113796466716547,
-                                .flattening = 2.4068293820268476};
+  static constexpr Corlab2026Coefficients kCoefficients = fitted_coefficients();
+  return kCoefficients;
 }
 
 Corlab2026Pair corlab2026_pair(const Material& sphere, const Material& substrate) {

@@ -26,7 +26,8 @@ struct GoodnessOfFit {
   double residual_sum_squares = 0.0;  ///< SSE = sum (y - y_hat)^2
   double residual_std_error = 0.0;    ///< s = sqrt(SSE / dof)
   double r_squared = 0.0;  ///< 1 - SSE / sum (y - mean y)^2 (centred; model with an intercept)
-  double max_relative_error = 0.0;  ///< max |y_hat - y| / |y| over y != 0 [-]
+  /// Over y != 0 (relative_error_stats; 0 when there is none):
+  double max_relative_error = 0.0;  ///< max |y_hat - y| / |y| [-]
   double rms_relative_error = 0.0;  ///< sqrt(mean ((y_hat - y) / y)^2) [-]
 };
 

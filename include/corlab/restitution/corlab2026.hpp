@@ -73,8 +73,9 @@ inline constexpr std::array<std::pair<std::string_view, double Corlab2026Coeffic
                              {"compliance_other", &Corlab2026Coefficients::compliance_other},
                              {"flattening", &Corlab2026Coefficients::flattening}}};
 
-/// The coefficients fitted to the shipped dataset (data/fe_restitution/model_fit.json; a test
-/// checks that they are the file's and that refitting the shipped data gives them).
+/// The coefficients fitted to the shipped dataset: data/fe_restitution/model_fit.json's, generated
+/// at configure time (cmake/Corlab2026Coefficients.cmake; a test checks them bit for bit against
+/// the file, and that refitting the shipped data gives them).
 Corlab2026Coefficients corlab2026_fitted();
 
 /// The dimensionless inputs of one impact.
