@@ -20,7 +20,7 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
 TEST_DEBIAN_PACKAGES := lammps liggghts yade
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
-  bench format clean dem-check install
+  bench format clean dem-check install golden-rebaseline
 
 # Installs the missing packages of $(1) with apt-get (as root).
 define apt_install
@@ -92,6 +92,11 @@ test-asan: deps
 	  ctest --output-on-failure -j $(JOBS) -L 'unit|fuzz' -E '^fuzz_gmsh$$' && \
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --output-on-failure --no-tests=error -j $(JOBS) -R '$(ASAN_FAST_VERIFICATION)|^regression_input_cli$$'
+
+# The golden tier (docs/dev/testing.md): rerun its cases, print old and new side by side, rewrite
+# tests/golden/golden.json.
+golden-rebaseline: build
+	./$(BUILD_DIR)/tests/golden_test --rebaseline
 
 bench: build
 	for b in $(BUILD_DIR)/bin/*_benchmark; do $$b; done

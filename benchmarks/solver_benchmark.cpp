@@ -3,7 +3,8 @@
 //     elements, steps, element_steps_per_s; the time per iteration is the wall time of one run.
 //   BM_ImpactVelocity/v: the same case at v = 0.1 and 70 m/s (the slowest runs of the paper
 //     study: a fine contact mesh at low speed, ~30,000 elements at high speed).
-//   The context line "isa" names the element-loop clone the CPU runs (avx512, avx2, baseline).
+//   The context line "isa" names the hot loops' SIMD level (simd_level.hpp: the highest the CPU
+//   has, or $CORLAB_SIMD).
 //   BM_ElementThroughput/h: the same case cut to a fixed end time (solver.t_max), for the
 //     element-loop throughput at several mesh sizes.
 //   BM_Subcycling/v/levels: the case at v = 5 and 0.1 m/s (arg 50, 1: v x 10) with
@@ -18,10 +19,12 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include <string>
 #include <utility>
 
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/explicit_solver.hpp"
+#include "corlab/fem/solver/simd_level.hpp"
 
 namespace {
 
@@ -112,20 +115,11 @@ BENCHMARK(BM_MassScaling)
     ->Iterations(1)
     ->UseRealTime();
 
-/// The clone of the element loop the dynamic loader picks (GCC target_clones order).
-const char* instruction_set() {
-#if defined(__GNUC__) && defined(__x86_64__)
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f")) return "avx512 (x86-64-v4 clone)";
-  if (__builtin_cpu_supports("avx2")) return "avx2 (x86-64-v3 clone)";
-#endif
-  return "baseline";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::AddCustomContext("isa", instruction_set());
+  benchmark::AddCustomContext("isa",
+                              std::string(corlab::fem::to_string(corlab::fem::simd_level())));
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -72,7 +72,10 @@ void write_history_csv(const ImpactHistory& h, const std::filesystem::path& file
   auto out = open_for_writing(file);
   const auto columns = history_columns();
   std::string line;
-  for (const HistoryColumn& c : columns) line += (line.empty() ? "" : ",") + history_csv_header(c);
+  for (const HistoryColumn& c : columns) {
+    if (!line.empty()) line += ',';
+    line += history_csv_header(c);
+  }
   out << line << '\n';
   for (std::size_t i = 0; i < h.time.size(); ++i) {
     line.clear();

@@ -246,14 +246,15 @@ template <bool kTrapezoid, bool kStableStep>
 }
 
 // One pass over the elements [begin, end) of one body (element_loop.hpp).
-[[gnu::always_inline]] inline void element_loop_body(const BodyParams& p,
-                                                     const ElementConstants& ec,
-                                                     ElementState& es,
-                                                     int begin,
-                                                     int end,
-                                                     const NodalArrays& x,
-                                                     double dt,
-                                                     ElementSums& sums) {
+[[gnu::always_inline]] inline void element_loop_body(const ElementPass& pass, ElementSums& sums) {
+  // Copies, not references into `pass`: the loop's stores could alias a referenced field.
+  const BodyParams& p = pass.body;
+  const ElementConstants& ec = pass.elements;
+  ElementState& es = pass.state;
+  const int begin = pass.begin;
+  const int end = pass.end;
+  const NodalArrays x = pass.x;
+  const double dt = pass.dt;
   const double* __restrict r = x.r;
   const double* __restrict z = x.z;
   const double* __restrict vr = x.vr;
@@ -295,16 +296,18 @@ template <bool kTrapezoid, bool kStableStep>
 
 // element_loop for one subcycling level (element_loop.hpp): the rate from the element's own
 // interval, 2^L f_int scattered.
-[[gnu::always_inline]] inline void element_loop_subcycled_body(const BodyParams& p,
-                                                               const ElementConstants& ec,
-                                                               ElementState& es,
-                                                               int begin,
-                                                               int end,
-                                                               const NodalArrays& x,
-                                                               double dt,
+[[gnu::always_inline]] inline void element_loop_subcycled_body(const ElementPass& pass,
                                                                double scale,
                                                                bool stable_step,
                                                                ElementSums& sums) {
+  // Copies, not references into `pass`: the loop's stores could alias a referenced field.
+  const BodyParams& p = pass.body;
+  const ElementConstants& ec = pass.elements;
+  ElementState& es = pass.state;
+  const int begin = pass.begin;
+  const int end = pass.end;
+  const NodalArrays x = pass.x;
+  const double dt = pass.dt;
   const double* __restrict r = x.r;
   const double* __restrict z = x.z;
   double* __restrict fr_out = x.fr;
@@ -437,32 +440,15 @@ template <bool kListed>
 
 CORLAB_SIMD_VARIANTS(void,
                      element_loop,
-                     (const BodyParams& p,
-                      const ElementConstants& ec,
-                      ElementState& es,
-                      int begin,
-                      int end,
-                      const NodalArrays& x,
-                      double dt,
-                      ElementSums& sums),
-                     (p, ec, es, begin, end, x, dt, sums),
-                     element_loop_body(p, ec, es, begin, end, x, dt, sums))
+                     (const ElementPass& pass, ElementSums& sums),
+                     (pass, sums),
+                     element_loop_body(pass, sums))
 
-CORLAB_SIMD_VARIANTS(
-    void,
-    element_loop_subcycled,
-    (const BodyParams& p,
-     const ElementConstants& ec,
-     ElementState& es,
-     int begin,
-     int end,
-     const NodalArrays& x,
-     double dt,
-     double scale,
-     bool stable_step,
-     ElementSums& sums),
-    (p, ec, es, begin, end, x, dt, scale, stable_step, sums),
-    element_loop_subcycled_body(p, ec, es, begin, end, x, dt, scale, stable_step, sums))
+CORLAB_SIMD_VARIANTS(void,
+                     element_loop_subcycled,
+                     (const ElementPass& pass, double scale, bool stable_step, ElementSums& sums),
+                     (pass, scale, stable_step, sums),
+                     element_loop_subcycled_body(pass, scale, stable_step, sums))
 
 CORLAB_SIMD_VARIANTS(NodeSums,
                      node_update_subcycled,

@@ -109,37 +109,31 @@ struct NodeSums {
   double mz_sphere = 0.0;  ///< sum of m z over the sphere at t^{n+1} [kg m]
 };
 
-/// One pass over the elements [begin, end) of one body (all with parameters `p`) at the nodal
-/// positions x.r, x.z [m] and velocities x.vr, x.vz [m/s]; x.fr/x.fz receive -f_int [N].
-/// Stresses are updated at the mid-step geometry, forces and the stable step at x^{n+1}. Runs
-/// the code compiled for `simd`.
-void element_loop(SimdLevel simd,
-                  const BodyParams& p,
-                  const ElementConstants& ec,
-                  ElementState& es,
-                  int begin,
-                  int end,
-                  const NodalArrays& x,
-                  double dt,
-                  ElementSums& sums);
+/// One pass of the element loop: the elements [begin, end) of one body (all with parameters
+/// `body`) at the nodal arrays `x`, over a step dt [s].
+struct ElementPass {
+  const BodyParams& body;
+  const ElementConstants& elements;
+  ElementState& state;
+  int begin;
+  int end;
+  NodalArrays x;
+  double dt;
+};
+
+/// The pass at the nodal positions x.r, x.z [m] and velocities x.vr, x.vz [m/s]; x.fr/x.fz
+/// receive -f_int [N]. Stresses are updated at the mid-step geometry, forces and the stable step
+/// at x^{n+1}. Runs the code compiled for `simd`.
+void element_loop(SimdLevel simd, const ElementPass& pass, ElementSums& sums);
 
 /// element_loop for one subcycling level L (docs/theory/solver.md section 11): each element of
-/// [begin, end) steps over dt = 2^L x the base step from its stored positions (es.r_prev/z_prev,
+/// the pass steps over dt = 2^L x the base step from its stored positions (state.r_prev/z_prev,
 /// updated) to x.r, x.z (all its nodes are in sync); the rate is (x - x_prev) / dt. x.fr/x.fz
 /// receive -scale f_int, scale = 2^L: the element's impulse in base-step units, applied to its
 /// nodes now (asynchronous variational integrator). stable_step: also sums.dt_min (else left
 /// infinite: a pass whose stable step is not used, most of them, skips its square roots).
-void element_loop_subcycled(SimdLevel simd,
-                            const BodyParams& p,
-                            const ElementConstants& ec,
-                            ElementState& es,
-                            int begin,
-                            int end,
-                            const NodalArrays& x,
-                            double dt,
-                            double scale,
-                            bool stable_step,
-                            ElementSums& sums);
+void element_loop_subcycled(
+    SimdLevel simd, const ElementPass& pass, double scale, bool stable_step, ElementSums& sums);
 
 /// What the subcycled nodal update needs beyond the nodal arrays.
 struct SubcycledNodes {

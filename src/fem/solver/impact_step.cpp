@@ -77,10 +77,11 @@ ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
     const bool stable_step = top == lv.max_level;
     if (l > 0) s.transit.before_slow_pass(lv, l - 1, s.fr.data(), s.fz.data());
     ElementSums ls;
-    element_loop_subcycled(m.simd, m.sphere, m.elements, s.elements, sb, lv.sphere_end[l], x, h,
+    element_loop_subcycled(m.simd, {m.sphere, m.elements, s.elements, sb, lv.sphere_end[l], x, h},
                            scale, stable_step, ls);
-    element_loop_subcycled(m.simd, m.substrate, m.elements, s.elements, ub, lv.substrate_end[l], x,
-                           h, scale, stable_step, ls);
+    element_loop_subcycled(m.simd,
+                           {m.substrate, m.elements, s.elements, ub, lv.substrate_end[l], x, h},
+                           scale, stable_step, ls);
     if (l > 0) {
       s.transit.after_slow_pass(lv, l - 1, 0.5 * h, s.fr.data(), s.fz.data(), s.vr.data(),
                                 s.vz.data());
@@ -166,9 +167,10 @@ ForceReport compute_forces(const ImpactModel& m, ImpactState& s) {
   ForceReport rep;
   ElementSums& sums = rep.elements;
   const NodalArrays x = nodal_arrays(m, s);
-  element_loop(m.simd, m.sphere, m.elements, s.elements, 0, m.n_sphere_elements, x, s.dt, sums);
-  element_loop(m.simd, m.substrate, m.elements, s.elements, m.n_sphere_elements, m.n_elements, x,
-               s.dt, sums);
+  element_loop(m.simd, {m.sphere, m.elements, s.elements, 0, m.n_sphere_elements, x, s.dt}, sums);
+  element_loop(m.simd,
+               {m.substrate, m.elements, s.elements, m.n_sphere_elements, m.n_elements, x, s.dt},
+               sums);
   s.element_updates += m.n_elements;
   record_element_sums(m, s, rep);
   rep.penetrating = apply_contact(m, s);

@@ -41,8 +41,10 @@ bool cpu_has(SimdLevel level) {
 
 std::string supported_names() {
   std::string out;
-  for (SimdLevel l : supported_simd_levels())
-    out += (out.empty() ? "" : ", ") + std::string(to_string(l));
+  for (SimdLevel l : supported_simd_levels()) {
+    if (!out.empty()) out += ", ";
+    out += to_string(l);
+  }
   return out;
 }
 

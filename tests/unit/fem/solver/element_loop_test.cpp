@@ -80,10 +80,10 @@ TEST(ElementLoop, BlocksGiveWhatEachElementGivesAlone) {
   all.deform();
   Block one = all;
   ElementSums sums_all;
-  element_loop(SimdLevel::kBaseline, p, all.ec, all.es, 0, 37, all.arrays(), kDt, sums_all);
+  element_loop(SimdLevel::kBaseline, {p, all.ec, all.es, 0, 37, all.arrays(), kDt}, sums_all);
   ElementSums sums_one;
   for (int e = 0; e < 37; ++e) {
-    element_loop(SimdLevel::kBaseline, p, one.ec, one.es, e, e + 1, one.arrays(), kDt, sums_one);
+    element_loop(SimdLevel::kBaseline, {p, one.ec, one.es, e, e + 1, one.arrays(), kDt}, sums_one);
   }
   for (int e = 0; e < 37; ++e) {
     ASSERT_EQ(all.es.srr[e], one.es.srr[e]) << "element " << e;
@@ -113,7 +113,7 @@ TEST(ElementLoop, UniformStrainRateGivesTheSameStressInEveryElement) {
   const double c = 1e3;  // [1/s]
   for (std::size_t i = 0; i < b.r.size(); ++i) b.vz[i] = -c * b.z[i];
   ElementSums sums;
-  element_loop(SimdLevel::kBaseline, p, b.ec, b.es, 0, b.ec.size(), b.arrays(), kDt, sums);
+  element_loop(SimdLevel::kBaseline, {p, b.ec, b.es, 0, b.ec.size(), b.arrays(), kDt}, sums);
   const double g = p.material.shear_modulus;
   const double lam = p.material.bulk_modulus - 2.0 * g / 3.0;
   const double de = -c * kDt / (1.0 + 0.5 * c * kDt);
@@ -135,7 +135,7 @@ TEST(ElementLoop, NamesTheInvertedElementNotItsBlock) {
     b.r[nd[2]] = b.r[nd[0]] - 0.5e-3;  // the far corner crosses the element's near edge
     b.z[nd[2]] = b.z[nd[0]] - 0.5e-3;
     ElementSums sums;
-    element_loop(SimdLevel::kBaseline, p, b.ec, b.es, 0, 40, b.arrays(), kDt, sums);
+    element_loop(SimdLevel::kBaseline, {p, b.ec, b.es, 0, 40, b.arrays(), kDt}, sums);
     EXPECT_EQ(sums.bad_element, bad);
     EXPECT_FALSE(sums.omega_min > 0.0);
   }
@@ -161,10 +161,10 @@ TEST(ElementLoop, SubcycledPassWithPositionsFromTheVelocitiesIsThePlainPass) {
   sub.es.bv.assign(sub.ec.size(), 0.0);
   ElementSums a;
   ElementSums s;
-  element_loop(SimdLevel::kBaseline, p, plain.ec, plain.es, 0, plain.ec.size(), plain.arrays(), kDt,
-               a);
-  element_loop_subcycled(SimdLevel::kBaseline, p, sub.ec, sub.es, 0, sub.ec.size(), sub.arrays(),
-                         kDt, 1.0, true, s);
+  element_loop(SimdLevel::kBaseline,
+               {p, plain.ec, plain.es, 0, plain.ec.size(), plain.arrays(), kDt}, a);
+  element_loop_subcycled(SimdLevel::kBaseline,
+                         {p, sub.ec, sub.es, 0, sub.ec.size(), sub.arrays(), kDt}, 1.0, true, s);
   const double scale = std::abs(plain.es.szz[0]);
   ASSERT_GT(scale, 0.0);
   for (int e = 0; e < plain.ec.size(); ++e) {
@@ -181,11 +181,11 @@ TEST(ElementLoop, EverySimdLevelAgreesWithTheBaseline) {
   base.deform();
   ElementSums sb;
   Block ref = base;
-  element_loop(SimdLevel::kBaseline, p, ref.ec, ref.es, 0, ref.ec.size(), ref.arrays(), kDt, sb);
+  element_loop(SimdLevel::kBaseline, {p, ref.ec, ref.es, 0, ref.ec.size(), ref.arrays(), kDt}, sb);
   for (const SimdLevel level : supported_simd_levels()) {
     Block b = base;
     ElementSums s;
-    element_loop(level, p, b.ec, b.es, 0, b.ec.size(), b.arrays(), kDt, s);
+    element_loop(level, {p, b.ec, b.es, 0, b.ec.size(), b.arrays(), kDt}, s);
     for (std::size_t i = 0; i < b.fr.size(); ++i) {
       ASSERT_NEAR(b.fr[i], ref.fr[i], 1e-12 * std::abs(ref.fr[i]) + 1e-6) << to_string(level);
       ASSERT_NEAR(b.fz[i], ref.fz[i], 1e-12 * std::abs(ref.fz[i]) + 1e-6) << to_string(level);
