@@ -245,8 +245,14 @@ template <bool kTrapezoid, bool kStableStep>
   }
 }
 
-// One pass over the elements [begin, end) of one body (element_loop.hpp).
-[[gnu::always_inline]] inline void element_loop_body(const ElementPass& pass, ElementSums& sums) {
+// One pass over the elements of `pass` (element_loop.hpp): gather, the block kernel, scatter.
+// kSubcycled (element_loop_subcycled): the rate from each element's own interval (its stored
+// positions, updated), the trapezoidal viscous work, and scale x f_int scattered.
+template <bool kSubcycled>
+[[gnu::always_inline]] inline void pass_body(const ElementPass& pass,
+                                             double scale,
+                                             bool stable_step,
+                                             ElementSums& sums) {
   // Copies, not references into `pass`: the loop's stores could alias a referenced field.
   const BodyParams& p = pass.body;
   const ElementConstants& ec = pass.elements;
@@ -263,92 +269,59 @@ template <bool kTrapezoid, bool kStableStep>
   double* __restrict fz_out = x.fz;
   BlockLanes lanes;
   auto& [xr, xz, ur, uz, f_r, f_z] = lanes;
+  const double inv_dt = 1.0 / dt;
   for (int e0 = begin; e0 < end; e0 += kBlock) {
     const int nb = std::min(kBlock, end - e0);
     const BlockNodes nd = block_nodes(ec, e0);
     // lanes.*, not the bindings: clang rejects structured bindings inside omp simd.
     for (int i = 0; i < 4; ++i) {
       const int* __restrict ni = nd[i];
+      if constexpr (kSubcycled) {
+        double* __restrict rp = es.r_prev[i].data() + e0;
+        double* __restrict zp = es.z_prev[i].data() + e0;
 #pragma omp simd
-      for (int l = 0; l < nb; ++l) {
-        const int n = ni[l];
-        lanes.xr[i][l] = r[n];
-        lanes.xz[i][l] = z[n];
-        lanes.ur[i][l] = vr[n];
-        lanes.uz[i][l] = vz[n];
+        for (int l = 0; l < nb; ++l) {
+          const int n = ni[l];
+          const double rn = r[n];
+          const double zn = z[n];
+          lanes.xr[i][l] = rn;
+          lanes.xz[i][l] = zn;
+          lanes.ur[i][l] = (rn - rp[l]) * inv_dt;
+          lanes.uz[i][l] = (zn - zp[l]) * inv_dt;
+          rp[l] = rn;
+          zp[l] = zn;
+        }
+      } else {
+#pragma omp simd
+        for (int l = 0; l < nb; ++l) {
+          const int n = ni[l];
+          lanes.xr[i][l] = r[n];
+          lanes.xz[i][l] = z[n];
+          lanes.ur[i][l] = vr[n];
+          lanes.uz[i][l] = vz[n];
+        }
       }
     }
     const double omega_before = sums.omega_min;
-    const Block b = block_at(ec, es, e0, nb, lanes, false);
-    element_block<false, true>(p, b, dt, sums);
+    const Block b = block_at(ec, es, e0, nb, lanes, kSubcycled);
+    if (!kSubcycled || stable_step) {
+      element_block<kSubcycled, true>(p, b, dt, sums);
+    } else {
+      element_block<kSubcycled, false>(p, b, dt, sums);
+    }
     note_inverted(omega_before, e0, lanes, nb, sums);
     // Element by element (nodes are shared): the order of each node's sum is the element order.
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4
       for (int i = 0; i < 4; ++i) {
         const int n = nd[i][l];
-        fr_out[n] -= f_r[i][l];
-        fz_out[n] -= f_z[i][l];
-      }
-    }
-  }
-}
-
-// element_loop for one subcycling level (element_loop.hpp): the rate from the element's own
-// interval, 2^L f_int scattered.
-[[gnu::always_inline]] inline void element_loop_subcycled_body(const ElementPass& pass,
-                                                               double scale,
-                                                               bool stable_step,
-                                                               ElementSums& sums) {
-  // Copies, not references into `pass`: the loop's stores could alias a referenced field.
-  const BodyParams& p = pass.body;
-  const ElementConstants& ec = pass.elements;
-  ElementState& es = pass.state;
-  const int begin = pass.begin;
-  const int end = pass.end;
-  const NodalArrays x = pass.x;
-  const double dt = pass.dt;
-  const double* __restrict r = x.r;
-  const double* __restrict z = x.z;
-  double* __restrict fr_out = x.fr;
-  double* __restrict fz_out = x.fz;
-  BlockLanes lanes;
-  auto& [xr, xz, ur, uz, f_r, f_z] = lanes;
-  const double inv_dt = 1.0 / dt;
-  for (int e0 = begin; e0 < end; e0 += kBlock) {
-    const int nb = std::min(kBlock, end - e0);
-    const BlockNodes nd = block_nodes(ec, e0);
-    for (int i = 0; i < 4; ++i) {
-      const int* __restrict ni = nd[i];
-      double* __restrict rp = es.r_prev[i].data() + e0;
-      double* __restrict zp = es.z_prev[i].data() + e0;
-#pragma omp simd
-      for (int l = 0; l < nb; ++l) {
-        const int n = ni[l];
-        const double rn = r[n];
-        const double zn = z[n];
-        lanes.xr[i][l] = rn;
-        lanes.xz[i][l] = zn;
-        lanes.ur[i][l] = (rn - rp[l]) * inv_dt;
-        lanes.uz[i][l] = (zn - zp[l]) * inv_dt;
-        rp[l] = rn;
-        zp[l] = zn;
-      }
-    }
-    const double omega_before = sums.omega_min;
-    const Block b = block_at(ec, es, e0, nb, lanes, true);
-    if (stable_step) {
-      element_block<true, true>(p, b, dt, sums);
-    } else {
-      element_block<true, false>(p, b, dt, sums);
-    }
-    note_inverted(omega_before, e0, lanes, nb, sums);
-    for (int l = 0; l < nb; ++l) {
-#pragma GCC unroll 4
-      for (int i = 0; i < 4; ++i) {
-        const int n = nd[i][l];
-        fr_out[n] -= scale * f_r[i][l];
-        fz_out[n] -= scale * f_z[i][l];
+        if constexpr (kSubcycled) {
+          fr_out[n] -= scale * f_r[i][l];
+          fz_out[n] -= scale * f_z[i][l];
+        } else {
+          fr_out[n] -= f_r[i][l];
+          fz_out[n] -= f_z[i][l];
+        }
       }
     }
   }
@@ -442,13 +415,13 @@ CORLAB_SIMD_VARIANTS(void,
                      element_loop,
                      (const ElementPass& pass, ElementSums& sums),
                      (pass, sums),
-                     element_loop_body(pass, sums))
+                     pass_body<false>(pass, 1.0, true, sums))
 
 CORLAB_SIMD_VARIANTS(void,
                      element_loop_subcycled,
                      (const ElementPass& pass, double scale, bool stable_step, ElementSums& sums),
                      (pass, scale, stable_step, sums),
-                     element_loop_subcycled_body(pass, scale, stable_step, sums))
+                     pass_body<true>(pass, scale, stable_step, sums))
 
 CORLAB_SIMD_VARIANTS(NodeSums,
                      node_update_subcycled,
