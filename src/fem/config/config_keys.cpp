@@ -31,11 +31,23 @@ using Accessor = std::variant<double* (*)(ImpactConfig&),
                               std::optional<double>* (*)(ImpactConfig&),
                               std::vector<double>* (*)(ImpactConfig&),
                               Material* (*)(ImpactConfig&),
-                              std::filesystem::path* (*)(ImpactConfig&)>;
+                              std::filesystem::path* (*)(ImpactConfig&),
+                              SubstrateShape* (*)(ImpactConfig&)>;
 
 constexpr KeyKind kKindOf[] = {KeyKind::number,       KeyKind::integer,     KeyKind::integer,
                                KeyKind::yield_stress, KeyKind::number_list, KeyKind::material,
-                               KeyKind::path};
+                               KeyKind::path,         KeyKind::choice};
+
+// The names of a choice key's values (to_string of each), in order.
+constexpr std::array kShapes{SubstrateShape::kFlat, SubstrateShape::kRigid};
+
+SubstrateShape parse_shape(std::string_view key, std::string_view text) {
+  text = trim(text);
+  for (const SubstrateShape s : kShapes) {
+    if (to_string(s) == text) return s;
+  }
+  throw_invalid(key, text, "one of flat, rigid");
+}
 
 struct KeyEntry {
   ConfigKeyInfo info;
@@ -199,6 +211,11 @@ std::vector<KeyEntry> build_table() {
   add_material_keys<true>(t, {"sphere.material", "sphere.E", "sphere.nu", "sphere.rho",
                               "sphere.sigma_y", "sphere.hardening"});
   t.push_back(entry(
+      "substrate.shape", "", std::nullopt,
+      "what the sphere hits: flat (the elastic-plastic substrate below) | rigid (a rigid "
+      "frictionless flat; the substrate keys are then unused)",
+      +[](ImpactConfig& c) { return &c.substrate.shape; }));
+  t.push_back(entry(
       "substrate.radius", "[m]", closed(1e-6, 10.0),
       "radial extent (also >= 2 predicted contact radii)",
       +[](ImpactConfig& c) { return &c.substrate.radius; }));
@@ -281,6 +298,8 @@ void set_value(const KeyEntry& e, ImpactConfig& c, std::string_view text) {
         } else if constexpr (std::is_same_v<T, Material>) {
           const std::string body(key.substr(0, key.find('.')));
           *target = parse_material_spec(trim(text), body);
+        } else if constexpr (std::is_same_v<T, SubstrateShape>) {
+          *target = parse_shape(key, text);
         } else {
           *target = std::string(trim(text));
         }
@@ -320,6 +339,8 @@ std::string text_of(const KeyEntry& e, ImpactConfig& c) {
           return fmt::format("[{}]", fmt::join(*v, ", "));
         } else if constexpr (std::is_same_v<T, Material>) {
           return v->name;
+        } else if constexpr (std::is_same_v<T, SubstrateShape>) {
+          return std::string(to_string(*v));
         } else {
           return v->string();
         }
@@ -348,6 +369,8 @@ nlohmann::json json_of(const KeyEntry& e, ImpactConfig& c) {
           return material_json(*v);
         } else if constexpr (std::is_same_v<T, std::filesystem::path>) {
           return v->string();
+        } else if constexpr (std::is_same_v<T, SubstrateShape>) {
+          return std::string(to_string(*v));
         } else {
           return *v;
         }

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
@@ -16,7 +18,7 @@ namespace {
 
 double uncapped_contact_radius(const ImpactConfig& c) {
   double a = hertz_reference(c).contact_radius;
-  if (const auto& sy = c.substrate.material.yield_stress) {
+  if (const std::optional<double> sy = contact_yield_stress(c)) {
     a = std::max(a, plastic_contact_radius(c.sphere.radius, c.sphere.material.density,
                                            c.impact.velocity, *sy));
   }
@@ -55,19 +57,24 @@ void check_geometry(const ImpactConfig& c) {
   if (c.mesh.transitions != 0.0 && c.mesh.transitions != 1.0) {
     throw_invalid("mesh.transitions", c.mesh.transitions, "0 (off) or 1 (on)");
   }
-  if (!c.mesh.file.empty()) return;  // the file's geometry is used, not these keys
+  if (!c.mesh.file.empty()) {
+    if (rigid_target(c)) {
+      throw_invalid("substrate.shape", "rigid",
+                    "flat with mesh.file (the rigid flat is for the built-in sphere mesh)");
+    }
+    return;  // the file's geometry is used, not these keys
+  }
   const double a = uncapped_contact_radius(c);
   if (!(a <= kMaxContactRadiusFraction * c.sphere.radius)) {
     throw_invalid(
         "impact.velocity", c.impact.velocity,
         fmt::format("low enough for the predicted contact radius ({:.3g} m) to stay <= "
-                    "{:g} x sphere.radius = {:.3g} m (too fast, or a too soft "
-                    "substrate: E = {:g} Pa, sigma_y = {} Pa)",
+                    "{:g} x sphere.radius = {:.3g} m (too fast, or too soft a contact: E* = "
+                    "{:g} Pa, yield stress {} Pa)",
                     a, kMaxContactRadiusFraction, kMaxContactRadiusFraction * c.sphere.radius,
-                    c.substrate.material.youngs_modulus,
-                    c.substrate.material.yield_stress
-                        ? fmt::format("{:g}", *c.substrate.material.yield_stress)
-                        : std::string("none")));
+                    contact_effective_modulus(c),
+                    contact_yield_stress(c) ? fmt::format("{:g}", *contact_yield_stress(c))
+                                            : std::string("none")));
   }
   try {
     validate(mesh_options_for(c));  // the generator's own limits, reported on the user's key
@@ -75,6 +82,7 @@ void check_geometry(const ImpactConfig& c) {
     throw InputError(fmt::format("invalid mesh.h_min = {}: the mesh it gives is refused ({})",
                                  c.mesh.h_min, err.what()));
   }
+  if (rigid_target(c)) return;  // no substrate body: its size keys are unused
   const double min_size = kMinSubstrateContactRadii * predicted_contact_radius(c);
   for (const auto& [key, value] : {std::pair{"substrate.radius", c.substrate.radius},
                                    std::pair{"substrate.depth", c.substrate.depth}}) {
@@ -122,8 +130,9 @@ RunEstimate estimate_run(const ImpactConfig& c) {
   RunEstimate e;
   e.contact_radius = uncapped_contact_radius(c);
   e.element_size = mesh_options_for(c).h_contact;
-  e.wave_speed = std::max(c.sphere.material.dilatational_wave_speed(),
-                          c.substrate.material.dilatational_wave_speed());
+  e.wave_speed = rigid_target(c) ? c.sphere.material.dilatational_wave_speed()
+                                 : std::max(c.sphere.material.dilatational_wave_speed(),
+                                            c.substrate.material.dilatational_wave_speed());
   const double b1 = c.solver.bulk_viscosity_linear;
   // Square element: L_e = h / sqrt 2 (stable_time_step.hpp); the hoop term next to the axis only
   // shortens it, so this is a lower bound on the step count.
@@ -138,7 +147,7 @@ RunEstimate estimate_run(const ImpactConfig& c) {
 
 void validate_limits(const ImpactConfig& config) {
   check_plastic_body(config.sphere.material, "sphere");
-  check_plastic_body(config.substrate.material, "substrate");
+  if (!rigid_target(config)) check_plastic_body(config.substrate.material, "substrate");
   check_geometry(config);
   check_solver(config);
   check_step_budget(config);

@@ -49,6 +49,21 @@ std::string toml_value_text(const std::string& key, const toml::node& node) {
 
 }  // namespace
 
+std::string_view to_string(SubstrateShape shape) {
+  return shape == SubstrateShape::kRigid ? "rigid" : "flat";
+}
+
+double contact_effective_modulus(const ImpactConfig& config) {
+  const Material& s = config.sphere.material;
+  if (rigid_target(config)) return s.youngs_modulus / (1.0 - s.poisson_ratio * s.poisson_ratio);
+  return effective_modulus(s, config.substrate.material);
+}
+
+std::optional<double> contact_yield_stress(const ImpactConfig& config) {
+  return rigid_target(config) ? config.sphere.material.yield_stress
+                              : config.substrate.material.yield_stress;
+}
+
 void validate(const ImpactConfig& c) {
   validate_key_ranges(c);
   validate_limits(c);

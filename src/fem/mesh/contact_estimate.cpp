@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "corlab/materials/material.hpp"
 
@@ -50,8 +51,7 @@ HertzReference hertz_reference(double sphere_radius,
 }
 
 HertzReference hertz_reference(const ImpactConfig& config) {
-  return hertz_reference(config.sphere.radius,
-                         effective_modulus(config.sphere.material, config.substrate.material),
+  return hertz_reference(config.sphere.radius, contact_effective_modulus(config),
                          config.sphere.material.density, config.impact.velocity);
 }
 
@@ -71,10 +71,9 @@ double plastic_contact_radius(double sphere_radius,
 double predicted_contact_radius(const ImpactConfig& config) {
   const double r = config.sphere.radius;
   double a = hertz_reference(config).contact_radius;
-  if (config.substrate.material.yield_stress) {
-    a = std::max(a,
-                 plastic_contact_radius(r, config.sphere.material.density, config.impact.velocity,
-                                        *config.substrate.material.yield_stress));
+  if (const std::optional<double> sy = contact_yield_stress(config)) {
+    a = std::max(
+        a, plastic_contact_radius(r, config.sphere.material.density, config.impact.velocity, *sy));
   }
   return std::min(a, kMaxContactRadiusFraction * r);
 }

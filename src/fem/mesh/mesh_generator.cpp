@@ -18,8 +18,10 @@ namespace corlab::fem {
 void validate(const MeshOptions& o) {
   require_positive("mesh.sphere_radius", o.sphere_radius, "[m]");
   require_non_negative("mesh.gap", o.gap, "[m]");
-  require_positive("mesh.substrate_radius", o.substrate_radius, "[m]");
-  require_positive("mesh.substrate_depth", o.substrate_depth, "[m]");
+  if (o.substrate) {
+    require_positive("mesh.substrate_radius", o.substrate_radius, "[m]");
+    require_positive("mesh.substrate_depth", o.substrate_depth, "[m]");
+  }
   require_positive("mesh.h_contact", o.h_contact, "[m]");
   require_positive("mesh.zone_radius", o.zone_radius, "[m]");
   require_positive("mesh.zone_depth", o.zone_depth, "[m]");
@@ -30,8 +32,8 @@ void validate(const MeshOptions& o) {
     throw_invalid("mesh.h_contact", o.h_contact, "<= R / 20 (too coarse for the sphere)");
   const double max_elements_per_edge = 20000.0;
   if (o.sphere_radius / o.h_contact > max_elements_per_edge ||
-      o.substrate_radius / o.h_contact > max_elements_per_edge ||
-      o.substrate_depth / o.h_contact > max_elements_per_edge)
+      (o.substrate && (o.substrate_radius / o.h_contact > max_elements_per_edge ||
+                       o.substrate_depth / o.h_contact > max_elements_per_edge)))
     throw_invalid("mesh.h_contact", o.h_contact, "coarser (more than 20000 elements per edge)");
 }
 
@@ -50,6 +52,7 @@ MeshOptions mesh_options_for(const ImpactConfig& config) {
   o.growth = config.mesh.growth;
   o.h_max = std::max(config.mesh.h_max, o.h_contact);
   o.transitions = config.mesh.transitions != 0.0;
+  o.substrate = !rigid_target(config);
   return o;
 }
 
@@ -58,7 +61,7 @@ Mesh generate_impact_mesh(const MeshOptions& options) {
   Mesh mesh;
   meshing::MeshBuilder builder(mesh);
   meshing::generate_sphere(options, builder, mesh);
-  meshing::generate_substrate(options, builder, mesh);
+  if (options.substrate) meshing::generate_substrate(options, builder, mesh);
   for (int n = 0; n < mesh.num_nodes(); ++n)
     if (mesh.r[static_cast<std::size_t>(n)] == 0.0) mesh.axis_nodes.push_back(n);
   return mesh;

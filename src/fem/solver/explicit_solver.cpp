@@ -26,6 +26,7 @@
 namespace corlab::fem {
 namespace {
 
+using solver::ContactKind;
 using solver::ForceReport;
 using solver::ImpactModel;
 using solver::ImpactState;
@@ -100,7 +101,7 @@ ImpactResult finish(const ImpactModel& m,
   res.e = clean ? s.sphere_velocity / m.velocity : kNaN;
   res.e_energy = clean ? std::sqrt(std::max(ke_final, 0.0) / e0) : kNaN;
   res.t_contact = rule.contact_time();
-  res.crater_depth = z_axis_surface - s.z[m.masters[0]];
+  res.crater_depth = m.contact == ContactKind::kSegments ? z_axis_surface - s.z[m.masters[0]] : 0.0;
   res.plastic_strain_max = s.eps_p_max;
   res.energy_sphere_loss = e0 - ke_final;
   res.energy_dissipated_plastic = s.energy.plastic;
@@ -290,7 +291,8 @@ ImpactResult run_impact(const ImpactConfig& config,
   const auto wall_start = std::chrono::steady_clock::now();
   const ImpactModel m = solver::make_impact_model(config, mesh);
   ImpactState s = solver::make_initial_state(m);
-  const double z_axis_surface = s.z[m.masters[0]];
+  // The substrate surface on the axis (the rigid flat: z = 0), for the crater depth.
+  const double z_axis_surface = m.contact == ContactKind::kSegments ? s.z[m.masters[0]] : 0.0;
   ImpactResult res;
   res.elements = m.n_elements;
   res.nodes = m.n_nodes;
@@ -298,8 +300,7 @@ ImpactResult run_impact(const ImpactConfig& config,
   res.mass_scaling = m.scaling.factor * m.scaling.step_floor_scale;
   res.added_mass_fraction = m.scaling.added_mass / m.scaling.sphere_mass_physical;
   res.simd = std::string(to_string(m.simd));
-  res.h_contact =
-      std::hypot(s.r[m.masters[1]] - s.r[m.masters[0]], s.z[m.masters[1]] - s.z[m.masters[0]]);
+  res.h_contact = solver::contact_element_size(m);
   res.energy_initial = m.energy_initial;
 
   TimeLoop loop(config, mesh, control, m, s, res.history);

@@ -53,7 +53,7 @@ void check_node_set(const std::vector<int>& set, const char* name, int nn) {
   }
 }
 
-void check_mesh(const Mesh& mesh) {
+void check_mesh(const Mesh& mesh, ContactKind contact) {
   const int nn = mesh.num_nodes();
   const int ne = mesh.num_elements();
   if (nn == 0 || ne == 0) throw_invalid("mesh", "empty", "at least one element per body");
@@ -73,7 +73,7 @@ void check_mesh(const Mesh& mesh) {
   if (mesh.sphere_surface_nodes.empty()) {
     throw_invalid("mesh.sphere_surface_nodes", "empty", "the contact slave nodes");
   }
-  if (mesh.substrate_surface_nodes.size() < 2) {
+  if (contact == ContactKind::kSegments && mesh.substrate_surface_nodes.size() < 2) {
     throw_invalid("mesh.substrate_surface_nodes", "fewer than 2", "the contact master surface");
   }
 }
@@ -148,6 +148,7 @@ double reference_pressure(const ImpactConfig& config) {
   for (const auto& sy :
        {config.sphere.material.yield_stress, config.substrate.material.yield_stress}) {
     if (sy) p = std::min(p, *sy);
+    if (rigid_target(config)) break;  // the rigid flat has no yield stress
   }
   return p;
 }
@@ -185,15 +186,13 @@ double added_mass(const ElementMasses& em, double f) {
   return added;
 }
 
-/// Stable step [s] of an h x h square of either body at the contact (h: the first master
-/// segment), the smaller of the two: what the contact zone's elements themselves allow.
+/// Stable step [s] of an h x h square of either body at the contact (h: contact_element_size),
+/// the smaller of the two: what the contact zone's elements themselves allow.
 double contact_square_step(const ImpactModel& m) {
-  const int a = m.masters[0];
-  const int b = m.masters[1];
-  const double h = std::hypot(m.r0[b] - m.r0[a], m.z0[b] - m.z0[a]);
-  double step = std::numeric_limits<double>::infinity();
-  for (const BodyParams* p : {&m.sphere, &m.substrate}) {
-    step = std::min(step, p->stable_step_at_rest(h / std::sqrt(2.0)));
+  const double h = contact_element_size(m);
+  double step = m.sphere.stable_step_at_rest(h / std::sqrt(2.0));
+  if (m.contact == ContactKind::kSegments) {
+    step = std::min(step, m.substrate.stable_step_at_rest(h / std::sqrt(2.0)));
   }
   return step;
 }
@@ -237,7 +236,9 @@ double step_floor(const SolverConfig& sc, const ImpactModel& m, const ElementMas
 double mass_scaling_factor(const ImpactConfig& config, const ElementMasses& em) {
   const SolverConfig& sc = config.solver;
   if (sc.mass_scaling_max < 2.0) return 1.0;
-  const double rho = std::max(config.sphere.material.density, config.substrate.material.density);
+  const double rho = rigid_target(config) ? config.sphere.material.density
+                                          : std::max(config.sphere.material.density,
+                                                     config.substrate.material.density);
   const double v = config.impact.velocity;
   const double inertia = rho * v * v / reference_pressure(config);
   double f = std::exp2(std::floor(std::log2(sc.mass_scaling_max)));
@@ -281,27 +282,40 @@ void set_masses(const ImpactConfig& config, ImpactModel& m) {
   }
 }
 
+/// The master masses [kg] a slave's penalty is sized with: interpolated at its projection on the
+/// substrate surface, from the scaled and the physical masses; infinite for the rigid flat.
+struct MasterMass {
+  double scaled = std::numeric_limits<double>::infinity();
+  double physical = std::numeric_limits<double>::infinity();
+};
+
+MasterMass master_mass(const ImpactModel& m, int slave) {
+  if (m.contact == ContactKind::kRigidPlane) return {};
+  const int seg = initial_segment(m.r0.data(), m.masters, m.r0[slave]);
+  const int a = m.masters[seg];
+  const int b = m.masters[seg + 1];
+  const double xi = std::clamp((m.r0[slave] - m.r0[a]) / (m.r0[b] - m.r0[a]), 0.0, 1.0);
+  const MassScaling& ms = m.scaling;
+  return {(1.0 - xi) * m.mass[a] + xi * m.mass[b],
+          (1.0 - xi) * ms.physical_mass[a] + xi * ms.physical_mass[b]};
+}
+
 /// Penalty stiffness per slave, sized from the critical step itself (not from dt), so that the
 /// contact stiffness (and so the penetration and e) does not change with the safety factor.
 void set_penalties(const SolverConfig& sc, ImpactModel& m) {
   m.penalty.assign(m.slaves.size(), 0.0);
   for (std::size_t s = 0; s < m.slaves.size(); ++s) {
     const int i = m.slaves[s];
-    const int seg = initial_segment(m.r0.data(), m.masters, m.r0[i]);
-    const int a = m.masters[seg];
-    const int b = m.masters[seg + 1];
-    const double xi = std::clamp((m.r0[i] - m.r0[a]) / (m.r0[b] - m.r0[a]), 0.0, 1.0);
-    const double m_master = (1.0 - xi) * m.mass[a] + xi * m.mass[b];
+    const MasterMass mm = master_mass(m, i);
     // The physical penalty (mass scaling leaves the contact stiffness, and so e, as it was:
     // an unscaled penalty 1/3 softer moves e by 0.4 % at 0.1 m/s), capped where the node's mass
     // was scaled less than the step (away from the contact) so that it stays stable.
     // The cap allows the step floor's share (step_floor): the physical penalty of an unscaled
     // node at the longer step.
     const MassScaling& ms = m.scaling;
-    const double m_master_physical = (1.0 - xi) * ms.physical_mass[a] + xi * ms.physical_mass[b];
-    m.penalty[s] = std::min(penalty_stiffness(sc.penalty_scale, ms.physical_mass[i],
-                                              m_master_physical, ms.dt_critical_physical),
-                            penalty_stiffness(sc.penalty_scale, m.mass[i], m_master,
+    m.penalty[s] = std::min(penalty_stiffness(sc.penalty_scale, ms.physical_mass[i], mm.physical,
+                                              ms.dt_critical_physical),
+                            penalty_stiffness(sc.penalty_scale, m.mass[i], mm.scaled,
                                               m.dt_critical / ms.step_floor_scale));
   }
 }
@@ -335,13 +349,21 @@ Quad4Geometry initial_geometry(const ImpactModel& m, int e) {
   return quad4_geometry(xr, xz);
 }
 
+double contact_element_size(const ImpactModel& m) {
+  const std::vector<int>& surface = m.contact == ContactKind::kSegments ? m.masters : m.slaves;
+  const int a = surface[0];
+  const int b = surface[1];
+  return std::hypot(m.r0[b] - m.r0[a], m.z0[b] - m.z0[a]);
+}
+
 double physical_element_step(const ImpactModel& m, int e) {
   return m.body_of(e).stable_step_at_rest(characteristic_length(initial_geometry(m, e)));
 }
 
 ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
-  check_mesh(mesh);
   ImpactModel m;
+  m.contact = rigid_target(config) ? ContactKind::kRigidPlane : ContactKind::kSegments;
+  check_mesh(mesh, m.contact);
   m.n_nodes = mesh.num_nodes();
   m.n_elements = mesh.num_elements();
   m.sphere = body_params(config.sphere.material, config.solver);
@@ -387,9 +409,11 @@ ImpactState make_initial_state(const ImpactModel& m) {
   s.fr.assign(m.n_nodes, 0.0);
   s.fz.assign(m.n_nodes, 0.0);
   s.elements.resize(static_cast<std::size_t>(m.n_elements));
-  s.cursor.resize(m.slaves.size());
-  for (std::size_t k = 0; k < m.slaves.size(); ++k) {
-    s.cursor[k] = initial_segment(m.r0.data(), m.masters, m.r0[m.slaves[k]]);
+  s.cursor.assign(m.slaves.size(), 0);
+  if (m.contact == ContactKind::kSegments) {
+    for (std::size_t k = 0; k < m.slaves.size(); ++k) {
+      s.cursor[k] = initial_segment(m.r0.data(), m.masters, m.r0[m.slaves[k]]);
+    }
   }
   s.t = m.t_start;
   s.dt = m.dt_initial;

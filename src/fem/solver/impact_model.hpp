@@ -6,6 +6,7 @@
 /// from the config and the mesh; never changed by a step.
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "corlab/fem/config/impact_config.hpp"
@@ -59,6 +60,12 @@ struct MassScaling {
   double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
 };
 
+/// What the contact slaves (the sphere's surface) meet.
+enum class ContactKind : std::uint8_t {
+  kSegments,    ///< the substrate surface's master segments (node-to-segment penalty)
+  kRigidPlane,  ///< the rigid flat z = 0 (substrate.shape = rigid; no master nodes)
+};
+
 struct ImpactModel {
   int n_nodes = 0;
   int n_elements = 0;
@@ -74,21 +81,22 @@ struct ImpactModel {
   std::vector<double> is_sphere;       ///< 1 on sphere nodes, 0 on substrate nodes [-]
   std::vector<int> slaves;             ///< sphere surface nodes (contact slaves)
   std::vector<int> masters;            ///< substrate surface nodes, increasing r
-  std::vector<double> penalty;         ///< penalty stiffness of each slave [N/m]
-  double sphere_mass = 0.0;            ///< [kg]
-  double velocity = 0.0;               ///< impact speed v0 [m/s]
-  double energy_initial = 0.0;         ///< 1/2 m v0^2 [J]
-  double dt_critical = 0.0;            ///< smallest element stable step at the start [s]
-  double dt_initial = 0.0;             ///< safety_factor x dt_critical [s]
-  double safety_factor = 0.0;          ///< [-]
-  double t_start = 0.0;                ///< gap / v0: the gap is crossed in free flight [s]
-  double t_max = 0.0;                  ///< hard stop [s]
-  double t_wave = 0.0;                 ///< 4 R / c_d of the sphere [s]
-  double t_expected = 0.0;             ///< expected end, for the progress estimate [s]
-  double z_com_start = 0.0;            ///< sphere c.o.m. height at the start [m]
-  long long max_steps = 0;             ///< step budget (solver.max_steps)
-  SubcyclingLevels levels;             ///< all 0 unless solver.subcycling_levels > 0
-  MassScaling scaling;                 ///< factor 1 and no floor unless solver.mass_scaling_max > 1
+  ContactKind contact = ContactKind::kSegments;
+  std::vector<double> penalty;  ///< penalty stiffness of each slave [N/m]
+  double sphere_mass = 0.0;     ///< [kg]
+  double velocity = 0.0;        ///< impact speed v0 [m/s]
+  double energy_initial = 0.0;  ///< 1/2 m v0^2 [J]
+  double dt_critical = 0.0;     ///< smallest element stable step at the start [s]
+  double dt_initial = 0.0;      ///< safety_factor x dt_critical [s]
+  double safety_factor = 0.0;   ///< [-]
+  double t_start = 0.0;         ///< gap / v0: the gap is crossed in free flight [s]
+  double t_max = 0.0;           ///< hard stop [s]
+  double t_wave = 0.0;          ///< 4 R / c_d of the sphere [s]
+  double t_expected = 0.0;      ///< expected end, for the progress estimate [s]
+  double z_com_start = 0.0;     ///< sphere c.o.m. height at the start [m]
+  long long max_steps = 0;      ///< step budget (solver.max_steps)
+  SubcyclingLevels levels;      ///< all 0 unless solver.subcycling_levels > 0
+  MassScaling scaling;          ///< factor 1 and no floor unless solver.mass_scaling_max > 1
   SimdLevel simd = SimdLevel::kBaseline;  ///< the hot loops' instruction set (simd_level.hpp)
 
   /// The parameters of the body element e (sorted index) belongs to.
@@ -97,6 +105,10 @@ struct ImpactModel {
 
 /// Geometry of (sorted) element e at the start positions.
 Quad4Geometry initial_geometry(const ImpactModel& m, int e);
+
+/// Element size at the contact [m]: the first master segment's length (the first slave
+/// segment's for the rigid flat).
+double contact_element_size(const ImpactModel& m);
 
 /// Physical stable step [s] of (sorted) element e at the start positions and at rest, without
 /// mass scaling (the model's own step is elements.step_scale[e] times this).

@@ -18,18 +18,34 @@ bool apply_contact(const ImpactModel& m, ImpactState& s) {
   bool penetrating = false;
   double force = 0.0;
   double energy = 0.0;
+  // The rigid flat's reaction goes nowhere (it has no nodes).
+  double ignored_r = 0.0;
+  double ignored_z = 0.0;
   for (std::size_t k = 0; k < m.slaves.size(); ++k) {
     const int i = m.slaves[k];
-    const ContactCandidate c =
-        find_contact(s.r.data(), s.z.data(), m.masters, s.r[i], s.z[i], s.cursor[k]);
-    s.cursor[k] = c.segment;
-    if (!c.active) continue;
-    const int a = m.masters[c.segment];
-    const int b = m.masters[c.segment + 1];
-    energy += penalty_force(c.projection, m.penalty[k], s.fr[i], s.fz[i], s.fr[a], s.fz[a], s.fr[b],
-                            s.fz[b]);
-    force += -m.penalty[k] * c.projection.gap * c.projection.nz;
-    s.penetration_max = std::max(s.penetration_max, -c.projection.gap);
+    SegmentProjection p;
+    double* master_a[2] = {&ignored_r, &ignored_z};
+    double* master_b[2] = {&ignored_r, &ignored_z};
+    if (m.contact == ContactKind::kRigidPlane) {
+      p = project_on_rigid_flat(s.z[i]);
+      if (p.gap >= 0.0) continue;
+    } else {
+      const ContactCandidate c =
+          find_contact(s.r.data(), s.z.data(), m.masters, s.r[i], s.z[i], s.cursor[k]);
+      s.cursor[k] = c.segment;
+      if (!c.active) continue;
+      p = c.projection;
+      const int a = m.masters[c.segment];
+      const int b = m.masters[c.segment + 1];
+      master_a[0] = &s.fr[a];
+      master_a[1] = &s.fz[a];
+      master_b[0] = &s.fr[b];
+      master_b[1] = &s.fz[b];
+    }
+    energy += penalty_force(p, m.penalty[k], s.fr[i], s.fz[i], *master_a[0], *master_a[1],
+                            *master_b[0], *master_b[1]);
+    force += -m.penalty[k] * p.gap * p.nz;
+    s.penetration_max = std::max(s.penetration_max, -p.gap);
     penetrating = true;
   }
   s.energy.contact = energy;

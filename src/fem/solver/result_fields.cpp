@@ -79,17 +79,19 @@ FieldValue wall_time(const FieldInput& in) {
   return in.wall_s;
 }
 
-double e_star(const FieldInput& in) {
-  return effective_modulus(in.config->sphere.material, in.config->substrate.material);
-}
+double e_star(const FieldInput& in) { return contact_effective_modulus(*in.config); }
 
-FieldValue substrate_yield(const FieldInput& in) {
+// The substrate's yield stress [Pa]; NaN for an elastic substrate and for the rigid flat.
+double substrate_yield_stress(const FieldInput& in) {
+  if (rigid_target(*in.config)) return kNan;
   return in.config->substrate.material.yield_stress.value_or(kNan);
 }
 
+FieldValue substrate_yield(const FieldInput& in) { return substrate_yield_stress(in); }
+
 FieldValue k2_of(const FieldInput& in) {
-  const auto& sy = in.config->substrate.material.yield_stress;
-  return sy ? k2(*sy, e_star(in)) : kNan;
+  const double sy = substrate_yield_stress(in);
+  return std::isnan(sy) ? kNan : k2(sy, e_star(in));
 }
 
 FieldValue k1_of(const FieldInput& in) {

@@ -23,6 +23,7 @@ enum class KeyKind {
   yield_stress,  ///< a number, or `none` for a purely elastic body
   material,      ///< a database name and/or E=..,nu=..,rho=..[,sy=..][,H=..] (one of each)
   path,          ///< a file name
+  choice,        ///< one of a few names (substrate.shape: flat, rigid)
 };
 
 /// Allowed interval of a numeric key; `why` says where the limits come from (may be empty).

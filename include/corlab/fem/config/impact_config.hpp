@@ -7,7 +7,9 @@
 /// Text keys (TOML tables / `--set key=value`), all SI: the table in config_keys.hpp (key, unit,
 /// range, default, doc); `corlab simulate --help` prints it.
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,7 +29,17 @@ struct SphereConfig {
                     .source = "Ma et al. 2023, Table 1"};  ///< elastic unless yield_stress is set
 };
 
+/// What the sphere hits (docs/theory/solver.md, "Targets").
+enum class SubstrateShape : std::uint8_t {
+  kFlat,   ///< the elastic-plastic substrate block, fixed at its base (Ma et al. 2023)
+  kRigid,  ///< a rigid frictionless flat at z = 0: no substrate body
+};
+
+/// "flat" or "rigid".
+std::string_view to_string(SubstrateShape shape);
+
 struct SubstrateConfig {
+  SubstrateShape shape = SubstrateShape::kFlat;
   double radius = 70e-3;  ///< radial extent [m] (paper: L = 2R)
   double depth = 70e-3;   ///< depth [m]; the bottom face is fixed
   Material material{.name = "steel_ma2023",
@@ -102,6 +114,20 @@ struct ImpactConfig {
   SolverConfig solver;
   OutputConfig output;
 };
+
+/// Whether the sphere hits the rigid flat (no substrate body).
+inline bool rigid_target(const ImpactConfig& config) {
+  return config.substrate.shape == SubstrateShape::kRigid;
+}
+
+/// E* of the contact [Pa]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, the second term 0 for the
+/// rigid flat.
+double contact_effective_modulus(const ImpactConfig& config);
+
+/// The yield stress [Pa] that bounds the contact pressure in the a-priori estimates
+/// (contact_estimate.hpp): the substrate's for the flat, the sphere's for the rigid flat; empty
+/// if that body is elastic.
+std::optional<double> contact_yield_stress(const ImpactConfig& config);
 
 /// Throws InputError naming the first invalid field (e.g. "invalid impact.velocity = 0: ...").
 /// Checks each key's range (config_keys.hpp), then the limits that join keys (config_limits.hpp:

@@ -62,10 +62,21 @@ inline double penalty_force(const SegmentProjection& p,
 }
 
 /// Penalty stiffness at penalty_scale [-] of the stability limit of a two-mass spring:
-/// k = scale * m_eff (2 / dt)^2, m_eff = m_s m_m / (m_s + m_m) [kg], dt [s].
+/// k = scale * m_eff (2 / dt)^2, m_eff = m_s m_m / (m_s + m_m) [kg], dt [s]; a rigid master
+/// (master_mass infinite) gives m_eff = m_s.
 inline double penalty_stiffness(double scale, double slave_mass, double master_mass, double dt) {
-  const double m_eff = slave_mass * master_mass / (slave_mass + master_mass);
+  const double m_eff =
+      std::isinf(master_mass) ? slave_mass : slave_mass * master_mass / (slave_mass + master_mass);
   return scale * m_eff * 4.0 / (dt * dt);
+}
+
+/// Gap of a slave at height z [m] above the rigid flat z = 0 (outward normal +z), as a projection
+/// for penalty_force (no master nodes: the flat takes the reaction).
+inline SegmentProjection project_on_rigid_flat(double z) {
+  SegmentProjection p;
+  p.gap = z;
+  p.nz = 1.0;
+  return p;
 }
 
 }  // namespace corlab::fem

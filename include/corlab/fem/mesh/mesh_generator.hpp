@@ -31,6 +31,8 @@ struct MeshOptions {
   /// skin beyond the refined zone with 3:1 transitions (docs/theory/mesh.md, "3:1 transitions",
   /// "Skin transitions"): fewer elements where the zone's fine columns and rows would run on.
   bool transitions = true;
+  /// Generate the substrate body (false: the sphere alone, for the rigid flat).
+  bool substrate = true;
 };
 
 /// Throws InputError naming the first invalid field ("mesh.h_contact", ...).

@@ -63,6 +63,39 @@ TEST(ImpactConfig, ErrorsNameKeyValueAndConstraint) {
   EXPECT_EQ(mat.find('\n'), std::string::npos);
 }
 
+TEST(ImpactConfig, SubstrateShapeRigidIsTheFlatWithoutCompliance) {
+  ImpactConfig c;
+  EXPECT_EQ(c.substrate.shape, SubstrateShape::kFlat);
+  EXPECT_FALSE(rigid_target(c));
+  const double e_star_flat = contact_effective_modulus(c);
+  EXPECT_DOUBLE_EQ(e_star_flat, effective_modulus(c.sphere.material, c.substrate.material));
+  apply_setting(c, "substrate.shape", " rigid ");
+  EXPECT_TRUE(rigid_target(c));
+  EXPECT_EQ(to_string(c.substrate.shape), "rigid");
+  // 1/E* = (1 - nu^2)/E of the sphere alone: twice the steel-on-steel E*.
+  EXPECT_DOUBLE_EQ(contact_effective_modulus(c), 210e9 / (1.0 - 0.3 * 0.3));
+  EXPECT_DOUBLE_EQ(contact_effective_modulus(c), 2.0 * e_star_flat);
+  // The contact's yield stress is the sphere's (elastic here), no longer the substrate's.
+  EXPECT_FALSE(contact_yield_stress(c).has_value());
+  c.sphere.material.yield_stress = 800e6;
+  EXPECT_DOUBLE_EQ(*contact_yield_stress(c), 800e6);
+  // The substrate's keys are unused: a substrate too small for the contact is no error.
+  c.substrate.radius = 1e-6;
+  c.substrate.depth = 1e-6;
+  EXPECT_NO_THROW(validate(c));
+}
+
+TEST(ImpactConfig, SubstrateShapeErrors) {
+  ImpactConfig c;
+  EXPECT_EQ(input_error_message([&] { apply_setting(c, "substrate.shape", "round"); }),
+            "invalid substrate.shape = 'round': must be one of flat, rigid");
+  apply_setting(c, "substrate.shape", "rigid");
+  c.mesh.file = "anything.msh";
+  const std::string msg = input_error_message([&] { validate(c); });
+  EXPECT_NE(msg.find("substrate.shape"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("mesh.file"), std::string::npos) << msg;
+}
+
 TEST(ImpactConfig, LoadsToml) {
   const auto file = test::fresh_dir("config") / "impact.toml";
   test::spit(file,
