@@ -3,9 +3,11 @@ reproduce` end to end on a tiny spec (the CLI from CORLAB_BIN), including resumi
 import ast
 import csv
 import importlib
+import importlib.util
 import json
 import math
 import os
+import pathlib
 import re
 import subprocess
 
@@ -13,6 +15,12 @@ import corlab
 from corlab import report, report_dataset
 
 ES = 210e9 / (2 * (1 - 0.3 ** 2))
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+README = ROOT / "README.md"
+_SPEC = importlib.util.spec_from_file_location("readme_numbers",
+                                               ROOT / "scripts" / "readme_numbers.py")
+readme_numbers = importlib.util.module_from_spec(_SPEC)  # the README's numbers from a fit.json
+_SPEC.loader.exec_module(readme_numbers)
 
 
 def synthetic_results(path):
@@ -327,6 +335,10 @@ def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path, corlab_bin):
             c["velocity"])
     t2 = fit["fits"]["corlab2026_versus_eq19"]
     assert t2["cases"] == 6 and t2["corlab2026"]["n"] == t2["ma2023"]["n"] == 6
+    # the README's refit table against this (coarse) fit.json, where they can be compared: the
+    # paper's constants (the rest is checked against a paper run, README "What the reproduction
+    # finds"; python/tests/test_readme.py)
+    assert readme_numbers.check(fit, README.read_text()) == []
     assert (out / "report.html").exists()
     html_text = (out / "report.html").read_text()
     assert f"RMS relative error {100 * overall['rms_relative_error']:.2f} %" in html_text
