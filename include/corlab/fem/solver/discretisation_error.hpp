@@ -6,7 +6,7 @@
 /// systematically, as the GCI assumes, and its estimate includes the error of the graded far
 /// field (coarsening only the contact zone left that out: mesh.md, "Grading ratio outside the
 /// zone"). The companion adds 11-12 % to the run's time (4x fewer elements, 2x longer steps;
-/// the zone-only companion added 12-30 %; README, "What the reproduction finds").
+/// the zone-only companion added 12-30 %; docs/dev/performance.md).
 /// Two-grid Grid Convergence Index (Roache 1998, Verification and Validation in Computational
 /// Science and Engineering, ch. 5):
 ///   GCI = Fs |e_h - e_2h| / (2^p - 1),  Fs = 3 (two grids), p = 2 (formal order)  =>  |e_h -
