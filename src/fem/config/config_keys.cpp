@@ -39,14 +39,15 @@ constexpr KeyKind kKindOf[] = {KeyKind::number,       KeyKind::integer,     KeyK
                                KeyKind::path,         KeyKind::choice};
 
 // The names of a choice key's values (to_string of each), in order.
-constexpr std::array kShapes{SubstrateShape::kFlat, SubstrateShape::kRigid};
+constexpr std::array kShapes{SubstrateShape::kFlat, SubstrateShape::kRigid,
+                             SubstrateShape::kSphere};
 
 SubstrateShape parse_shape(std::string_view key, std::string_view text) {
   text = trim(text);
   for (const SubstrateShape s : kShapes) {
     if (to_string(s) == text) return s;
   }
-  throw_invalid(key, text, "one of flat, rigid");
+  throw_invalid(key, text, "one of flat, rigid, sphere");
 }
 
 struct KeyEntry {
@@ -213,11 +214,13 @@ std::vector<KeyEntry> build_table() {
   t.push_back(entry(
       "substrate.shape", "", std::nullopt,
       "what the sphere hits: flat (the elastic-plastic substrate below) | rigid (a rigid "
-      "frictionless flat; the substrate keys are then unused)",
+      "frictionless flat; the substrate keys are then unused) | sphere (a second sphere at rest, "
+      "radius substrate.radius, of substrate.material)",
       +[](ImpactConfig& c) { return &c.substrate.shape; }));
   t.push_back(entry(
       "substrate.radius", "[m]", closed(1e-6, 10.0),
-      "radial extent (also >= 2 predicted contact radii)",
+      "radial extent (also >= 2 predicted contact radii); for substrate.shape = sphere its "
+      "radius R2",
       +[](ImpactConfig& c) { return &c.substrate.radius; }));
   t.push_back(entry(
       "substrate.depth", "[m]", closed(1e-6, 10.0),

@@ -16,15 +16,6 @@ namespace corlab::fem {
 
 namespace {
 
-double uncapped_contact_radius(const ImpactConfig& c) {
-  double a = hertz_reference(c).contact_radius;
-  if (const std::optional<double> sy = contact_yield_stress(c)) {
-    a = std::max(a, plastic_contact_radius(c.sphere.radius, c.sphere.material.density,
-                                           c.impact.velocity, *sy));
-  }
-  return a;
-}
-
 void check_plastic_body(const Material& m, std::string_view body) {
   if (!m.yield_stress) return;
   const double sy = *m.yield_stress;

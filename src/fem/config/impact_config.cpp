@@ -50,7 +50,15 @@ std::string toml_value_text(const std::string& key, const toml::node& node) {
 }  // namespace
 
 std::string_view to_string(SubstrateShape shape) {
-  return shape == SubstrateShape::kRigid ? "rigid" : "flat";
+  switch (shape) {
+    case SubstrateShape::kRigid:
+      return "rigid";
+    case SubstrateShape::kSphere:
+      return "sphere";
+    case SubstrateShape::kFlat:
+      break;
+  }
+  return "flat";
 }
 
 double contact_effective_modulus(const ImpactConfig& config) {
@@ -60,8 +68,18 @@ double contact_effective_modulus(const ImpactConfig& config) {
 }
 
 std::optional<double> contact_yield_stress(const ImpactConfig& config) {
-  return rigid_target(config) ? config.sphere.material.yield_stress
-                              : config.substrate.material.yield_stress;
+  const std::optional<double>& first = config.sphere.material.yield_stress;
+  const std::optional<double>& second = config.substrate.material.yield_stress;
+  switch (config.substrate.shape) {
+    case SubstrateShape::kRigid:
+      return first;
+    case SubstrateShape::kSphere:
+      if (first && second) return std::min(*first, *second);
+      return first ? first : second;
+    case SubstrateShape::kFlat:
+      break;
+  }
+  return second;
 }
 
 void validate(const ImpactConfig& c) {

@@ -14,13 +14,48 @@
 #include "fem/mesh/substrate_layout.hpp"
 
 namespace corlab::fem {
+namespace {
+
+/// The second sphere (substrate.shape = sphere): the sphere generator's mesh of radius R2 with
+/// its lowest point at z = 0, mirrored about z = 0 so that its top point is at the origin, added
+/// as the target body. Its surface nodes from the top point outwards (r increasing up to the
+/// equator) are the contact's master surface.
+void add_target_sphere(const MeshOptions& o, Mesh& mesh) {
+  MeshOptions so = o;
+  so.sphere_radius = o.target_radius;
+  so.gap = 0.0;
+  Mesh s;
+  meshing::MeshBuilder builder(s);
+  meshing::generate_sphere(so, builder, s);
+  const int offset = mesh.num_nodes();
+  for (int n = 0; n < s.num_nodes(); ++n) {
+    mesh.r.push_back(s.r[static_cast<std::size_t>(n)]);
+    mesh.z.push_back(-s.z[static_cast<std::size_t>(n)]);
+    mesh.node_body.push_back(Body::kSubstrate);
+  }
+  for (const auto& q : s.quads) {
+    // Mirroring turns each quad clockwise: counter_clockwise puts it back.
+    mesh.quads.push_back(
+        counter_clockwise(mesh, {q[0] + offset, q[1] + offset, q[2] + offset, q[3] + offset}));
+    mesh.element_body.push_back(Body::kSubstrate);
+  }
+  for (const int n : s.sphere_surface_nodes) mesh.substrate_surface_nodes.push_back(n + offset);
+}
+
+}  // namespace
 
 void validate(const MeshOptions& o) {
   require_positive("mesh.sphere_radius", o.sphere_radius, "[m]");
   require_non_negative("mesh.gap", o.gap, "[m]");
-  if (o.substrate) {
+  const bool block = o.target == SubstrateShape::kFlat;
+  if (block) {
     require_positive("mesh.substrate_radius", o.substrate_radius, "[m]");
     require_positive("mesh.substrate_depth", o.substrate_depth, "[m]");
+  }
+  if (o.target == SubstrateShape::kSphere) {
+    require_positive("mesh.target_radius", o.target_radius, "[m]");
+    if (o.h_contact > 0.05 * o.target_radius)
+      throw_invalid("mesh.h_contact", o.h_contact, "<= R2 / 20 (too coarse for the second sphere)");
   }
   require_positive("mesh.h_contact", o.h_contact, "[m]");
   require_positive("mesh.zone_radius", o.zone_radius, "[m]");
@@ -32,8 +67,9 @@ void validate(const MeshOptions& o) {
     throw_invalid("mesh.h_contact", o.h_contact, "<= R / 20 (too coarse for the sphere)");
   const double max_elements_per_edge = 20000.0;
   if (o.sphere_radius / o.h_contact > max_elements_per_edge ||
-      (o.substrate && (o.substrate_radius / o.h_contact > max_elements_per_edge ||
-                       o.substrate_depth / o.h_contact > max_elements_per_edge)))
+      o.target_radius / o.h_contact > max_elements_per_edge ||
+      (block && (o.substrate_radius / o.h_contact > max_elements_per_edge ||
+                 o.substrate_depth / o.h_contact > max_elements_per_edge)))
     throw_invalid("mesh.h_contact", o.h_contact, "coarser (more than 20000 elements per edge)");
 }
 
@@ -52,7 +88,8 @@ MeshOptions mesh_options_for(const ImpactConfig& config) {
   o.growth = config.mesh.growth;
   o.h_max = std::max(config.mesh.h_max, o.h_contact);
   o.transitions = config.mesh.transitions != 0.0;
-  o.substrate = !rigid_target(config);
+  o.target = config.substrate.shape;
+  o.target_radius = config.substrate.radius;
   return o;
 }
 
@@ -61,7 +98,8 @@ Mesh generate_impact_mesh(const MeshOptions& options) {
   Mesh mesh;
   meshing::MeshBuilder builder(mesh);
   meshing::generate_sphere(options, builder, mesh);
-  if (options.substrate) meshing::generate_substrate(options, builder, mesh);
+  if (options.target == SubstrateShape::kFlat) meshing::generate_substrate(options, builder, mesh);
+  if (options.target == SubstrateShape::kSphere) add_target_sphere(options, mesh);
   for (int n = 0; n < mesh.num_nodes(); ++n)
     if (mesh.r[static_cast<std::size_t>(n)] == 0.0) mesh.axis_nodes.push_back(n);
   return mesh;

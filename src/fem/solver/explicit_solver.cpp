@@ -94,14 +94,20 @@ ImpactResult finish(const ImpactModel& m,
                     double z_axis_surface,
                     ImpactResult res) {
   const bool clean = status == RunStatus::kSeparated;
-  const double e0 = m.energy_initial;
+  const double e0 = m.energy_relative_initial;
   const double ke_final = clean ? rule.mean_sphere_kinetic_energy() : sphere_kinetic_energy(m, s);
   res.status = status;
   res.separated = clean;
-  res.e = clean ? s.sphere_velocity / m.velocity : kNaN;
+  res.e = clean ? solver::relative_velocity(s) / m.velocity : kNaN;
+  res.sphere_velocity_final = s.sphere_velocity;
+  res.target_velocity_final = s.target_velocity;
   res.e_energy = clean ? std::sqrt(std::max(ke_final, 0.0) / e0) : kNaN;
   res.t_contact = rule.contact_time();
-  res.crater_depth = m.contact == ContactKind::kSegments ? z_axis_surface - s.z[m.masters[0]] : 0.0;
+  // The target's surface on the axis sunk relative to the target's c.o.m. (a flat's is at rest).
+  res.crater_depth =
+      m.contact == ContactKind::kSegments
+          ? (z_axis_surface - s.z[m.masters[0]]) - (m.z_com_target_start - s.target_com_z)
+          : 0.0;
   res.plastic_strain_max = s.eps_p_max;
   res.energy_sphere_loss = e0 - ke_final;
   res.energy_dissipated_plastic = s.energy.plastic;
@@ -205,7 +211,8 @@ class TimeLoop {
       }
       rep_ = solver::compute_forces(m_, s_);
       if (auto end = step_failed()) return *end;
-      if (auto end = book_.stop(s_, ns.ke_sphere, dt_avg, s_.dt_prev, rep_.penetrating)) {
+      if (auto end = book_.stop(s_, solver::rebound_kinetic_energy(m_, s_, ns), dt_avg, s_.dt_prev,
+                                rep_.penetrating)) {
         return *end;
       }
       if (auto end = after_step()) return *end;
@@ -243,7 +250,7 @@ class TimeLoop {
     const bool penetrating = s_.cycle_penetrating;
     const double since = penetrating ? s_.t - s_.t_first_penetrating : cycle_dt;
     s_.cycle_penetrating = false;
-    return book_.stop(s_, ns.ke_sphere, cycle_dt, since, penetrating);
+    return book_.stop(s_, solver::rebound_kinetic_energy(m_, s_, ns), cycle_dt, since, penetrating);
   }
 
   /// An inverted element or a collapsed step after a force half.
@@ -308,7 +315,8 @@ ImpactResult run_impact(const ImpactConfig& config,
   const RunBookkeeping& book = loop.bookkeeping();
   res = finish(m, s, book.rule(), status, book.balance_max(), z_axis_surface, std::move(res));
   if (res.status != RunStatus::kSeparated && res.status_detail.empty()) {
-    res.status_detail = status_detail(res.status, m, s, loop.last_forces(), s.sphere_velocity);
+    res.status_detail =
+        status_detail(res.status, m, s, loop.last_forces(), solver::relative_velocity(s));
   }
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   res.element_steps_per_s = static_cast<double>(s.element_updates) / res.wall_s;

@@ -24,7 +24,9 @@ const std::array kColumns{
     CORLAB_HISTORY_COLUMN(contact_force, "N", "force of the substrate on the sphere"),
     CORLAB_HISTORY_COLUMN(indentation, "m", "sphere c.o.m. displacement since contact"),
     CORLAB_HISTORY_COLUMN(
-        sphere_velocity, "m/s", "sphere c.o.m. velocity, + towards the substrate"),
+        sphere_velocity,
+        "m/s",
+        "sphere c.o.m. velocity relative to the target's (a flat: the ground), + towards it"),
     CORLAB_HISTORY_COLUMN(kinetic_energy, "J", "kinetic energy of both bodies"),
     CORLAB_HISTORY_COLUMN(strain_energy, "J", "recoverable elastic strain energy"),
     CORLAB_HISTORY_COLUMN(plastic_dissipation, "J", "plastic work"),

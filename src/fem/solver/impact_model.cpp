@@ -320,6 +320,22 @@ void set_penalties(const SolverConfig& sc, ImpactModel& m) {
   }
 }
 
+/// A free second sphere: its mass and c.o.m. height, the relative motion's initial energy
+/// 1/2 m* v0^2, and the separation window long enough for its waves too.
+void set_free_target(const ImpactConfig& config, ImpactModel& m) {
+  double mass = 0.0;
+  double mz = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i) {
+    mass += m.mass[i] * (1.0 - m.is_sphere[i]);
+    mz += m.mass[i] * m.z0[i] * (1.0 - m.is_sphere[i]);
+  }
+  m.target_mass = mass;
+  m.z_com_target_start = mz / mass;
+  const double reduced = m.sphere_mass * mass / (m.sphere_mass + mass);
+  m.energy_relative_initial = 0.5 * reduced * m.velocity * m.velocity;
+  m.t_wave = std::max(m.t_wave, kWaveTransits * config.substrate.radius / m.substrate.wave_speed);
+}
+
 void set_time_scales(const ImpactConfig& config, ImpactModel& m) {
   const SolverConfig& sc = config.solver;
   m.velocity = config.impact.velocity;
@@ -331,9 +347,11 @@ void set_time_scales(const ImpactConfig& config, ImpactModel& m) {
   m.t_wave = kWaveTransits * config.sphere.radius / m.sphere.wave_speed;
   m.t_expected = m.t_start + kExpectedDurationInContactTimes * t_hertz + m.t_wave;
   m.energy_initial = 0.5 * m.sphere_mass * m.velocity * m.velocity;
+  m.energy_relative_initial = m.energy_initial;
   double mz = 0.0;
   for (int i = 0; i < m.n_nodes; ++i) mz += m.mass[i] * m.z0[i] * m.is_sphere[i];
   m.z_com_start = mz / m.sphere_mass;
+  if (m.free_target) set_free_target(config, m);
   m.max_steps = sc.max_steps;
 }
 
@@ -363,6 +381,7 @@ double physical_element_step(const ImpactModel& m, int e) {
 ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
   ImpactModel m;
   m.contact = rigid_target(config) ? ContactKind::kRigidPlane : ContactKind::kSegments;
+  m.free_target = sphere_target(config);
   check_mesh(mesh, m.contact);
   m.n_nodes = mesh.num_nodes();
   m.n_elements = mesh.num_elements();
@@ -418,6 +437,7 @@ ImpactState make_initial_state(const ImpactModel& m) {
   s.t = m.t_start;
   s.dt = m.dt_initial;
   s.sphere_velocity = -m.velocity;
+  s.target_com_z = m.z_com_target_start;
   if (m.levels.max_level > 0) init_subcycling(m, s);
   return s;
 }

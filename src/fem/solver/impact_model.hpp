@@ -84,6 +84,15 @@ struct ImpactModel {
   ContactKind contact = ContactKind::kSegments;
   std::vector<double> penalty;  ///< penalty stiffness of each slave [N/m]
   double sphere_mass = 0.0;     ///< [kg]
+  /// The target is a free second sphere (substrate.shape = sphere): its c.o.m. motion enters the
+  /// relative velocity, the indentation and the rebound energy. Else the target (the fixed flat,
+  /// the rigid flat) is the ground, at rest.
+  bool free_target = false;
+  double target_mass = 0.0;         ///< the free target's mass [kg] (else 0)
+  double z_com_target_start = 0.0;  ///< its c.o.m. height at the start [m] (else 0)
+  /// Kinetic energy of the relative motion at the start [J]: energy_initial on a flat, 1/2 m* v0^2
+  /// on a free sphere (the rest is the pair's c.o.m. motion, which the impact cannot change).
+  double energy_relative_initial = 0.0;
   double velocity = 0.0;        ///< impact speed v0 [m/s]
   double energy_initial = 0.0;  ///< 1/2 m v0^2 [J]
   double dt_critical = 0.0;     ///< smallest element stable step at the start [s]

@@ -57,6 +57,8 @@ struct ImpactState {
   double penetration_max = 0.0;   ///< deepest slave penetration [m]
   double sphere_velocity = 0.0;   ///< sphere c.o.m. velocity at the last half step, + up [m/s]
   double sphere_com_z = 0.0;      ///< sphere c.o.m. height at the newest positions [m]
+  double target_velocity = 0.0;   ///< a free target's c.o.m. velocity, + up [m/s] (else 0)
+  double target_com_z = 0.0;      ///< a free target's c.o.m. height [m] (else 0)
   long long element_updates = 0;  ///< element updates done (with subcycling < elements x steps)
   // Subcycling only (model.levels.max_level > 0; docs/theory/solver.md section 11): fr/fz then
   // hold the 2^L-weighted forces of the elements due at each node's next update.
@@ -66,6 +68,17 @@ struct ImpactState {
   double t_first_penetrating = 0.0;  ///< start of the cycle's first step in contact [s]
   TransitLedger transit;             ///< energy in transit between levels
 };
+
+/// The sphere's velocity relative to the target, + up (apart) [m/s]: the sphere's own on a flat.
+inline double relative_velocity(const ImpactState& s) {
+  return s.sphere_velocity - s.target_velocity;
+}
+
+/// The approach since the start [m]: the sphere's c.o.m. displacement towards the target less the
+/// target's (a free sphere's) displacement away from the sphere.
+inline double indentation(const ImpactModel& m, const ImpactState& s) {
+  return (m.z_com_start - s.sphere_com_z) - (m.z_com_target_start - s.target_com_z);
+}
 
 /// The state at the start: sphere touching, moving down at v0; everything else at rest.
 ImpactState make_initial_state(const ImpactModel& model);

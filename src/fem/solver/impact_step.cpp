@@ -109,6 +109,32 @@ ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
   return sums;
 }
 
+/// The sphere's c.o.m. velocity and height from the nodal update's sums.
+void set_sphere_motion(const ImpactModel& m, const NodeSums& ns, ImpactState& s) {
+  s.sphere_velocity = ns.p_sphere / m.sphere_mass;
+  s.sphere_com_z = ns.mz_sphere / m.sphere_mass;
+}
+
+/// A free target's z-momentum [kg m/s] and first moment sum m z [kg m] at the state's present
+/// velocities and positions: a pass over its nodes, only when the target is a free sphere (the
+/// flat's runs keep the nodal update as it was).
+double target_momentum(const ImpactModel& m, const ImpactState& s) {
+  double p = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i) p += m.mass[i] * s.vz[i] * (1.0 - m.is_sphere[i]);
+  return p;
+}
+
+double target_first_moment(const ImpactModel& m, const ImpactState& s) {
+  double mz = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i) mz += m.mass[i] * s.z[i] * (1.0 - m.is_sphere[i]);
+  return mz;
+}
+
+void set_target_motion(const ImpactModel& m, ImpactState& s) {
+  s.target_velocity = target_momentum(m, s) / m.target_mass;
+  s.target_com_z = target_first_moment(m, s) / m.target_mass;
+}
+
 /// Time advanced by the step just taken.
 void advance_time(ImpactState& s) {
   s.t += s.dt;
@@ -124,8 +150,14 @@ NodalArrays nodal_arrays(const ImpactModel& m, ImpactState& s) {
                      m.free_r.data(), m.free_z.data(), m.is_sphere.data()};
 }
 
+double rebound_kinetic_energy(const ImpactModel& m, const ImpactState& s, const NodeSums& ns) {
+  if (!m.free_target) return ns.ke_sphere;
+  const double p = ns.p_sphere + s.target_velocity * m.target_mass;
+  return ns.ke - 0.5 * p * p / (m.sphere_mass + m.target_mass);
+}
+
 void sample_hysteresis(const ImpactModel& m, ImpactState& s) {
-  s.hysteresis.sample(s.force, m.z_com_start - s.sphere_com_z);
+  s.hysteresis.sample(s.force, indentation(m, s));
 }
 
 int sync_level(long long step, int max_level) {
@@ -141,14 +173,17 @@ NodeSums move_nodes_subcycled(const ImpactModel& m, ImpactState& s) {
   for (int k = 0; k <= lv.max_level; ++k) step[k] = std::ldexp(s.dt, k);
   const SubcycledNodes a{nodal_arrays(m, s), lv.node_order.data(), lv.node_end[l],
                          step.data(),        lv.node_scale.data(), 0.5 * (s.dt_prev + s.dt)};
+  // A free target's c.o.m. at t^k, before the drift (as the sphere's sum: move_nodes_subcycled).
+  if (m.free_target && l == lv.max_level)
+    s.target_com_z = target_first_moment(m, s) / m.target_mass;
   // Most nodes due (fast runs, major-cycle boundaries): one contiguous pass over all.
   const NodeSums ns = 2 * lv.node_end[l] >= m.n_nodes ? node_update_due(m.simd, a, m.n_nodes, l)
                                                       : node_update_subcycled(m.simd, a);
   // The kick just given opens the windows of the levels below l.
   for (int k = 0; k < l; ++k) s.transit.open_windows(lv, k, s.vr.data(), s.vz.data());
   if (l == lv.max_level) {
-    s.sphere_velocity = ns.p_sphere / m.sphere_mass;
-    s.sphere_com_z = ns.mz_sphere / m.sphere_mass;
+    set_sphere_motion(m, ns, s);
+    if (m.free_target) s.target_velocity = target_momentum(m, s) / m.target_mass;
     sample_hysteresis(m, s);
   }
   return ns;
@@ -174,8 +209,8 @@ ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
 NodeSums move_nodes(const ImpactModel& m, ImpactState& s) {
   const double dt_avg = 0.5 * (s.dt_prev + s.dt);
   const NodeSums ns = node_update(m.simd, nodal_arrays(m, s), m.n_nodes, s.dt, dt_avg);
-  s.sphere_velocity = ns.p_sphere / m.sphere_mass;
-  s.sphere_com_z = ns.mz_sphere / m.sphere_mass;
+  set_sphere_motion(m, ns, s);
+  if (m.free_target) set_target_motion(m, s);
   return ns;
 }
 

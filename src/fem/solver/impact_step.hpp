@@ -20,6 +20,13 @@ struct ForceReport {
 /// The nodal arrays of the state and the model (element_loop.hpp).
 NodalArrays nodal_arrays(const ImpactModel& model, ImpactState& state);
 
+/// Kinetic energy of the rebound [J] for the stop rule's window average, from the nodal update's
+/// sums: the sphere's (on a flat), or both spheres' less their common c.o.m. motion's (free
+/// target) (elastic waves included, as e_energy has always counted them).
+double rebound_kinetic_energy(const ImpactModel& model,
+                              const ImpactState& state,
+                              const NodeSums& sums);
+
 /// One sample of the force-indentation loop: the contact force now and the sphere's indentation
 /// at its newest c.o.m. height. The plain step samples after each force half, the subcycled one
 /// at each major-cycle boundary.

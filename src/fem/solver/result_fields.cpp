@@ -117,7 +117,8 @@ const std::array kFields{
     CORLAB_RESULT_MEMBER(crater_depth, "m", "residual surface depth on the axis", kBoth),
     CORLAB_RESULT_MEMBER(plastic_strain_max, "-", "largest plastic strain", kBoth),
     CORLAB_RESULT_MEMBER(energy_initial, "J", "sphere kinetic energy at impact", kBoth),
-    CORLAB_RESULT_MEMBER(energy_sphere_loss, "J", "initial - rebound KE", kBoth),
+    CORLAB_RESULT_MEMBER(
+        energy_sphere_loss, "J", "initial - rebound KE (of the relative motion)", kBoth),
     CORLAB_RESULT_MEMBER(energy_dissipated_plastic, "J", "plastic work", kBoth),
     CORLAB_RESULT_MEMBER(energy_hourglass, "J", "hourglass energy at the end", kBoth),
     CORLAB_RESULT_MEMBER(energy_viscous, "J", "bulk-viscosity dissipation", kSummary),
@@ -131,6 +132,12 @@ const std::array kFields{
     CORLAB_RESULT_MEMBER(
         element_updates, "-", "element updates done (subcycling: < elements x steps)", kSummary),
     CORLAB_RESULT_MEMBER(h_contact, "m", "element size at the contact", kSummary),
+    CORLAB_RESULT_MEMBER(
+        sphere_velocity_final, "m/s", "sphere c.o.m. velocity at the end, + up", kSummary),
+    CORLAB_RESULT_MEMBER(target_velocity_final,
+                         "m/s",
+                         "target c.o.m. velocity at the end, + up (a flat: 0)",
+                         kSummary),
     CORLAB_RESULT_MEMBER(time_step, "s", "initial stable time step", kSummary),
     CORLAB_RESULT_MEMBER(end_time, "s", "simulated time at the end", kSummary),
     ResultField{"wall_s", "s", "wall-clock time of the run", FieldKind::real, &wall_time, kBoth,

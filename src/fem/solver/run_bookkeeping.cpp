@@ -20,8 +20,8 @@ RunBookkeeping::RunBookkeeping(const ImpactModel& model,
 
 std::optional<RunStatus> RunBookkeeping::sample(const ImpactState& s, double kinetic, bool row) {
   // The sphere's velocity at the sampled time: the mean of the half steps around it.
-  const double v_mean = 0.5 * (s.sphere_velocity + v_com_prev_);
-  v_com_prev_ = s.sphere_velocity;
+  const double v_mean = 0.5 * (relative_velocity(s) + v_com_prev_);
+  v_com_prev_ = relative_velocity(s);
   const EnergySums& w = s.energy;
   const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact;
   const double balance = (total - m_.energy_initial) / m_.energy_initial;
@@ -49,10 +49,10 @@ std::optional<RunStatus> RunBookkeeping::sample(const ImpactState& s, double kin
 std::optional<RunStatus> RunBookkeeping::stop(
     const ImpactState& s, double ke_sphere, double window, double since, bool penetrating) {
   rule_.accumulate(ke_sphere, window);
-  const auto decision = rule_.update(s.t, since, penetrating, s.sphere_velocity);
+  const auto decision = rule_.update(s.t, since, penetrating, relative_velocity(s));
   if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;
   if (decision == SeparationRule::Decision::kNoRebound) return RunStatus::kNotSeparated;
-  if (stop_at_max_compression_ && rule_.touched() && s.sphere_velocity >= 0.0) {
+  if (stop_at_max_compression_ && rule_.touched() && relative_velocity(s) >= 0.0) {
     return RunStatus::kMaxCompression;
   }
   return std::nullopt;

@@ -26,9 +26,10 @@ class RunBookkeeping {
   /// row when `row`. kNonFinite when the balance is not finite.
   std::optional<RunStatus> sample(const ImpactState& state, double kinetic, bool row);
 
-  /// The stop rule at the end of a window of `window` [s] over which the sphere's kinetic energy
-  /// was `ke_sphere` [J]; `penetrating`: a slave was in contact in it, for the last `since` [s].
-  /// kSeparated, kNotSeparated or kMaxCompression when the run ends.
+  /// The stop rule on the relative velocity at the end of a window of `window` [s] over which the
+  /// rebound kinetic energy (rebound_kinetic_energy) was `ke_sphere` [J]; `penetrating`: a slave
+  /// was in contact in it, for the last `since` [s]. kSeparated, kNotSeparated or
+  /// kMaxCompression when the run ends.
   std::optional<RunStatus> stop(
       const ImpactState& state, double ke_sphere, double window, double since, bool penetrating);
 
@@ -41,7 +42,7 @@ class RunBookkeeping {
   bool stop_at_max_compression_;
   ImpactHistory& history_;
   SeparationRule rule_;
-  double v_com_prev_;  ///< sphere c.o.m. velocity at the last sample [m/s]
+  double v_com_prev_;  ///< relative velocity at the last sample [m/s]
   double balance_max_ = 0.0;
 };
 

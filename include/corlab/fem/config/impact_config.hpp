@@ -29,18 +29,19 @@ struct SphereConfig {
                     .source = "Ma et al. 2023, Table 1"};  ///< elastic unless yield_stress is set
 };
 
-/// What the sphere hits (docs/theory/solver.md, "Targets").
+/// What the sphere hits (docs/theory/solver.md, section 7).
 enum class SubstrateShape : std::uint8_t {
-  kFlat,   ///< the elastic-plastic substrate block, fixed at its base (Ma et al. 2023)
-  kRigid,  ///< a rigid frictionless flat at z = 0: no substrate body
+  kFlat,    ///< the elastic-plastic substrate block, fixed at its base (Ma et al. 2023)
+  kRigid,   ///< a rigid frictionless flat at z = 0: no substrate body
+  kSphere,  ///< a second sphere of radius substrate.radius, free and at rest (head-on impact)
 };
 
-/// "flat" or "rigid".
+/// "flat", "rigid" or "sphere".
 std::string_view to_string(SubstrateShape shape);
 
 struct SubstrateConfig {
   SubstrateShape shape = SubstrateShape::kFlat;
-  double radius = 70e-3;  ///< radial extent [m] (paper: L = 2R)
+  double radius = 70e-3;  ///< radial extent [m] (paper: L = 2R); the radius R2 of a sphere
   double depth = 70e-3;   ///< depth [m]; the bottom face is fixed
   Material material{.name = "steel_ma2023",
                     .youngs_modulus = 210e9,
@@ -120,13 +121,18 @@ inline bool rigid_target(const ImpactConfig& config) {
   return config.substrate.shape == SubstrateShape::kRigid;
 }
 
+/// Whether the sphere hits a second, free sphere.
+inline bool sphere_target(const ImpactConfig& config) {
+  return config.substrate.shape == SubstrateShape::kSphere;
+}
+
 /// E* of the contact [Pa]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, the second term 0 for the
 /// rigid flat.
 double contact_effective_modulus(const ImpactConfig& config);
 
 /// The yield stress [Pa] that bounds the contact pressure in the a-priori estimates
-/// (contact_estimate.hpp): the substrate's for the flat, the sphere's for the rigid flat; empty
-/// if that body is elastic.
+/// (contact_estimate.hpp): the substrate's for the flat, the sphere's for the rigid flat, the
+/// smaller of the two spheres'; empty if no such body yields.
 std::optional<double> contact_yield_stress(const ImpactConfig& config);
 
 /// Throws InputError naming the first invalid field (e.g. "invalid impact.velocity = 0: ...").

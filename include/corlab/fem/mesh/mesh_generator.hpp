@@ -31,8 +31,10 @@ struct MeshOptions {
   /// skin beyond the refined zone with 3:1 transitions (docs/theory/mesh.md, "3:1 transitions",
   /// "Skin transitions"): fewer elements where the zone's fine columns and rows would run on.
   bool transitions = true;
-  /// Generate the substrate body (false: the sphere alone, for the rigid flat).
-  bool substrate = true;
+  /// What the sphere hits: the substrate block (flat), nothing (rigid: the sphere alone), or a
+  /// second sphere of radius target_radius whose top point is at the origin (sphere).
+  SubstrateShape target = SubstrateShape::kFlat;
+  double target_radius = 35e-3;  ///< R2 [m] (target sphere only)
 };
 
 /// Throws InputError naming the first invalid field ("mesh.h_contact", ...).
@@ -44,7 +46,8 @@ void validate(const MeshOptions& options);
 /// (contact_estimate.hpp).
 MeshOptions mesh_options_for(const ImpactConfig& config);
 
-/// Generates both bodies (sphere elements first, then substrate elements).
+/// Generates both bodies (sphere elements first, then the target's: the substrate block or the
+/// second sphere, mirrored about z = 0; none for the rigid flat).
 Mesh generate_impact_mesh(const MeshOptions& options);
 
 /// The mesh of a configuration: read_gmsh(config.mesh.file) when a file is given (the geometry

@@ -18,7 +18,7 @@ struct HistoryColumns {
   T time;             ///< t [s], 0 = release at the gap
   T contact_force;    ///< F, force of the substrate on the sphere [N]
   T indentation;      ///< delta = sphere c.o.m. displacement - gap [m]
-  T sphere_velocity;  ///< sphere c.o.m. velocity, + towards substrate [m/s]
+  T sphere_velocity;  ///< sphere c.o.m. velocity relative to the target, + towards it [m/s]
   /// [J] both bodies (product form; with subcycling less the energy in transit between levels,
   /// so that the energy columns add up to the initial energy)
   T kinetic_energy;
@@ -54,7 +54,13 @@ struct ImpactResult {
   double crater_depth = 0.0;        ///< residual depth of the substrate surface on the axis [m]
   double plastic_strain_max = 0.0;  ///< largest equivalent plastic strain left [-]
   double energy_initial = 0.0;      ///< sphere kinetic energy at impact [J]
-  double energy_sphere_loss = 0.0;  ///< initial - sphere kinetic energy after rebound [J]
+  /// c.o.m. velocities at the end, + up (the sphere's rebound direction) [m/s]: the sphere's, and
+  /// the target's (0 for a flat: it is the ground); m1 v1 + m2 v2 = m1 v0 down on a free sphere.
+  double sphere_velocity_final = 0.0;
+  double target_velocity_final = 0.0;
+  /// Kinetic energy of the relative motion lost [J]: on a flat, initial - the sphere's after the
+  /// rebound; on a free sphere, 1/2 m* v0^2 - both spheres' less their c.o.m. motion's.
+  double energy_sphere_loss = 0.0;
   double energy_dissipated_plastic = 0.0;  ///< [J]
   double energy_hourglass = 0.0;           ///< at the end [J]
   double energy_viscous = 0.0;             ///< [J]

@@ -88,7 +88,7 @@ TEST(ImpactConfig, SubstrateShapeRigidIsTheFlatWithoutCompliance) {
 TEST(ImpactConfig, SubstrateShapeErrors) {
   ImpactConfig c;
   EXPECT_EQ(input_error_message([&] { apply_setting(c, "substrate.shape", "round"); }),
-            "invalid substrate.shape = 'round': must be one of flat, rigid");
+            "invalid substrate.shape = 'round': must be one of flat, rigid, sphere");
   apply_setting(c, "substrate.shape", "rigid");
   c.mesh.file = "anything.msh";
   const std::string msg = input_error_message([&] { validate(c); });
