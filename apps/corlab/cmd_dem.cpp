@@ -7,6 +7,7 @@
 #include <fstream>
 #include <memory>
 #include <numeric>
+#include <vector>
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
@@ -82,7 +83,18 @@ int run_dem(const DemArgs& args) {
   spec.v_max = args.v_max;
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
-  const auto pairs = dem::calibrate_pairs(spec);
+  std::vector<dem::PairCalibration> pairs;
+  try {
+    pairs = dem::calibrate_pairs(spec);
+  } catch (const InputError& err) {
+    // The README's own example stopped here: an elastic particle pair has no plastic e(v).
+    if (err.field() != "material pair" || spec.wall_only || !spec.wall) throw;
+    throw InputError(err.field(), err.value(),
+                     err.constraint() +
+                         " (an elastic pair has none: --wall-only calibrates only "
+                         "the particle-wall pairs)",
+                     true);
+  }
   const std::filesystem::path dir(args.out);
   std::filesystem::create_directories(dir);
   write_file(dir / "lammps.in", dem::write_lammps(spec, pairs));
@@ -95,7 +107,7 @@ int run_dem(const DemArgs& args) {
         p.type_j == 0 ? fmt::format("{}-wall", p.type_i) : fmt::format("{}-{}", p.type_i, p.type_j);
     if (spec.restitution) {
       fmt::print(
-          "{:<8} e = {:.4f}: chi = {:.6f}, tsuji alpha = {:.6f}, LAMMPS tsuji input {:.6f}\n", name,
+          "{:<8} e = {:.6g}: chi = {:.6f}, tsuji alpha = {:.6f}, LAMMPS tsuji input {:.6f}\n", name,
           *spec.restitution, p.chi, p.tsuji_alpha, p.lammps_tsuji_input);
     } else {
       fmt::print(

@@ -42,6 +42,10 @@ void print_coefficient(const study::Coefficient& c) {
 }
 
 void print_goodness(const char* what, const study::GoodnessOfFit& g) {
+  if (!std::isfinite(g.r_squared)) {
+    fmt::print("{:<34} not fitted (too few cases)\n", what);
+    return;
+  }
   fmt::print("{:<34} R^2 = {:.5f}  max rel. error = {:.2f} %  RMS rel. error = {:.2f} %\n", what,
              g.r_squared, 100 * g.max_relative_error, 100 * g.rms_relative_error);
 }
@@ -101,6 +105,7 @@ int fit_form(const FitArgs& args, const study::ResultsTable& table) {
   const auto by_where = table.size() - excluded.size() - static_cast<std::size_t>(fit.observations);
   if (args.json) {
     nlohmann::json out = study::to_json(fit);
+    out.erase("left_out");  // row numbers of the usable subset: "excluded" names them by case
     out["rows"] = table.size();
     out["excluded"] = study::to_json(excluded);
     out["excluded_by_where"] = by_where;

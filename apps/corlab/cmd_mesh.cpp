@@ -92,7 +92,7 @@ const CommandRegistration kRegistration{Command{
     "mesh", "Generate the impact mesh of a case, write DIR/mesh.vtu and print its quality",
     [](CLI::App& sub) -> std::function<int()> {
       auto args = std::make_shared<MeshArgs>();
-      sub.add_option("--config", args->config, "case file (TOML)")->check(CLI::ExistingFile);
+      sub.add_option("--config", args->config, "case file (TOML; a pipe such as <(...) too)");
       sub.add_option("--set", args->settings, "key=value over the case (repeatable)");
       sub.add_option("--out", args->out, "output directory")->required();
       return [args] { return run_mesh(*args); };

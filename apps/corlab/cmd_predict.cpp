@@ -37,6 +37,10 @@ struct PredictOptions {
   double radius = 1.0;
 };
 
+/// Most velocities one `predict` evaluates: a million points, each model's e and k1 held in
+/// memory and written as they are computed (the JSON one model at a time).
+constexpr std::size_t kMaxPoints = 1'000'000;
+
 constexpr const char* kRangeSyntax =
     "V or START:STOP:N with 0 < START <= STOP and an integer N >= 1 [m/s]";
 
@@ -61,8 +65,13 @@ std::vector<double> parse_velocities(const std::string& text, const std::string&
   const double stop = parse_double(parts[1]).value_or(kNaN);
   const double count = parse_double(parts[2]).value_or(kNaN);
   if (!(std::isfinite(start) && std::isfinite(stop)) || !(start > 0.0) || !(stop >= start) ||
-      !(count >= 1.0) || count != std::floor(count) || count > 1e8) {
+      !(count >= 1.0) || count != std::floor(count)) {
     throw_invalid("velocity", text, kRangeSyntax);
+  }
+  if (count > static_cast<double>(kMaxPoints)) {
+    throw_invalid(
+        "velocity", text,
+        fmt::format("at most {} points (the cap of `predict`; split the range)", kMaxPoints));
   }
   const auto n = static_cast<std::size_t>(count);
   std::vector<double> v(n);
@@ -72,6 +81,27 @@ std::vector<double> parse_velocities(const std::string& text, const std::string&
   }
   if (n > 1) v.back() = stop;
   return v;
+}
+
+// k1 = E*/(rho v^2) overflows for a tiny v (1e-300 m/s wrote k1 = inf): refused with the bound.
+void require_finite_k1(double v, double e_star, double density) {
+  if (std::isfinite(k1(e_star, density, v))) return;
+  const double v_min = std::sqrt(e_star / density / std::numeric_limits<double>::max());
+  throw_invalid("velocity", v,
+                fmt::format("large enough for a finite k1 = E*/(rho v^2): >= {:.3g} [m/s] for "
+                            "this pair",
+                            v_min * (1 + 1e-12)));
+}
+
+// `text` with `indent` after each line break (a nested JSON value in a dump(2) document).
+std::string indented(const std::string& text, std::string_view indent) {
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  for (const char c : text) {
+    out += c;
+    if (c == '\n') out += indent;
+  }
+  return out;
 }
 
 // One stderr warning per model asked outside its validity (validity.hpp).
@@ -112,29 +142,38 @@ int run_predict(const PredictOptions& o) {
   }
   const double e_star = effective_modulus(sphere, substrate);
   const double sy = *substrate.yield_stress;
+  require_finite_k1(velocities.front(), e_star, sphere.density);  // k1 falls with v
   warn_outside_validity(models, velocities, sphere, substrate);
   std::vector<double> e(velocities.size());
   if (o.format == "json") {
-    nlohmann::json out;
-    out["sphere"] = o.sphere;
-    out["substrate"] = o.substrate;
-    out["effective_modulus"] = e_star;
-    out["k2"] = k2(sy, e_star);
-    out["models"] = nlohmann::json::array();
-    for (const auto& m : models) {
+    // The document of out.dump(2), written one model at a time (a million points of every model
+    // in one tree took gigabytes).
+    nlohmann::json head;
+    head["sphere"] = o.sphere;
+    head["substrate"] = o.substrate;
+    head["effective_modulus"] = e_star;
+    head["k2"] = k2(sy, e_star);
+    fmt::print("{{\n  \"effective_modulus\": {},\n  \"k2\": {},\n  \"models\": [",
+               head["effective_modulus"].dump(), head["k2"].dump());
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      const auto& m = models[i];
       m.cor(velocities, e);
-      nlohmann::json k1s = nlohmann::json::array();
-      for (double v : velocities) k1s.push_back(k1(e_star, sphere.density, v));
-      out["models"].push_back({{"model", m.info().name},
-                               {"status", restitution::to_string(m.info().status)},
-                               {"status_note", m.info().status_note},
-                               {"clamped", m.clamped()},
-                               {"v_y", m.yield_velocity()},
-                               {"velocity", velocities},
-                               {"k1", k1s},
-                               {"e", e}});
+      std::vector<double> k1s(velocities.size());
+      for (std::size_t j = 0; j < velocities.size(); ++j) {
+        k1s[j] = k1(e_star, sphere.density, velocities[j]);
+      }
+      const nlohmann::json model{{"model", m.info().name},
+                                 {"status", restitution::to_string(m.info().status)},
+                                 {"status_note", m.info().status_note},
+                                 {"clamped", m.clamped()},
+                                 {"v_y", m.yield_velocity()},
+                                 {"velocity", velocities},
+                                 {"k1", k1s},
+                                 {"e", e}};
+      fmt::print("{}\n    {}", i == 0 ? "" : ",", indented(model.dump(2), "    "));
     }
-    fmt::print("{}\n", out.dump(2));
+    fmt::print("{}],\n  \"sphere\": {},\n  \"substrate\": {}\n}}\n", models.empty() ? "" : "\n  ",
+               head["sphere"].dump(), head["substrate"].dump());
     return 0;
   }
   fmt::print("model,velocity,e,k1,k2,v_y,status\n");

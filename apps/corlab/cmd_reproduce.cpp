@@ -83,7 +83,9 @@ fs::path python_package_dir() {
   return exe.parent_path().parent_path() / "python";
 }
 
-int make_report(const fs::path& out_dir) {
+/// Writes the report with Python; 0 when written, 1 when it failed, 128 + signal when a signal
+/// stopped it (passed on to Python, which ends without a traceback; the studies are kept).
+int make_report(const fs::path& out_dir, const InterruptScope& interrupt) {
   const fs::path pydir = python_package_dir();
   if (pydir.empty() || !fs::exists(pydir / "corlab" / "report.py")) {
     std::fprintf(stderr,
@@ -104,10 +106,17 @@ int make_report(const fs::path& out_dir) {
                pydir.string().c_str(), argv[0].c_str(), shell_quote(argv[3]).c_str());
   int status = 0;
   try {
-    status = run_process(argv);  // no shell: the directory name reaches Python as it is
+    status = run_process(argv, interrupt);  // no shell: the directory name reaches Python as it is
   } catch (const std::exception& err) {
     std::fprintf(stderr, "corlab: the report failed: %s\n", err.what());
     return 1;
+  }
+  if (interrupt.requested()) {
+    std::fprintf(stderr,
+                 "corlab: interrupted (%s) while writing the report; the studies are kept, rerun "
+                 "the same command to write it\n",
+                 interrupt.signal_name());
+    return interrupt.exit_code();
   }
   if (status != 0) {
     std::fprintf(stderr, "corlab: the report failed (%s exited with status %d)\n", argv[0].c_str(),
@@ -146,7 +155,11 @@ int run(const ReproduceArgs& args) {
                "written\n",
                result.value("run_wall_s", 0.0), result.value("runs_this_invocation", 0), failed);
   int status = failed > 0 ? 1 : 0;
-  if (!args.no_report && make_report(args.out) != 0) status = 1;
+  if (!args.no_report) {
+    const int report = make_report(args.out, interrupt);
+    if (interrupt.requested()) return report;
+    if (report != 0) status = 1;
+  }
   return status;
 }
 

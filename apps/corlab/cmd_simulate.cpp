@@ -46,7 +46,14 @@ int run_simulate(const SimulateOptions& opt) {
   control.config_validated = true;  // above, before the output directory is made
   const InterruptScope interrupt;   // Ctrl-C, SIGTERM, SIGHUP: the solver polls the flag
   control.cancel = interrupt.flag();
-  if (!opt.quiet) control.progress = study::fraction_progress(stderr, "corlab simulate");
+  if (!opt.quiet) {
+    // Silent once interrupted: the solver's last call (fraction 1) would print "100.0 %" before
+    // "interrupted".
+    control.progress = [print = study::fraction_progress(stderr, "corlab simulate"),
+                        &interrupt](double fraction) {
+      if (!interrupt.requested()) print(fraction);
+    };
+  }
   std::vector<std::string> written;
   control.on_fields = [&out, &written](double time, const fem::FieldSnapshot& snapshot) {
     const auto file = out / fmt::format("fields_{:.6e}.vtu", time);
@@ -83,6 +90,12 @@ int run_simulate(const SimulateOptions& opt) {
   if (!result.suspect.empty()) {
     fmt::print(stderr, "corlab simulate: warning: suspect run: {}\n", result.suspect);
   }
+  if (!result.e_error_reason.empty()) {
+    fmt::print(stderr, "corlab simulate: warning: no error bar: {}\n", result.e_error_reason);
+  }
+  if (const std::string late = fem::unreached_output_times(config, result); !late.empty()) {
+    fmt::print(stderr, "corlab simulate: warning: {}\n", late);
+  }
   if (!opt.quiet) {
     fmt::print(stderr, "corlab simulate: wrote {}/summary.json, history.csv and {} field file(s)\n",
                out.string(), written.size());
@@ -95,8 +108,8 @@ const CommandRegistration kRegistration{Command{
     "simulate", "Run one explicit FE impact (elastic sphere on elastic-plastic substrate)",
     [](CLI::App& sub) -> std::function<int()> {
       auto opt = std::make_shared<SimulateOptions>();
-      sub.add_option("--config", opt->config_file, "TOML case file (keys: impact_config.hpp)")
-          ->check(CLI::ExistingFile);
+      sub.add_option("--config", opt->config_file,
+                     "TOML case file (keys: impact_config.hpp; a pipe such as <(...) too)");
       sub.add_option("--set", opt->settings, "override one key, e.g. --set impact.velocity=2")
           ->take_all();
       sub.add_option("--out", opt->out_dir, "output directory")->required();

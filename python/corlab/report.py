@@ -453,8 +453,9 @@ available to corlab; none are shown and none were digitised.</p>
     ("build", fit.get("build_type")), ("date (UTC)", fit.get("date_utc"))] + list(ver.items())])}
 </body></html>"""
     path = os.path.join(out_dir, "report.html")
-    with open(path, "w") as f:
+    with open(path + ".tmp", "w") as f:  # replaced whole: a signal never leaves half a report
         f.write(body)
+    os.replace(path + ".tmp", path)
     return path
 
 

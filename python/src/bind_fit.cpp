@@ -1,6 +1,7 @@
 // Bindings for the fit area: corlab.fit_linear, corlab.fit_expression, corlab.fit_paper,
 // corlab.relative_errors, corlab.relative_error_stats. Results are plain dicts (the JSON forms of
 // fit_io.hpp, the same as `corlab fit --json`).
+#include <fmt/format.h>
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -25,6 +26,21 @@ py::object to_python(const nlohmann::json& j) {
 }
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// A row fit_expression left out for its value (not by `where`) is said at once, not only listed.
+void warn_left_out(const study::NonlinearFit& fit) {
+  std::size_t not_finite = 0;
+  std::string first;
+  for (const auto& r : fit.left_out) {
+    if (r.reason.starts_with("where:")) continue;
+    if (not_finite++ == 0) first = fmt::format("row {}: {}", r.row, r.reason);
+  }
+  if (not_finite == 0) return;
+  py::module_::import("warnings")
+      .attr("warn")(fmt::format("fit_expression left out {} row(s) with a non-finite response "
+                                "(first {}); the result's 'left_out' lists them",
+                                not_finite, first));
+}
 
 std::span<const double> values(const Array& a, const char* field) {
   if (a.ndim() != 1) throw_invalid(field, static_cast<double>(a.ndim()), "1 dimension");
@@ -98,7 +114,9 @@ residuals. Raises ValueError for rank-deficient X, n <= p or non-finite input.)d
         options.where = where;
         options.confidence = confidence;
         options.max_iterations = max_iterations;
-        return to_python(study::to_json(study::fit_expression(expr, starts, data, options)));
+        const study::NonlinearFit fit = study::fit_expression(expr, starts, data, options);
+        warn_left_out(fit);
+        return to_python(study::to_json(fit));
       },
       py::arg("expr"), py::arg("params"), py::arg("data"), py::arg("where") = "",
       py::arg("confidence") = 0.95, py::arg("max_iterations") = 500,
@@ -108,7 +126,8 @@ expr: "response ~ model" over the columns of `data`, e.g. "e ~ a + s*ln(k1) + b*
 (muParser syntax: ln, log (= ln), log10, exp, sqrt, ^). params: {name: start value}.
 data: {column: sequence of float}, all of equal length. where: optional row filter,
 e.g. "e < 0.999". Returns a dict with coefficients (value, standard_error, ci_lower,
-ci_upper, start), covariance, goodness, iterations, converged, message.)doc");
+ci_upper, start), covariance, goodness, iterations, converged, message, and left_out: every
+row not fitted ({row, reason}: a non-finite response, warned about, or the `where` filter).)doc");
 
   m.def(
       "fit_paper",

@@ -37,7 +37,9 @@ std::string setting_text(const std::string& key, const py::handle& value) {
     throw_invalid(key, py::repr(value).cast<std::string>(),
                   "a number or a string (`none` for an elastic body)");
   }
-  if (py::isinstance<py::int_>(value)) return std::to_string(value.cast<long long>());
+  // an int as its exact decimal text: 10**400 is then refused by the key's range (ValueError),
+  // not by a failed cast to a C++ integer (RuntimeError)
+  if (py::isinstance<py::int_>(value)) return py::str(value).cast<std::string>();
   if (py::isinstance<py::float_>(value)) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.17g", value.cast<double>());
@@ -127,7 +129,8 @@ py::dict result_dict(const fem::ImpactResult& result, const fem::ImpactConfig& c
   py::dict out;
   const fem::FieldInput in{&result, &config, result.wall_s};
   for (const auto& f : fem::result_fields()) {
-    if ((f.outputs & fem::kSummary) != 0) out[py::str(std::string(f.name))] = field_object(f.value(in));
+    if ((f.outputs & fem::kSummary) != 0)
+      out[py::str(std::string(f.name))] = field_object(f.value(in));
   }
   out["config"] = json_object(fem::config_to_json(config));
   py::dict history;
@@ -168,6 +171,9 @@ void bind_simulate(py::module_& m) {
         {
           py::gil_scoped_release release;
           result = fem::simulate(config);
+        }
+        if (const std::string late = fem::unreached_output_times(config, result); !late.empty()) {
+          py::module_::import("warnings").attr("warn")(late);
         }
         return result_dict(result, config);
       },

@@ -5,17 +5,35 @@
 #include <cmath>
 #include <utility>
 
+#include "corlab/core/text_file.hpp"
+
 namespace corlab {
 
 namespace {
-// User text in a message is shown with its control characters escaped, so the message stays one
-// line whatever the input holds (found by fuzzing the inline material parser).
+/// Longest user value shown in a message [bytes]; a longer one is cut with its length said.
+constexpr std::size_t kMaxShownValueBytes = 160;
+
+// User text in a message is shown with its control characters and any byte that is not UTF-8
+// escaped, so the message stays one line of valid text whatever the input holds (found by fuzzing
+// the inline material parser; a non-UTF-8 byte broke `corlab fit --json`).
 std::string printable(std::string_view text) {
   std::string out;
   out.reserve(text.size());
-  for (const char c : text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char c = text[i];
     const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') {
+    if (u >= 0x80) {
+      // a whole valid UTF-8 character is kept, a stray byte escaped
+      const std::size_t len = u >= 0xF0 ? 4 : u >= 0xE0 ? 3 : 2;
+      const std::string_view ch = text.substr(i, len);
+      if (ch.size() == len && invalid_utf8_offset(ch) == std::string_view::npos) {
+        out += ch;
+        i += len;
+        continue;
+      }
+      out += fmt::format("\\x{:02x}", u);
+    } else if (c == '\n') {
       out += "\\n";
     } else if (c == '\r') {
       out += "\\r";
@@ -24,17 +42,31 @@ std::string printable(std::string_view text) {
     } else {
       out += c;
     }
+    ++i;
   }
   return out;
 }
+
+// A value as shown: printable, and a long one (a 1 MB material name) cut to its first bytes.
+std::string shown_value(std::string_view value) {
+  if (value.size() <= kMaxShownValueBytes) return printable(value);
+  std::size_t cut = kMaxShownValueBytes;
+  while (cut > 0 && (static_cast<unsigned char>(value[cut]) & 0xC0) == 0x80) --cut;  // whole chars
+  return fmt::format("{}... ({} bytes)", printable(value.substr(0, cut)), value.size());
+}
 }  // namespace
 
+std::string message_text(std::string_view value) { return shown_value(value); }
+
 InputError::InputError(std::string field, std::string value, std::string constraint, bool quoted)
-    : std::invalid_argument(
-          quoted ? fmt::format("invalid {} = '{}': must be {}", printable(field), printable(value),
-                               printable(constraint))
-                 : fmt::format("invalid {} = {}: must be {}", printable(field), printable(value),
-                               printable(constraint))),
+    : std::invalid_argument(quoted ? fmt::format("invalid {} = '{}': must be {}",
+                                                 printable(field),
+                                                 shown_value(value),
+                                                 printable(constraint))
+                                   : fmt::format("invalid {} = {}: must be {}",
+                                                 printable(field),
+                                                 shown_value(value),
+                                                 printable(constraint))),
       field_(std::move(field)),
       value_(std::move(value)),
       constraint_(std::move(constraint)) {}

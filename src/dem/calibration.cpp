@@ -11,13 +11,23 @@
 namespace corlab::dem {
 namespace {
 
+// e of a law in unit scales, 0 where it holds the bodies together: e falls to 0 at a finite
+// damping and the bracketing below steps past it (dem --restitution 1e-3 stopped there).
+double restitution_or_stuck(const ForceLaw& force) {
+  try {
+    return simulate_impact(force, 1.0, 1.0).restitution;
+  } catch (const NotSeparated&) {
+    return 0.0;
+  }
+}
+
 // e of the hysteresis law in unit scales (e does not depend on K, m*, v).
 double hysteresis_restitution_by_ode(double chi) {
   const HysteresisLaw law{.stiffness = 1.0, .chi = chi, .impact_velocity = 1.0};
   const ForceLaw force = [&law](double d, double r, const ContactHistory&) {
     return law.force(d, r);
   };
-  return simulate_impact(force, 1.0, 1.0).restitution;
+  return restitution_or_stuck(force);
 }
 
 CurveFit fit_one_parameter(const std::function<double(double param, double v)>& law_e,
@@ -85,7 +95,12 @@ double tsuji_restitution(double alpha) {
 
 double calibrate_tsuji_alpha(double e) {
   require_open_range("restitution", e, 0.0, 1.0);
-  const auto f = [e](double alpha) { return tsuji_restitution(alpha) - e; };
+  const auto f = [e](double alpha) {
+    const TsujiLaw law{.stiffness = 1.0, .alpha = alpha, .effective_mass = 1.0};
+    return restitution_or_stuck(
+               [&law](double d, double r, const ContactHistory&) { return law.force(d, r); }) -
+           e;
+  };
   double hi = 0.5;
   while (f(hi) > 0.0) hi *= 2.0;
   return detail::brent_root(f, hi > 0.5 ? hi / 2.0 : 0.0, hi, 1e-13, 1e-11);

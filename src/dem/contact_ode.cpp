@@ -136,7 +136,7 @@ ImpactOutcome simulate_impact(const ForceLaw& law,
     }
     if (tau > 1e6) break;
   }
-  throw std::runtime_error("simulate_impact: the bodies did not separate (overdamped or stuck)");
+  throw NotSeparated("simulate_impact: the bodies did not separate (overdamped or stuck)");
 }
 
 }  // namespace corlab::dem

@@ -240,19 +240,28 @@ void require_data(const std::vector<ParameterStart>& params,
   }
 }
 
-/// The rows the fit uses (finite response, passing the --where filter) into prob.rows / prob.y.
-void select_rows(const std::vector<double>& response,
+/// The rows the fit uses (finite response, passing the --where filter) into prob.rows / prob.y;
+/// the others, with the reason, into `left_out`.
+void select_rows(const std::string& response_name,
+                 const std::vector<double>& response,
                  const DataColumns& data,
                  const std::string& where,
-                 Problem& prob) {
+                 Problem& prob,
+                 std::vector<LeftOutRow>& left_out) {
   std::unique_ptr<BoundExpression> filter;
   if (!trimmed(where).empty()) {
     filter = std::make_unique<BoundExpression>(where, std::vector<std::string>{}, data, "where");
   }
   for (std::size_t i = 0; i < response.size(); ++i) {
     const double y = response[i];
-    if (!std::isfinite(y)) continue;
-    if (filter && filter->eval(i, nullptr) == 0.0) continue;
+    if (!std::isfinite(y)) {
+      left_out.push_back({i, fmt::format("{} = {}", response_name, y)});
+      continue;
+    }
+    if (filter && filter->eval(i, nullptr) == 0.0) {
+      left_out.push_back({i, fmt::format("where: {} is false", trimmed(where))});
+      continue;
+    }
     prob.rows.push_back(i);
     prob.y.push_back(y);
   }
@@ -368,7 +377,7 @@ NonlinearFit fit_expression(const std::string& formula,
   prob.model = &model;
   prob.p = fit.names.size();
   prob.start = fit.start;
-  select_rows(ycol->second, data, options.where, prob);
+  select_rows(response, ycol->second, data, options.where, prob, fit.left_out);
   fit.response = response;
   fit.model = model_text;
   fit.observations = static_cast<int>(prob.rows.size());

@@ -24,7 +24,9 @@ GoodnessOfFit goodness_of_fit(const Eigen::VectorXd& observed,
                               int parameters) {
   GoodnessOfFit g;
   const Eigen::Index n = observed.size();
-  if (n == 0) return g;
+  if (n == 0) return g;  // nothing fitted
+  g.max_relative_error = 0.0;
+  g.rms_relative_error = 0.0;
   const Eigen::VectorXd residuals = observed - fitted;
   g.residual_sum_squares = residuals.squaredNorm();
   const auto dof = static_cast<double>(n - parameters);

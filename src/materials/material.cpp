@@ -1,5 +1,7 @@
 #include "corlab/materials/material.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <string>
 
@@ -30,6 +32,10 @@ void validate(const Material& material, std::string_view field_prefix, bool requ
     throw_invalid(p + ".sigma_y", "missing", "given for an elastic-plastic substrate [Pa]");
   }
   require_non_negative(p + ".H", material.hardening_modulus, "[Pa]");
+  if (!(material.hardening_modulus < material.youngs_modulus)) {
+    throw_invalid(p + ".H", material.hardening_modulus,
+                  fmt::format("< {}.E = {:g} [Pa]", p, material.youngs_modulus));
+  }
 }
 
 double effective_modulus(double e1, double nu1, double e2, double nu2) {

@@ -9,10 +9,12 @@
 #include <filesystem>
 #include <set>
 #include <system_error>
+#include <vector>
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/core/text.hpp"
+#include "corlab/core/text_file.hpp"
 
 namespace corlab {
 
@@ -52,7 +54,9 @@ std::filesystem::path data_directory(const std::filesystem::path& installed) {
 MaterialDatabase MaterialDatabase::load(const std::filesystem::path& file) {
   toml::table table;
   try {
-    table = toml::parse_file(file.string());
+    table =
+        toml::parse(read_text_file(file, "material database", {.max_bytes = kMaxConfigFileBytes}),
+                    file.string());
   } catch (const toml::parse_error& err) {
     throw InputError(fmt::format("invalid material database '{}': {} (line {})", file.string(),
                                  err.description(), err.source().begin.line));
@@ -76,6 +80,12 @@ MaterialDatabase MaterialDatabase::load(const std::filesystem::path& file) {
         }
       } else {
         throw_invalid(fmt::format("materials.{}.{}", name, k), "non-number", "a number");
+      }
+    }
+    for (const std::string_view required : {"E", "nu", "rho"}) {
+      if (!entry->contains(required)) {
+        throw_invalid(fmt::format("materials.{}.{}", name, required), "missing",
+                      "given (every entry gives E, nu and rho)");
       }
     }
     validate(m, "materials." + name);
@@ -110,10 +120,31 @@ std::vector<std::string> MaterialDatabase::names() const {
   return out;
 }
 
+namespace {
+
+/// An inline material (no database name to start from) gives E, nu and rho: a missing one would
+/// otherwise be a silent 0 (nu = 0 ran; E = 0 read "must be > 0").
+void require_complete(const std::set<std::string_view>& given,
+                      std::string_view spec,
+                      const std::string& field) {
+  std::vector<std::string_view> missing;
+  for (const std::string_view key : {"E", "nu", "rho"}) {
+    if (!given.contains(key)) missing.push_back(key);
+  }
+  if (missing.empty()) return;
+  throw_invalid(field, spec,
+                fmt::format("a database name or an inline material with E, nu and rho (it lacks "
+                            "{}; e.g. E=200e9,nu=0.3,rho=7850 or steel_ma2023,sy=700e6)",
+                            fmt::join(missing, ", ")));
+}
+
+}  // namespace
+
 Material parse_material_spec(std::string_view spec,
                              std::string_view field,
                              const MaterialDatabase& database) {
   const std::string f(field);
+  const std::string_view spec_text = spec;
   Material m;
   m.name = "inline";
   bool first = true;
@@ -145,6 +176,7 @@ Material parse_material_spec(std::string_view spec,
     if (comma == std::string_view::npos) break;
     spec.remove_prefix(comma + 1);
   }
+  if (m.name == "inline") require_complete(given, spec_text, f);
   if (any_value && m.name != "inline") m.name += " (modified)";
   validate(m, f);
   return m;

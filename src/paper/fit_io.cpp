@@ -148,8 +148,11 @@ nlohmann::json to_json(const NonlinearFit& fit) {
                      {"ci_lower", fit.ci_lower[j]},
                      {"ci_upper", fit.ci_upper[j]}});
   }
+  nlohmann::json left_out = nlohmann::json::array();
+  for (const auto& r : fit.left_out) left_out.push_back({{"row", r.row}, {"reason", r.reason}});
   return {{"response", fit.response},
           {"model", fit.model},
+          {"left_out", left_out},
           {"coefficients", coefs},
           {"covariance", fit.covariance},
           {"goodness", to_json(fit.goodness)},

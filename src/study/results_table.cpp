@@ -8,28 +8,25 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
-#include <sstream>
 
 #include "corlab/core/atomic_file.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
+#include "corlab/core/text_file.hpp"
 #include "corlab/fem/solver/result_fields.hpp"
 #include "corlab/materials/material.hpp"
 
 namespace corlab::study {
 namespace {
 
-std::string read_file(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw_invalid("results file", file.string(), "a readable file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+/// A results table, bounded and checked (text_file.hpp). `utf8` off for a sweep's own results.csv
+/// on resume: a kill may have cut its last line inside a character.
+std::string read_file(const std::filesystem::path& file, bool utf8 = true) {
+  return read_text_file(file, "results file", {.max_bytes = kMaxTableFileBytes, .utf8 = utf8});
 }
 
 /// Complete lines of a file (the part after the last '\n' is returned in `partial`).
@@ -309,7 +306,7 @@ ExistingResults prepare_resume(const std::filesystem::path& file,
                                const std::vector<std::string>& keep_status) {
   ExistingResults existing;
   if (!std::filesystem::exists(file)) return existing;
-  const std::string text = read_file(file);
+  const std::string text = read_file(file, false);
   std::string_view partial;
   auto lines = complete_lines(text, partial);
   bool changed = false;

@@ -16,7 +16,7 @@ namespace corlab::study {
 
 /// How a value appears in messages: numbers as they are, strings in quotes.
 inline std::string shown(std::string_view value) {
-  return parse_double(value) ? std::string(value) : fmt::format("'{}'", value);
+  return parse_double(value) ? std::string(value) : fmt::format("'{}'", message_text(value));
 }
 
 class SpecError {

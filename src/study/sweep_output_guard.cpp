@@ -4,11 +4,10 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/text_file.hpp"
 #include "corlab/study/results_table.hpp"
 #include "sweep_internal.hpp"
 
@@ -21,13 +20,6 @@ Settings sorted(Settings settings) {
   return settings;
 }
 
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 }  // namespace
 
 void check_same_study(const SweepSpec& spec, const std::filesystem::path& out_dir) {
@@ -36,7 +28,9 @@ void check_same_study(const SweepSpec& spec, const std::filesystem::path& out_di
   const std::string where = fmt::format("invalid --out = '{}'", out_dir.string());
   SweepSpec previous;
   try {
-    previous = parse_sweep_spec(read_text(previous_file), previous_file.string());
+    previous =
+        parse_sweep_spec(read_text_file(previous_file, "spec", {.max_bytes = kMaxSpecFileBytes}),
+                         previous_file.string());
   } catch (const InputError& err) {
     throw InputError(fmt::format(
         "{}: must hold this study or none, but its spec.toml cannot be read ({}); use another "

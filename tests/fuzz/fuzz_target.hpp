@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -38,6 +39,43 @@ void expect_clean(std::string_view target, Read&& read) {
                  target.data(), err.what());
     std::abort();
   }
+}
+
+/// The special and oversized files every file reader refuses with a one-line InputError at once
+/// (issue 31: `sweep /dev/zero` grew to 5 GB and ended in bad_alloc): /dev/zero, /dev/urandom, a
+/// directory and a sparse file one byte over `cap` (no byte of it is read). Runs `read(path)` on
+/// each; anything else (no error, another exception, more than a second) is a finding (abort).
+template <typename Read>
+void expect_special_files_refused(std::string_view target, std::size_t cap, Read&& read) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() /
+                       ("corlab_fuzz_special_" + std::to_string(::getpid()) + std::string(target));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "a_directory");
+  const fs::path sparse = dir / "over_the_cap";
+  { std::ofstream touch(sparse); }
+  fs::resize_file(sparse, cap + 1);
+  for (const fs::path& path :
+       {fs::path("/dev/zero"), fs::path("/dev/urandom"), dir / "a_directory", sparse}) {
+    const auto start = std::chrono::steady_clock::now();
+    bool refused = false;
+    expect_clean(target, [&] {
+      try {
+        read(path);
+      } catch (const InputError&) {
+        refused = true;
+        throw;
+      }
+    });
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!refused || seconds > 1.0) {
+      std::fprintf(stderr, "%.*s: %s was %s in %.2f s\n", static_cast<int>(target.size()),
+                   target.data(), path.c_str(), refused ? "refused" : "not refused", seconds);
+      std::abort();
+    }
+  }
+  fs::remove_all(dir);
 }
 
 /// A per-process scratch file holding `data` (the readers under test take paths).

@@ -44,6 +44,12 @@ class InputError : public std::invalid_argument {
                                 std::string_view value,
                                 std::string_view constraint);
 
+/// A user's value as messages show it: control characters and bytes that are not UTF-8 escaped
+/// (\n, \x1b, \xff), and a value longer than 160 bytes cut to its first 160 with its length said,
+/// so a message is one short line of valid text whatever the input (the InputError constructor
+/// shows every value this way).
+std::string message_text(std::string_view value);
+
 /// Requires a finite value > 0.
 void require_positive(std::string_view field, double value, std::string_view unit = "");
 /// Requires a finite value >= 0.

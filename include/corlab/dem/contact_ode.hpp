@@ -7,6 +7,7 @@
 /// history.unloading) and separation (delta = 0 while receding), where e = -delta'/v.
 
 #include <functional>
+#include <stdexcept>
 
 #include "corlab/dem/contact_laws.hpp"
 
@@ -28,8 +29,14 @@ struct ImpactOutcome {
   double max_overlap = 0.0;   ///< largest overlap [m]
 };
 
+/// What simulate_impact throws when the bodies do not separate (an overdamped law holds them
+/// together: no rebound) within its step budget.
+struct NotSeparated : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 /// Integrates one impact at impact speed v > 0 [m/s] of effective mass m* > 0 [kg].
-/// Throws corlab::InputError for bad m*/v and std::runtime_error if the bodies never separate.
+/// Throws corlab::InputError for bad m*/v and NotSeparated if the bodies never separate.
 ImpactOutcome simulate_impact(const ForceLaw& law,
                               double effective_mass,
                               double impact_velocity,

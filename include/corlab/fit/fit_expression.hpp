@@ -38,6 +38,12 @@ struct NonlinearFitOptions {
   std::string where;
 };
 
+/// A data row fit_expression() did not use, and why ("e = nan", "where: e < 0.999 is false").
+struct LeftOutRow {
+  std::size_t row = 0;  ///< index into the data columns (0-based)
+  std::string reason;
+};
+
 /// Result of fit_expression().
 struct NonlinearFit {
   std::string response;            ///< response column (left of '~')
@@ -58,6 +64,8 @@ struct NonlinearFit {
   std::string message;  ///< why the iteration stopped
   double confidence = 0.95;
   double t_quantile = 0.0;
+  /// Every row not fitted: a non-finite response, or the `where` filter (never dropped silently).
+  std::vector<LeftOutRow> left_out;
 };
 
 /// Splits "y ~ f(...)" (or "y = f(...)") into response and model. Throws InputError if there is

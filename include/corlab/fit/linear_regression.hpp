@@ -7,6 +7,7 @@
 /// NIST StRD linear problem Norris).
 
 #include <Eigen/Dense>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,14 +22,16 @@ struct LinearFitOptions {
   double rcond = 1e-13;
 };
 
-/// Goodness of fit of fitted values against observations.
+/// Goodness of fit of fitted values against observations. NaN (null in JSON, "-" in text) for a
+/// form that was not fitted (too few cases or groups): a 0 there read as a perfect fit.
 struct GoodnessOfFit {
-  double residual_sum_squares = 0.0;  ///< SSE = sum (y - y_hat)^2
-  double residual_std_error = 0.0;    ///< s = sqrt(SSE / dof)
-  double r_squared = 0.0;  ///< 1 - SSE / sum (y - mean y)^2 (centred; model with an intercept)
+  static constexpr double kNotFitted = std::numeric_limits<double>::quiet_NaN();
+  double residual_sum_squares = kNotFitted;  ///< SSE = sum (y - y_hat)^2
+  double residual_std_error = kNotFitted;    ///< s = sqrt(SSE / dof)
+  double r_squared = kNotFitted;  ///< 1 - SSE / sum (y - mean y)^2 (centred; with an intercept)
   /// Over y != 0 (relative_error_stats; 0 when there is none):
-  double max_relative_error = 0.0;  ///< max |y_hat - y| / |y| [-]
-  double rms_relative_error = 0.0;  ///< sqrt(mean ((y_hat - y) / y)^2) [-]
+  double max_relative_error = kNotFitted;  ///< max |y_hat - y| / |y| [-]
+  double rms_relative_error = kNotFitted;  ///< sqrt(mean ((y_hat - y) / y)^2) [-]
 };
 
 /// Result of fit_linear(): coefficients and their inference.

@@ -6,8 +6,8 @@
 ///   [study]
 ///   name = "table2"                      # required, [A-Za-z0-9_-]
 ///   description = "..."
-///   max_runs = 20000                     # optional; more runs than this (default 10,000) is
-///                                        # refused before anything is expanded
+///   max_runs = 20000                     # optional; more runs than this (default 10,000, at
+///                                        # most 1,000,000) is refused before anything is read
 ///   [base]                               # impact-config keys over the defaults
 ///   "mesh.h_min" = 0.5e-3
 ///   [grid]                               # cartesian product; each value a non-empty array
@@ -51,6 +51,9 @@ struct SweepCase {
 
 /// Largest number of runs a spec may expand to unless its [study] max_runs says more.
 inline constexpr std::size_t kDefaultMaxRuns = 10'000;
+/// Largest [study] max_runs: expanding and checking a million runs takes about 1 GB and a few
+/// seconds (docs/user/errors.md); a larger study is split into several specs.
+inline constexpr std::size_t kMaxRunsLimit = 1'000'000;
 
 /// A parsed and validated sweep specification.
 struct SweepSpec {

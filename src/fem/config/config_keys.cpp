@@ -300,7 +300,13 @@ void set_value(const KeyEntry& e, ImpactConfig& c, std::string_view text) {
           *target = parse_list(key, text);
         } else if constexpr (std::is_same_v<T, Material>) {
           const std::string body(key.substr(0, key.find('.')));
-          *target = parse_material_spec(trim(text), body);
+          try {
+            *target = parse_material_spec(trim(text), body);
+          } catch (const InputError& err) {
+            // An error about the whole spec (unknown name, incomplete) names the key itself.
+            if (err.field() != body) throw;
+            throw InputError(std::string(key), err.value(), err.constraint(), true);
+          }
         } else if constexpr (std::is_same_v<T, SubstrateShape>) {
           *target = parse_shape(key, text);
         } else {

@@ -17,6 +17,12 @@ namespace corlab::fem {
 namespace {
 
 void check_plastic_body(const Material& m, std::string_view body) {
+  // On every body, elastic too: a value that cannot be a hardening modulus is an error, not
+  // ignored until someone gives the body a yield stress.
+  if (!(m.hardening_modulus < m.youngs_modulus)) {
+    throw_invalid(fmt::format("{}.hardening", body), m.hardening_modulus,
+                  fmt::format("< {}.E = {:g} [Pa]", body, m.youngs_modulus));
+  }
   if (!m.yield_stress) return;
   const double sy = *m.yield_stress;
   const double strain = sy / m.youngs_modulus;
@@ -27,10 +33,6 @@ void check_plastic_body(const Material& m, std::string_view body) {
                     "with {}.E = {:g} Pa",
                     kMinYieldStrain * m.youngs_modulus, kMaxYieldStrain * m.youngs_modulus,
                     kMinYieldStrain, kMaxYieldStrain, body, m.youngs_modulus));
-  }
-  if (!(m.hardening_modulus < m.youngs_modulus)) {
-    throw_invalid(fmt::format("{}.hardening", body), m.hardening_modulus,
-                  fmt::format("< {}.E = {:g} [Pa]", body, m.youngs_modulus));
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/text.hpp"
+#include "corlab/core/text_file.hpp"
 #include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/config/config_limits.hpp"
 
@@ -112,12 +113,19 @@ void apply_settings(ImpactConfig& config,
 }
 
 ImpactConfig load_impact_config(const std::filesystem::path& file) {
+  // Bounded and checked (a special file, a huge or non-UTF-8 file is refused); an empty file is
+  // an error, not the default case.
+  const std::string text = read_text_file(file, "config file", {.max_bytes = kMaxConfigFileBytes});
   toml::table root;
   try {
-    root = toml::parse_file(file.string());
+    root = toml::parse(text, file.string());
   } catch (const toml::parse_error& err) {
     throw InputError(one_line(fmt::format("invalid config file '{}': {} (line {})", file.string(),
                                           err.description(), err.source().begin.line)));
+  }
+  if (root.empty()) {
+    throw_invalid("config file", file.string(),
+                  "a TOML file that sets at least one key (it sets none)");
   }
   std::vector<std::string> items;
   for (const auto& [group_key, group] : root) {

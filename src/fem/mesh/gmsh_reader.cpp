@@ -28,6 +28,7 @@
 
 #include "corlab/core/number.hpp"
 #include "corlab/core/text.hpp"
+#include "corlab/core/text_file.hpp"
 #endif
 
 namespace corlab::fem {
@@ -311,8 +312,8 @@ void check_gmsh_survives_opening(const std::filesystem::path& file) {
 }  // namespace
 
 Mesh read_gmsh(const std::filesystem::path& file) {
-  if (!std::filesystem::is_regular_file(file))
-    throw InputError("invalid mesh.file = " + file.string() + ": must be an existing file");
+  // Gmsh opens the file itself: only a regular file within the cap reaches it.
+  require_regular_file(file, "mesh.file", kMaxMeshFileBytes);
   const std::lock_guard<std::mutex> lock(gmsh_mutex());
   const GmshSession session;
   // The gmsh API throws std::string (not std::exception) on a damaged file, from any call; found

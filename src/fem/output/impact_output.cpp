@@ -3,12 +3,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 #include "corlab/core/atomic_file.hpp"
 #include "corlab/fem/config/config_keys.hpp"
@@ -86,6 +88,48 @@ void write_history_csv(const ImpactHistory& h, const std::filesystem::path& file
     out << line << '\n';
   }
   if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", file.string()));
+}
+
+namespace {
+
+/// "1e-05, 2e-05 s (2 of 3)": at most five of `times`, how many of `all`.
+std::string listed(std::vector<double> times, std::size_t all) {
+  std::sort(times.begin(), times.end());
+  constexpr std::size_t kShown = 5;
+  std::string text;
+  for (std::size_t i = 0; i < std::min(times.size(), kShown); ++i) {
+    text += fmt::format("{}{:.6g}", i == 0 ? "" : ", ", times[i]);
+  }
+  if (times.size() > kShown) text += ", ...";
+  return fmt::format("{} s ({} of {})", text, times.size(), all);
+}
+
+}  // namespace
+
+std::string unreached_output_times(const ImpactConfig& config, const ImpactResult& result) {
+  // The run starts when the sphere reaches the substrate: the gap is crossed in exact free flight
+  // (impact_model.cpp, t_start), so no step falls before it.
+  const double start = config.impact.gap / config.impact.velocity;
+  std::vector<double> early;
+  std::vector<double> late;
+  for (const double t : config.output.field_times) {
+    if (t < start) early.push_back(t);
+    if (t > result.end_time) late.push_back(t);
+  }
+  const std::size_t all = config.output.field_times.size();
+  std::string text;
+  if (!early.empty()) {
+    text = fmt::format(
+        "output.times {} before the run's start at {:.6g} s (gap / velocity): the first step's "
+        "field file stands for {}",
+        listed(early, all), start, early.size() == 1 ? "it" : "them");
+  }
+  if (!late.empty()) {
+    text += fmt::format("{}output.times {} after the run's end at {:.6g} s: no field file for {}",
+                        text.empty() ? "" : "; ", listed(late, all), result.end_time,
+                        late.size() == 1 ? "it" : "them");
+  }
+  return text;
 }
 
 }  // namespace corlab::fem

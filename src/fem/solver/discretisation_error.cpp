@@ -1,8 +1,11 @@
 #include "corlab/fem/solver/discretisation_error.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "corlab/core/error.hpp"
 
@@ -32,14 +35,20 @@ double grid_convergence_index(double e_fine, double e_coarse, double ratio) {
 ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
                                           const SimulationControl& control) {
   ImpactResult fine = simulate(config, control);
-  if (fine.status == RunStatus::kCancelled || !config.mesh.file.empty()) return fine;
+  if (fine.status == RunStatus::kCancelled) return fine;
+  if (!config.mesh.file.empty()) {
+    fine.e_error_reason = "mesh.file is set: the estimate coarsens only the built-in mesh";
+    return fine;
+  }
   SimulationControl quiet;
   quiet.cancel = control.cancel;
   ImpactResult coarse;
   try {
     coarse = simulate(coarsened(config), quiet);
-  } catch (const InputError&) {
-    return fine;  // no coarser mesh is allowed (e.g. beyond R / 20): no error bar, e_error NaN
+  } catch (const InputError& err) {
+    // no coarser mesh is allowed (e.g. beyond R / 20): no error bar, e_error NaN, said why
+    fine.e_error_reason = std::string("no companion mesh at 2h: ") + err.what();
+    return fine;
   }
   if (coarse.status == RunStatus::kCancelled) {
     fine.status = RunStatus::kCancelled;
@@ -48,6 +57,13 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   }
   fine.e_coarse = coarse.e;
   fine.e_error = grid_convergence_index(fine.e, coarse.e);
+  if (!std::isfinite(fine.e_error)) {
+    const ImpactResult& failed = fine.status != RunStatus::kSeparated ? fine : coarse;
+    fine.e_error_reason =
+        fmt::format("{} ended as {}{}", &failed == &fine ? "the run" : "the companion run at 2h",
+                    to_string(failed.status),
+                    failed.status_detail.empty() ? "" : " (" + failed.status_detail + ")");
+  }
   fine.wall_s += coarse.wall_s;
   return fine;
 }

@@ -33,6 +33,20 @@ TEST(InputError, RangesAreOpenOrClosedAsNamed) {
             "invalid substrate.nu = 0.7: must be in (-1, 0.5)");
 }
 
+TEST(InputError, ALongValueIsCutAndABadByteEscaped) {
+  // issue 31 item 11: an unknown 1 MB material name was echoed whole.
+  const std::string huge(1'000'000, 'x');
+  const std::string msg =
+      input_error_message([&] { throw_invalid("sphere.material", huge, "known"); });
+  EXPECT_EQ(msg, "invalid sphere.material = '" + std::string(160, 'x') +
+                     "... (1000000 bytes)': must be known");
+  // a non-UTF-8 byte is escaped (it broke `fit --json`), a whole UTF-8 character kept
+  EXPECT_EQ(input_error_message([] { throw_invalid("status", "fa\xFFil \xC3\xA9", "ok"); }),
+            "invalid status = 'fa\\xffil \xC3\xA9': must be ok");
+  EXPECT_EQ(message_text(std::string(158, 'a') + "\xC3\xA9\xC3\xA9"),
+            std::string(158, 'a') + "\xC3\xA9... (162 bytes)");  // cut between characters
+}
+
 TEST(InputError, TextValuesAreQuoted) {
   EXPECT_EQ(input_error_message([] { throw_invalid("model", "foo", "one of [a, b]"); }),
             "invalid model = 'foo': must be one of [a, b]");

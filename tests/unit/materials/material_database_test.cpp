@@ -142,7 +142,8 @@ TEST_F(DatabaseFile, BadFileMessages) {
   expect_input_error([&] { (void)MaterialDatabase::load(write("[a]\nE = \"x\"\n")); },
                      "invalid materials.a.E = 'non-number': must be a number");
   expect_input_error([&] { (void)MaterialDatabase::load(write("[a]\nE = 1e9\nnu = 0.3\n")); },
-                     "invalid materials.a.rho = 0: must be > 0 [kg/m^3]");
+                     "invalid materials.a.rho = 'missing': must be given (every entry gives E, nu "
+                     "and rho)");
 }
 
 TEST(MaterialSpec, DatabaseName) {
@@ -187,8 +188,19 @@ TEST(MaterialSpec, BadSpecMessages) {
                      "invalid sphere.E = '': must be a finite number");
   expect_input_error([] { (void)parse_material_spec("E=1e9,nu=0.3,rho=1,G=1", "sphere"); },
                      "invalid sphere key = 'G': must be one of E, nu, rho, sy, sigma_y, H");
+  // issue 31 item 7: a missing property was a silent 0 (nu = 0 ran; rho read "= 0: must be > 0")
   expect_input_error([] { (void)parse_material_spec("E=1e9,nu=0.3", "substrate"); },
-                     "invalid substrate.rho = 0: must be > 0 [kg/m^3]");
+                     "invalid substrate = 'E=1e9,nu=0.3': must be a database name or an inline "
+                     "material with E, nu and rho (it lacks rho; e.g. E=200e9,nu=0.3,rho=7850 or "
+                     "steel_ma2023,sy=700e6)");
+  expect_input_error([] { (void)parse_material_spec("E=200e9,rho=7800", "sphere"); },
+                     "invalid sphere = 'E=200e9,rho=7800': must be a database name or an inline "
+                     "material with E, nu and rho (it lacks nu; e.g. E=200e9,nu=0.3,rho=7850 or "
+                     "steel_ma2023,sy=700e6)");
+  EXPECT_EQ(parse_material_spec("steel_ma2023,nu=0.29", "sphere").poisson_ratio, 0.29);
+  // hardening must stay below E (on every body, elastic too)
+  expect_input_error([] { (void)parse_material_spec("E=1e9,nu=0.3,rho=1,H=2e9", "sphere"); },
+                     "invalid sphere.H = 2000000000: must be < sphere.E = 1e+09 [Pa]");
   expect_input_error([] { (void)parse_material_spec("E=1e9,nu=0.7,rho=1", "sphere"); },
                      "invalid sphere.nu = 0.7: must be in (-1, 0.5)");
   expect_input_error([] { (void)parse_material_spec("steel_ma2023,sy=1e12", "substrate"); },

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <set>
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "support/input_errors.hpp"
 
 namespace corlab::study {
 namespace {
@@ -259,7 +261,8 @@ TEST(SweepSpec, HugeGridIsRefusedBeforeExpansionUnlessMaxRunsSaysSo) {
   } catch (const InputError& err) {
     EXPECT_EQ(std::string(err.what()),
               "invalid spec big.toml: expands to 1000000 runs, more than [study] max_runs = 10000 "
-              "(default 10000); set max_runs = 1000000 in [study] to run them all");
+              "(default 10000, at most 1000000); set max_runs = 1000000 in [study] to run them "
+              "all");
   }
   const std::string small = "[grid]\n\"impact.velocity\" = " + values(3, 1.0, 1.0) + "\n";
   EXPECT_THROW((void)parse_sweep_spec("[study]\nname = \"s\"\nmax_runs = 2\n" + small, "s.toml"),
@@ -267,6 +270,48 @@ TEST(SweepSpec, HugeGridIsRefusedBeforeExpansionUnlessMaxRunsSaysSo) {
   const auto spec = parse_sweep_spec("[study]\nname = \"s\"\nmax_runs = 3\n" + small, "s.toml");
   EXPECT_EQ(spec.expand().size(), 3u);
   EXPECT_NE(spec.to_toml().find("max_runs = 3"), std::string::npos);
+}
+
+// issue 31 item 3: a grid of 10^6 values for one key did not answer in 60 s (a pairwise duplicate
+// check before the run count); max_runs = 9765625 ended in bad_alloc.
+TEST(SweepSpec, ALongGridIsSizedBeforeItsValuesAreRead) {
+  std::string many = "[";
+  for (int i = 0; i < 200'000; ++i) many += (i ? ", " : "") + std::to_string(1 + i);
+  many += "]";
+  const auto start = std::chrono::steady_clock::now();
+  test::expect_input_error(
+      [&] {
+        (void)parse_sweep_spec("[study]\nname = \"g\"\n[grid]\n\"impact.velocity\" = " + many,
+                               "g.toml");
+      },
+      "invalid spec g.toml: expands to 200000 runs, more than [study] max_runs = 10000 (default "
+      "10000, at most 1000000); set max_runs = 200000 in [study] to run them all");
+  // the same 200,000 values with a duplicate at the end, allowed by max_runs: found in
+  // O(n log n) (the pairwise check took 11 s for 80,000), and named with its first occurrence
+  many.back() = ',';
+  many += " 7]";
+  test::expect_input_error(
+      [&] {
+        (void)parse_sweep_spec(
+            "[study]\nname = \"g\"\nmax_runs = 300000\n[grid]\n\"impact.velocity\" = " + many,
+            "g.toml");
+      },
+      "invalid spec g.toml grid.\"impact.velocity\"[200000] = 7: must differ from "
+      "grid.\"impact.velocity\"[6] (duplicate grid value)");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+  test::expect_input_error(
+      [] { (void)parse_sweep_spec("[study]\nname = \"g\"\nmax_runs = 9765625\n", "g.toml"); },
+      "invalid spec g.toml study.max_runs: must be an integer in [1, 1000000]");
+  test::expect_input_error(
+      [&] {
+        (void)parse_sweep_spec(
+            "[study]\nname = \"g\"\n[grid]\n\"impact.velocity\" = " + values(1000, 1.0, 0.01) +
+                "\n\"sphere.rho\" = " + values(1000, 3000.0, 1.0) +
+                "\n\"substrate.sigma_y\" = " + values(1000, 300e6, 1e5),
+            "g.toml");
+      },
+      "invalid spec g.toml: expands to 1000000000 runs, more than [study] max_runs = 10000 "
+      "(default 10000, at most 1000000); split the study");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/solver/impact_result.hpp"
@@ -23,6 +24,12 @@ nlohmann::json summary_to_json(const ImpactResult& result, const ImpactConfig& c
 void write_summary_json(const ImpactResult& result,
                         const ImpactConfig& config,
                         const std::filesystem::path& file);
+
+/// One line on the requested output.times outside the run: before its start (gap / velocity: the
+/// first step's field file stands for them) or after its end (no field file), e.g.
+/// "output.times 0.0003 s (1 of 3) after the run's end at 0.00021 s: no field file for it";
+/// empty when every requested time is inside the run.
+std::string unreached_output_times(const ImpactConfig& config, const ImpactResult& result);
 
 /// Writes the history as CSV with a header naming the units, one row per history entry.
 void write_history_csv(const ImpactHistory& history, const std::filesystem::path& file);

@@ -39,8 +39,9 @@ ImpactConfig coarsened(const ImpactConfig& config, double ratio = kErrorRefineme
 double grid_convergence_index(double e_fine, double e_coarse, double ratio = kErrorRefinementRatio);
 
 /// Runs `config` and its coarsened companion and returns the fine run's result with e_coarse
-/// and e_error set (NaN when either run did not rebound cleanly, or when the coarsened mesh is
-/// not a valid config, e.g. elements beyond R / 20). A cancel stops both.
+/// and e_error set (NaN when either run did not rebound cleanly, when the coarsened mesh is
+/// not a valid config, e.g. elements beyond R / 20, or for a mesh.file; e_error_reason then says
+/// which). A cancel stops both.
 ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
                                           const SimulationControl& control = {});
 

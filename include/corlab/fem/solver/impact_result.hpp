@@ -48,6 +48,9 @@ struct ImpactResult {
   /// discretisation-error estimate of e: e +/- e_error [-] (discretisation_error.hpp; NaN unless
   /// estimated)
   double e_error = std::numeric_limits<double>::quiet_NaN();
+  /// why an error estimate that was asked for has no e_error (no companion mesh at 2h, mesh.file,
+  /// a companion or run without a clean rebound); empty when it has one or was not asked for
+  std::string e_error_reason;
   double F_max = 0.0;               ///< largest contact force [N]
   double delta_max = 0.0;           ///< largest indentation (sphere c.o.m. displacement) [m]
   double t_contact = 0.0;           ///< duration of contact [s]
