@@ -17,7 +17,7 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
 # Only the tests need these: the DEM codes the DEM exports are checked with (issue 11; apt install
 # time measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB
 # disk)). `make test` installs them, `make run` does not.
-TEST_DEBIAN_PACKAGES := lammps liggghts yade
+TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
   bench format clean dem-check install golden-rebaseline

@@ -20,8 +20,9 @@ namespace corlab::cli {
 namespace {
 
 struct DemArgs {
-  std::vector<std::string> types;  // MATERIAL:RADIUS
-  std::string wall;
+  std::vector<std::string> types;  // [LABEL=]MATERIAL:RADIUS
+  std::string wall;                // [LABEL=]MATERIAL
+  std::vector<std::string> pairs;  // A/B=E
   std::optional<double> restitution;
   std::string model;
   std::string table;
@@ -35,9 +36,13 @@ struct DemArgs {
 
 dem::ParticleType parse_type(const std::string& spec) {
   const auto colon = spec.rfind(':');
-  if (colon == std::string::npos) throw_invalid("type", spec, "MATERIAL:RADIUS (radius in m)");
+  if (colon == std::string::npos) {
+    throw_invalid("type", spec, "[LABEL=]MATERIAL:RADIUS (radius in m)");
+  }
   dem::ParticleType t;
-  t.material = parse_material_spec(spec.substr(0, colon), "type");
+  auto labelled = dem::parse_labelled_material(std::string_view(spec).substr(0, colon), "type");
+  t.material = std::move(labelled.material);
+  t.label = std::move(labelled.label);
   t.radius = parse_finite("type radius", std::string_view(spec).substr(colon + 1));
   require_positive("type radius", t.radius, "[m]");
   return t;
@@ -71,8 +76,11 @@ int run_dem(const DemArgs& args) {
   dem::ExportSpec spec;
   for (const auto& t : args.types) spec.types.push_back(parse_type(t));
   if (!args.wall.empty()) {
-    spec.wall = parse_material_spec(args.wall, "wall");
+    auto wall = dem::parse_labelled_material(args.wall, "wall");
+    spec.wall = std::move(wall.material);
+    spec.wall_label = std::move(wall.label);
   }
+  for (const auto& p : args.pairs) spec.pair_restitution.push_back(dem::parse_pair_restitution(p));
   spec.restitution = args.restitution;
   spec.model = args.model;
   if (!args.table.empty()) {
@@ -83,43 +91,36 @@ int run_dem(const DemArgs& args) {
   spec.v_max = args.v_max;
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
-  std::vector<dem::PairCalibration> pairs;
-  try {
-    pairs = dem::calibrate_pairs(spec);
-  } catch (const InputError& err) {
-    // The README's own example stopped here: an elastic particle pair has no plastic e(v).
-    if (err.field() != "material pair" || spec.wall_only || !spec.wall) throw;
-    throw InputError(err.field(), err.value(),
-                     err.constraint() +
-                         " (an elastic pair has none: --wall-only calibrates only "
-                         "the particle-wall pairs)",
-                     true);
-  }
+  // A pair no model covers (an elastic particle pair) is refused by calibrate_pairs with the ways
+  // out (--pair, a yield stress, --wall-only).
+  const std::vector<dem::PairCalibration> pairs = dem::calibrate_pairs(spec);
   const std::filesystem::path dir(args.out);
   std::filesystem::create_directories(dir);
   write_file(dir / "lammps.in", dem::write_lammps(spec, pairs));
+  write_file(dir / "lammps_nopython.in", dem::write_lammps(spec, pairs, false));
   write_file(dir / "liggghts.in", dem::write_liggghts(spec, pairs));
   write_file(dir / "yade_fragment.py", dem::write_yade(spec, pairs));
   write_file(dir / "restitution_table.csv", dem::write_table_csv(spec, pairs, args.table_points));
   write_file(dir / "dem_export.json", dem::write_json(spec, pairs, args.table_points));
   for (const auto& p : pairs) {
-    const std::string name =
-        p.type_j == 0 ? fmt::format("{}-wall", p.type_i) : fmt::format("{}-{}", p.type_i, p.type_j);
-    if (spec.restitution) {
-      fmt::print(
-          "{:<8} e = {:.6g}: chi = {:.6f}, tsuji alpha = {:.6f}, LAMMPS tsuji input {:.6f}\n", name,
-          *spec.restitution, p.chi, p.tsuji_alpha, p.lammps_tsuji_input);
-    } else {
-      fmt::print(
-          "{:<8} {}: LAMMPS viscoelastic eta = {:.6g} (max |de| {:.2e}), LIGGGHTS yield "
-          "ratio = {:.6g} (max |de| {:.2e})\n",
-          name, p.target, p.lammps_viscoelastic_eta(), p.viscoelastic->max_abs_error,
-          p.liggghts_yield_ratio(), p.liggghts->max_abs_error);
-    }
+    const auto lammps = dem::lammps_delivery(spec, p, true);
+    const auto lammps_plain = dem::lammps_delivery(spec, p, false);
+    const auto liggghts = dem::liggghts_delivery(pairs, p);
+    const auto yade = dem::yade_delivery(spec, p);
+    fmt::print(
+        "{}: {}\n    max |de|: LAMMPS {:.1e}, without Python {:.1e}, LIGGGHTS {:.1e}, YADE "
+        "{:.1e}; contact time {:.3g} s at {} m/s\n",
+        p.name(), p.target, lammps.max_abs_error, lammps_plain.max_abs_error,
+        liggghts.max_abs_error, yade.max_abs_error, p.contact_time_fast, spec.v_max);
   }
   fmt::print(
-      "wrote {}/{{lammps.in, liggghts.in, yade_fragment.py, restitution_table.csv, "
-      "dem_export.json}}\n",
+      "time step [s]: LAMMPS {:.3g}, without Python {:.3g}, LIGGGHTS {:.3g}, YADE {:.3g} "
+      "(set in each fragment; e within {:.0e} of each law's)\n",
+      dem::lammps_time_step(pairs, true), dem::lammps_time_step(pairs, false),
+      dem::liggghts_time_step(pairs), dem::yade_time_step(pairs), dem::kTimeStepError);
+  fmt::print(
+      "wrote {}/{{lammps.in, lammps_nopython.in, liggghts.in, yade_fragment.py, "
+      "restitution_table.csv, dem_export.json}}\n",
       dir.string());
   return 0;
 }
@@ -129,9 +130,13 @@ const CommandRegistration kRegistration{Command{
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<DemArgs>();
       sub.add_option("--type", a->types,
-                     "particle type MATERIAL:RADIUS[m] (repeat; type ids 1, 2...)")
+                     "particle type [LABEL=]MATERIAL:RADIUS[m] (repeat; type ids 1, 2...)")
           ->required();
-      sub.add_option("--wall", a->wall, "material of a flat wall (one per type in LAMMPS)");
+      sub.add_option("--wall", a->wall,
+                     "[LABEL=]MATERIAL of a flat wall (one fix per type in LAMMPS)");
+      sub.add_option("--pair", a->pairs,
+                     "A/B=E: constant e of one pair (type labels or ids, wall), e.g. an elastic "
+                     "glass/glass=1 (repeat)");
       auto* e = sub.add_option("--restitution", a->restitution, "constant target e in (0, 1)");
       auto* m =
           sub.add_option("--model", a->model, "registered CoR model for e(v), e.g. thornton1997");

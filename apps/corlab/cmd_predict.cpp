@@ -42,10 +42,30 @@ struct PredictOptions {
 constexpr std::size_t kMaxPoints = 1'000'000;
 
 constexpr const char* kRangeSyntax =
-    "V or START:STOP:N with 0 < START <= STOP and an integer N >= 1 [m/s]";
+    "V, a list V1,V2,... or START:STOP:N with 0 < START <= STOP and an integer N >= 1 [m/s]";
 
-// "V" or "START:STOP:N" -> velocities (lin or log spacing); one-line InputError otherwise.
+// "V1,V2,..." -> the listed speeds, in the order given (each one checked as a single V).
+std::vector<double> parse_velocity_list(const std::string& text) {
+  std::vector<double> v;
+  std::string_view rest(text);
+  while (true) {
+    const auto comma = rest.find(',');
+    const std::optional<double> x = parse_double(rest.substr(0, comma));
+    if (!x) throw_invalid("velocity", text, kRangeSyntax);
+    restitution::require_velocity(*x);
+    v.push_back(*x);
+    if (comma == std::string_view::npos) return v;
+    rest.remove_prefix(comma + 1);
+  }
+}
+
+// "V", "V1,V2,..." or "START:STOP:N" -> velocities (lin or log spacing for a range); one-line
+// InputError otherwise.
 std::vector<double> parse_velocities(const std::string& text, const std::string& spacing) {
+  if (text.find(',') != std::string::npos) {
+    if (text.find(':') != std::string::npos) throw_invalid("velocity", text, kRangeSyntax);
+    return parse_velocity_list(text);
+  }
   std::vector<std::string_view> parts;
   std::string_view rest(text);
   while (true) {
@@ -200,7 +220,8 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--substrate", o->substrate,
                      "substrate material (needs a yield stress sy): name or inline spec")
           ->required();
-      sub.add_option("--velocity", o->velocity, "impact speed V or range START:STOP:N [m/s]")
+      sub.add_option("--velocity", o->velocity,
+                     "impact speed V, list V1,V2,... or range START:STOP:N [m/s]")
           ->required();
       sub.add_option("--spacing", o->spacing, "range spacing: lin|log")
           ->check(CLI::IsMember({"lin", "log"}));

@@ -89,12 +89,21 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     bool wall_only,
                     int fit_points,
                     const std::optional<std::pair<std::vector<double>, std::vector<double>>>& table,
-                    const std::string& table_source) {
+                    const std::string& table_source,
+                    const std::map<std::string, double>& pairs) {
   dem::ExportSpec spec;
   for (const auto& [material, radius] : types) {
-    spec.types.push_back({parse_material_spec(material, "type"), radius});
+    auto labelled = dem::parse_labelled_material(material, "type");
+    spec.types.push_back({std::move(labelled.material), radius, std::move(labelled.label)});
   }
-  if (!wall.empty()) spec.wall = parse_material_spec(wall, "wall");
+  if (!wall.empty()) {
+    auto labelled = dem::parse_labelled_material(wall, "wall");
+    spec.wall = std::move(labelled.material);
+    spec.wall_label = std::move(labelled.label);
+  }
+  for (const auto& [pair, e] : pairs) {
+    spec.pair_restitution.push_back(dem::parse_pair_restitution(fmt::format("{}={}", pair, e)));
+  }
   spec.restitution = restitution;
   spec.model = model;
   spec.v_min = v_min;
@@ -119,13 +128,14 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
     spec.table = dem::tabulated_curve(v, e);
     spec.table_source = table_source.empty() ? "table given in Python" : table_source;
   }
-  const auto pairs = dem::calibrate_pairs(spec);
+  const auto calibrated = dem::calibrate_pairs(spec);
   py::dict out;
-  out["lammps"] = dem::write_lammps(spec, pairs);
-  out["liggghts"] = dem::write_liggghts(spec, pairs);
-  out["yade"] = dem::write_yade(spec, pairs);
-  out["csv"] = dem::write_table_csv(spec, pairs);
-  out["json"] = dem::write_json(spec, pairs);
+  out["lammps"] = dem::write_lammps(spec, calibrated);
+  out["lammps_nopython"] = dem::write_lammps(spec, calibrated, false);
+  out["liggghts"] = dem::write_liggghts(spec, calibrated);
+  out["yade"] = dem::write_yade(spec, calibrated);
+  out["csv"] = dem::write_table_csv(spec, calibrated);
+  out["json"] = dem::write_json(spec, calibrated);
   return out;
 }
 
@@ -194,10 +204,13 @@ void bind_dem(py::module_& m) {
         py::arg("restitution") = std::nullopt, py::arg("model") = "", py::arg("v_min") = 0.1,
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
         py::arg("table") = std::nullopt, py::arg("table_source") = "",
+        py::arg("pairs") = std::map<std::string, double>{},
         "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables. "
         "table = (velocities [m/s], e [-]): an FE e(v) table instead of `restitution` or "
         "`model` (e.g. t = corlab.read_results('results.csv'); table=(t['velocity'], t['e'])); "
-        "table_source names it in the exported files");
+        "table_source names it in the exported files. A type or wall material may carry a "
+        "label ('glass=E=63e9,nu=0.22,rho=2500'); pairs = {'glass/glass': 1.0} sets one pair's "
+        "constant e (labels or type ids, 'wall')");
 }
 
 }  // namespace corlab::python

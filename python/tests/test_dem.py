@@ -93,7 +93,8 @@ def test_cli_writes_all_files_and_reads_an_fe_table(tmp_path, corlab_bin):
                            "--out", str(out)],
                           capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
-    for name in ("lammps.in", "liggghts.in", "yade_fragment.py", "restitution_table.csv",
+    for name in ("lammps.in", "lammps_nopython.in", "liggghts.in", "yade_fragment.py",
+                 "restitution_table.csv",
                  "dem_export.json"):
         assert (out / name).stat().st_size > 0
     data = json.loads((out / "dem_export.json").read_text())
@@ -110,3 +111,22 @@ def test_cli_bad_input_is_one_line_and_nonzero(tmp_path, corlab_bin):
                           capture_output=True, text=True, timeout=60)
     assert done.returncode != 0
     assert "restitution" in done.stderr and len(done.stderr.strip().splitlines()) == 1
+
+
+def test_export_labels_pairs_and_time_step():
+    # Issue 30's glass bead on copper: the elastic glass-glass pair set by `pairs`, labels as given.
+    out = corlab.dem.export([("glass=E=63e9,nu=0.22,rho=2500", 0.002)],
+                            wall="copper=E=120e9,nu=0.34,rho=8900,sy=200e6", model="corlab2026",
+                            v_min=0.5, v_max=4.0, pairs={"glass/glass": 1.0})
+    data = json.loads(out["json"])
+    assert [p["label"] for p in data["pairs"]] == ["glass-glass", "glass-copper"]
+    assert data["pairs"][0]["constant_e"] == 1.0
+    assert "label='glass'" in out["yade"] and "label='copper'" in out["yade"]
+    for key, text in (("lammps", out["lammps"]), ("liggghts", out["liggghts"])):
+        assert "timestep %.4g\n" % data["time_step_s"][key] in text
+    assert "O.dt = %.4g\n" % data["time_step_s"]["yade"] in out["yade"]
+    assert "python/invoke 1 post_force" in out["lammps"]
+    assert "python/invoke 1 post_force" not in out["lammps_nopython"]
+    with pytest.raises(ValueError, match="glass/glass"):
+        corlab.dem.export([("glass=E=63e9,nu=0.22,rho=2500", 0.002)],
+                          wall="copper=E=120e9,nu=0.34,rho=8900,sy=200e6", model="corlab2026")

@@ -125,3 +125,20 @@ def test_substrate_without_yield_stress_raises():
 def test_bad_material_spec_raises():
     with pytest.raises(ValueError, match=r"invalid sphere.rho = -1"):
         corlab.predict("ma2023", "E=370e9,nu=0.22,rho=-1", AL, 1.0)
+
+
+def test_cli_predict_takes_a_velocity_list(corlab_bin):
+    import subprocess
+    args = [corlab_bin, "predict", "--model", "thornton1997", "--sphere", "alumina_ma2023",
+            "--substrate", "aluminium_ma2023", "--velocity"]
+    done = subprocess.run(args + ["0.5,1,2,4"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    rows = done.stdout.splitlines()[1:]
+    assert [float(r.split(",")[1]) for r in rows] == [0.5, 1.0, 2.0, 4.0]
+    e = [float(r.split(",")[2]) for r in rows]
+    assert e == pytest.approx([corlab.predict("thornton1997", SPHERE, AL, v)
+                               for v in (0.5, 1.0, 2.0, 4.0)], rel=1e-9)
+    for bad in ("1,,2", "1,-2", "1:2,3"):
+        done = subprocess.run(args + [bad], capture_output=True, text=True)
+        assert done.returncode == 2 and done.stderr.count("\n") == 1, (bad, done.stderr)
+        assert "velocity" in done.stderr

@@ -1,18 +1,46 @@
 #include "corlab/dem/dem_export.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/number.hpp"
+#include "corlab/core/text.hpp"
 #include "corlab/core/units.hpp"
+#include "corlab/dem/contact_ode.hpp"
 #include "corlab/dem/hysteresis_chi.hpp"
 #include "corlab/dem/lammps_mapping.hpp"
+#include "corlab/dem/time_step.hpp"
+#include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/registry.hpp"
 
 namespace corlab::dem {
 namespace {
 
+constexpr std::string_view kLabelChars =
+    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+";
+
+bool is_label(std::string_view s) {
+  return !s.empty() && s.find_first_not_of(kLabelChars) == std::string_view::npos;
+}
+
+// The keys of an inline material spec: "E=..." is a material, not a label "E".
+bool is_material_key(std::string_view s) {
+  return s == "E" || s == "nu" || s == "rho" || s == "sy" || s == "sigma_y" || s == "H";
+}
+
 double sphere_mass(const ParticleType& t) {
   return 4.0 / 3.0 * units::kPi * t.radius * t.radius * t.radius * t.material.density;
+}
+
+// A label as written: labels go into LAMMPS comments, YADE strings and file names.
+std::string clean_label(std::string name) {
+  for (char& c : name) {
+    if (kLabelChars.find(c) == std::string_view::npos) c = '_';
+  }
+  return name;
 }
 
 void validate_spec(const ExportSpec& spec) {
@@ -35,11 +63,47 @@ void validate_spec(const ExportSpec& spec) {
   if (!(spec.v_max > spec.v_min)) throw_invalid("v_max", spec.v_max, "> v_min");
   if (spec.fit_points < 2 || spec.fit_points > 200)
     throw_invalid("fit_points", spec.fit_points, "in [2, 200]");
+  std::vector<std::string> labels;
+  for (int i = 1; i <= static_cast<int>(spec.types.size()); ++i) {
+    const std::string label = type_label(spec, i);
+    if (std::find(labels.begin(), labels.end(), label) != labels.end() || label == "wall") {
+      throw_invalid("type label", label, "unique among the types and not 'wall' (LABEL=MATERIAL)");
+    }
+    labels.push_back(label);
+  }
+}
+
+// The type id (0 = wall) a pair override names, by label or id.
+int resolve_type(const ExportSpec& spec, const std::string& name, const std::string& text) {
+  if (name == "wall" || (spec.wall && name == wall_label(spec))) {
+    if (!spec.wall) throw_invalid("pair", text, "a pair of existing types (no --wall given)");
+    return 0;
+  }
+  const int n = static_cast<int>(spec.types.size());
+  for (int i = 1; i <= n; ++i) {
+    if (name == type_label(spec, i) || name == std::to_string(i)) return i;
+  }
+  std::string known;
+  for (int i = 1; i <= n; ++i) known += type_label(spec, i) + ", ";
+  throw_invalid("pair", text, "two of [" + known + "wall] (labels or type ids) and =E");
+}
+
+// The pair's own constant e, if the spec sets one for (i, j) (j = 0: the wall).
+std::optional<double> pair_override(const ExportSpec& spec, int i, int j) {
+  std::optional<double> e;
+  for (const auto& p : spec.pair_restitution) {
+    const std::string text = p.first + "/" + p.second;
+    const int a = resolve_type(spec, p.first, text);
+    const int b = resolve_type(spec, p.second, text);
+    if ((a == i && b == j) || (a == j && b == i)) e = p.restitution;
+  }
+  return e;
 }
 
 // e(v) of sphere material `a` hitting `b`: the registered model needs the yielding body as the
 // substrate, so the body with a yield stress (the softer if both) is taken as the flat.
 RestitutionCurve model_curve(const ExportSpec& spec,
+                             const PairCalibration& c,
                              const Material& a,
                              const Material& b,
                              std::string& description) {
@@ -50,15 +114,44 @@ RestitutionCurve model_curve(const ExportSpec& spec,
   const bool b_yields = b.yield_stress.has_value();
   const bool a_yields = a.yield_stress.has_value();
   if (!a_yields && !b_yields) {
-    throw_invalid("material pair", a.name + " / " + b.name,
-                  "one of them with a yield stress for model " + spec.model);
+    const std::string first = type_label(spec, c.type_i);
+    const std::string second = c.type_j == 0 ? "wall" : type_label(spec, c.type_j);
+    throw_invalid(
+        "pair " + c.name(), first + "/" + second,
+        fmt::format("a pair with a yield stress for model {} (neither material has one: elastic, "
+                    "e = 1); set its e with --pair {}/{}=E (1: elastic), give a material sy=..., "
+                    "or leave particle pairs out with --wall-only",
+                    spec.model, first, second));
   }
   const bool b_is_flat = b_yields && (!a_yields || *b.yield_stress <= *a.yield_stress);
   const Material& sphere = b_is_flat ? a : b;
   const Material& flat = b_is_flat ? b : a;
-  description = spec.model + " (" + sphere.name + " on " + flat.name + ")";
+  const std::string sphere_label = b_is_flat       ? type_label(spec, c.type_i)
+                                   : c.type_j == 0 ? wall_label(spec)
+                                                   : type_label(spec, c.type_j);
+  const std::string flat_label = !b_is_flat      ? type_label(spec, c.type_i)
+                                 : c.type_j == 0 ? wall_label(spec)
+                                                 : type_label(spec, c.type_j);
+  description = spec.model + " (" + sphere_label + " on " + flat_label + ")";
   auto model = restitution::make_model(spec.model, sphere, flat);
   return [model](double v) { return model.cor(v); };
+}
+
+// The constant e closest to the target in the worst case: the mid-range of e over the speeds.
+CurveFit best_constant_fit(std::span<const double> speeds, const RestitutionCurve& curve) {
+  CurveFit fit;
+  fit.velocities.assign(speeds.begin(), speeds.end());
+  for (const double v : speeds) fit.target.push_back(curve(v));
+  const auto [lo, hi] = std::minmax_element(fit.target.begin(), fit.target.end());
+  fit.parameter = std::min(1.0, 0.5 * (*lo + *hi));
+  double sum = 0.0;
+  for (const double e : fit.target) {
+    fit.fitted.push_back(fit.parameter);
+    fit.max_abs_error = std::max(fit.max_abs_error, std::abs(e - fit.parameter));
+    sum += (e - fit.parameter) * (e - fit.parameter);
+  }
+  fit.rms_error = std::sqrt(sum / static_cast<double>(speeds.size()));
+  return fit;
 }
 
 PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
@@ -67,6 +160,7 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
   c.type_i = i;
   c.type_j = j;
   c.particle_radius = ti.radius;
+  c.label = type_label(spec, i) + "-" + (j == 0 ? wall_label(spec) : type_label(spec, j));
   const Material* other = nullptr;
   if (j == 0) {
     other = &*spec.wall;
@@ -80,26 +174,116 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
   }
   c.effective_modulus = corlab::effective_modulus(ti.material, *other);
   c.hertz_stiffness = hertz_stiffness(c.effective_modulus, c.effective_radius);
-  if (spec.restitution) {
-    const double e = *spec.restitution;
-    c.target = "constant e = " + std::to_string(e);
+  c.contact_time_fast = hertz_contact_time(c.hertz_stiffness, c.effective_mass, spec.v_max);
+  c.contact_time_slow = hertz_contact_time(c.hertz_stiffness, c.effective_mass, spec.v_min);
+  c.constant = pair_override(spec, i, j);
+  if (c.constant) {
+    c.target = fmt::format("constant e = {:.6g} (--pair)", *c.constant);
+  } else if (spec.restitution) {
+    c.constant = spec.restitution;
+    c.target = fmt::format("constant e = {:.6g}", *c.constant);
+  }
+  const auto speeds = log_speeds(spec.v_min, spec.v_max, spec.fit_points);
+  if (c.constant) {
+    const double e = *c.constant;
     c.curve = [e](double) { return e; };
     c.chi = exact_chi(e);
-    c.tsuji_alpha = calibrate_tsuji_alpha(e);
-    c.lammps_tsuji_input = lammps_tsuji_input(e);
+    c.tsuji_alpha = e < 1.0 ? calibrate_tsuji_alpha(e) : 0.0;
+    c.lammps_tsuji_input = e < 1.0 ? lammps_tsuji_input(e) : 1.0;  // e = 1: no damping
+    c.best_constant = best_constant_fit(speeds, c.curve);
     return c;
   }
-  c.curve = model_curve(spec, ti.material, *other, c.target);
-  const auto speeds = log_speeds(spec.v_min, spec.v_max, spec.fit_points);
+  c.curve = model_curve(spec, c, ti.material, *other, c.target);
   c.viscoelastic = fit_viscoelastic_damping(c.hertz_stiffness, c.effective_mass, speeds, c.curve);
   c.liggghts = fit_liggghts_thornton_pressure(c.effective_modulus, c.effective_radius,
                                               c.effective_mass, speeds, c.curve);
   c.thornton = fit_thornton_pressure(c.effective_modulus, c.effective_radius, c.effective_mass,
                                      speeds, c.curve);
+  c.best_constant = best_constant_fit(speeds, c.curve);
   return c;
 }
 
+// e of LIGGGHTS's thornton_ning for pair c at v when its yield radius is ratio * r_i [-].
+double liggghts_e_at_ratio(const PairCalibration& c, double ratio, double v) {
+  const double p_y =
+      2.0 * c.effective_modulus * ratio * c.particle_radius / (units::kPi * c.effective_radius);
+  const LiggghtsThorntonNingLaw law{{c.effective_modulus, c.effective_radius, p_y}};
+  const ForceLaw f = [&law](double d, double, const ContactHistory& h) { return law.force(d, h); };
+  return simulate_impact(f, c.effective_mass, v).restitution;
+}
+
 }  // namespace
+
+std::vector<double> liggghts_type_ratios(const ExportSpec& spec,
+                                         const std::vector<PairCalibration>& pairs) {
+  std::vector<double> ratios;
+  for (int t = 1; t <= static_cast<int>(spec.types.size()); ++t) {
+    const PairCalibration* chosen = nullptr;
+    for (const auto& p : pairs) {
+      if (p.type_i != t || !p.liggghts) continue;
+      if (p.type_j == 0 || (!chosen && p.type_j == p.type_i)) chosen = &p;
+    }
+    // No fitted pair of this type (constant e only): a contact radius of a whole particle
+    // radius is never reached, so its contacts stay elastic.
+    ratios.push_back(chosen ? chosen->liggghts_yield_ratio() : 1.0);
+  }
+  return ratios;
+}
+
+LabelledMaterial parse_labelled_material(std::string_view text, std::string_view field) {
+  LabelledMaterial out;
+  const auto eq = text.find('=');
+  const std::string_view head = trim(text.substr(0, eq == std::string_view::npos ? 0 : eq));
+  if (eq != std::string_view::npos && head.find(',') == std::string_view::npos &&
+      !is_material_key(head)) {
+    if (!is_label(head)) {
+      throw_invalid(std::string(field) + " label", head,
+                    "letters, digits, _ . + (LABEL=MATERIAL, e.g. glass=E=63e9,nu=0.22,rho=2500)");
+    }
+    out.label = std::string(head);
+    out.material = parse_material_spec(text.substr(eq + 1), field);
+    return out;
+  }
+  out.material = parse_material_spec(text, field);
+  if (out.material.name != "inline") out.label = clean_label(out.material.name);
+  return out;
+}
+
+PairRestitution parse_pair_restitution(std::string_view text) {
+  constexpr std::string_view kSyntax = "A/B=E with type labels or ids (or wall) and e in (0, 1]";
+  const auto slash = text.find('/');
+  const auto eq = text.rfind('=');
+  if (slash == std::string_view::npos || eq == std::string_view::npos || eq < slash) {
+    throw_invalid("pair", text, kSyntax);
+  }
+  PairRestitution p;
+  p.first = std::string(trim(text.substr(0, slash)));
+  p.second = std::string(trim(text.substr(slash + 1, eq - slash - 1)));
+  if (p.first.empty() || p.second.empty()) throw_invalid("pair", text, kSyntax);
+  p.restitution = parse_finite("pair " + p.first + "/" + p.second, text.substr(eq + 1));
+  if (!(p.restitution > 0.0 && p.restitution <= 1.0)) {
+    throw_invalid("pair " + p.first + "/" + p.second, p.restitution, "in (0, 1] (1: elastic)");
+  }
+  return p;
+}
+
+std::string type_label(const ExportSpec& spec, int id) {
+  const ParticleType& t = spec.types[static_cast<std::size_t>(id - 1)];
+  if (!t.label.empty()) return t.label;
+  if (t.material.name != "inline") return clean_label(t.material.name);
+  return fmt::format("type{}", id);
+}
+
+std::string wall_label(const ExportSpec& spec) {
+  if (!spec.wall_label.empty()) return spec.wall_label;
+  if (spec.wall && spec.wall->name != "inline") return clean_label(spec.wall->name);
+  return "wall";
+}
+
+std::string PairCalibration::name() const {
+  return (type_j == 0 ? fmt::format("{}-wall", type_i) : fmt::format("{}-{}", type_i, type_j)) +
+         " (" + label + ")";
+}
 
 double PairCalibration::lammps_viscoelastic_eta() const {
   return viscoelastic ? viscoelastic->parameter / (effective_mass * std::sqrt(effective_radius))
@@ -112,8 +296,28 @@ double PairCalibration::liggghts_yield_ratio() const {
                   : 0.0;
 }
 
+bool liggghts_uses_thornton_ning(const std::vector<PairCalibration>& pairs) {
+  double worst_tn = 0.0;
+  double worst_constant = 0.0;
+  bool any_curve = false;
+  for (const auto& p : pairs) {
+    any_curve = any_curve || !p.constant;
+    if (p.liggghts_written) worst_tn = std::max(worst_tn, p.liggghts_written->max_abs_error);
+    worst_constant = std::max(worst_constant, p.best_constant->max_abs_error);
+  }
+  return any_curve && worst_tn < worst_constant;
+}
+
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec) {
   validate_spec(spec);
+  for (const auto& p : spec.pair_restitution) {  // each named pair must exist
+    const std::string text = p.first + "/" + p.second;
+    const int a = resolve_type(spec, p.first, text);
+    const int b = resolve_type(spec, p.second, text);
+    if (spec.wall_only && a != 0 && b != 0) {
+      throw_invalid("pair", text, "a type-wall pair (the export is --wall-only)");
+    }
+  }
   std::vector<PairCalibration> pairs;
   const int n = static_cast<int>(spec.types.size());
   for (int i = 1; i <= n && !spec.wall_only; ++i) {
@@ -121,6 +325,42 @@ std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec) {
   }
   if (spec.wall) {
     for (int i = 1; i <= n; ++i) pairs.push_back(calibrate_one(spec, i, 0));
+  }
+  // LIGGGHTS's yield ratio is per atom type (a_y = ratio r_i of the pair's first atom): the e
+  // each pair gets with the ratios written, with the worse of its two types' ratios.
+  const bool any_curve =
+      std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
+  if (!any_curve) return pairs;
+  const auto ratios = liggghts_type_ratios(spec, pairs);
+  for (auto& p : pairs) {
+    CurveFit fit;
+    fit.velocities = p.best_constant->velocities;
+    fit.target = p.best_constant->target;
+    const std::vector<int> types = p.type_j == 0 || p.type_j == p.type_i
+                                       ? std::vector<int>{p.type_i}
+                                       : std::vector<int>{p.type_i, p.type_j};
+    for (const int t : types) {
+      const double ratio = ratios[static_cast<std::size_t>(t - 1)];
+      PairCalibration as_first = p;
+      if (t != p.type_i)
+        as_first.particle_radius = spec.types[static_cast<std::size_t>(t - 1)].radius;
+      double sum = 0.0;
+      double worst = 0.0;
+      std::vector<double> e;
+      for (std::size_t k = 0; k < fit.velocities.size(); ++k) {
+        e.push_back(liggghts_e_at_ratio(as_first, ratio, fit.velocities[k]));
+        const double d = e.back() - fit.target[k];
+        worst = std::max(worst, std::abs(d));
+        sum += d * d;
+      }
+      if (fit.fitted.empty() || worst > fit.max_abs_error) {
+        fit.fitted = e;
+        fit.parameter = ratio;
+        fit.max_abs_error = worst;
+        fit.rms_error = std::sqrt(sum / static_cast<double>(e.size()));
+      }
+    }
+    p.liggghts_written = fit;
   }
   return pairs;
 }

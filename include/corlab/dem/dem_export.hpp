@@ -6,9 +6,11 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "corlab/dem/calibration.hpp"
+#include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material.hpp"
 
 namespace corlab::dem {
@@ -17,7 +19,27 @@ namespace corlab::dem {
 struct ParticleType {
   Material material;    ///< elastic constants and density (yield stress for e(v) models)
   double radius = 0.0;  ///< [m]
+  std::string label;    ///< name in the exports; empty: the material's name (inline: type<id>)
 };
+
+/// A material with the label the exports give it: "LABEL=SPEC" (e.g. "glass=E=63e9,nu=0.22,
+/// rho=2500") or a plain material spec (label: the database name; empty for an inline spec).
+struct LabelledMaterial {
+  std::string label;
+  Material material;
+};
+/// Parses "LABEL=SPEC" or "SPEC" (materials/material_database.hpp); InputError naming `field`.
+LabelledMaterial parse_labelled_material(std::string_view text, std::string_view field);
+
+/// A constant e for one pair that replaces the export's target there (e.g. an elastic
+/// particle-particle pair that no e(v) model covers).
+struct PairRestitution {
+  std::string first;         ///< type label or 1-based type id
+  std::string second;        ///< type label, type id, or "wall"
+  double restitution = 1.0;  ///< e in (0, 1] (1: elastic)
+};
+/// Parses "A/B=E" (labels or type ids, "wall" for the wall); InputError naming `pair`.
+PairRestitution parse_pair_restitution(std::string_view text);
 
 /// What the user asks for.
 struct ExportSpec {
@@ -31,7 +53,13 @@ struct ExportSpec {
   double v_max = 10.0;                    ///< upper end [m/s]
   int fit_points = 9;                     ///< speeds of the e(v) fits (log-uniform)
   bool wall_only = false;                 ///< only type-wall contacts (no particle pairs)
+  std::string wall_label;                 ///< the wall's name in the exports; empty: material's
+  std::vector<PairRestitution> pair_restitution;  ///< constant e of single pairs
 };
+
+/// The label of type `id` (1-based) and of the wall, as written in the exports.
+std::string type_label(const ExportSpec& spec, int id);
+std::string wall_label(const ExportSpec& spec);
 
 /// The calibrated contact of one pair (type_j = 0 means the wall).
 struct PairCalibration {
@@ -41,17 +69,27 @@ struct PairCalibration {
   double effective_radius = 0.0;   ///< R* [m]
   double effective_mass = 0.0;     ///< m* [kg] (wall: sphere mass)
   double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
+  std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
   std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
   RestitutionCurve curve;          ///< target e(v) [m/s] -> [-]
+  std::optional<double> constant;  ///< the constant target e (--restitution or a pair's own)
+  double contact_time_fast = 0.0;  ///< Hertz contact time at v_max [s] (the shortest)
+  double contact_time_slow = 0.0;  ///< Hertz contact time at v_min [s]
   // constant e
   double chi = 0.0;                 ///< exact hysteresis chi for the constant e [-]
   double tsuji_alpha = 0.0;         ///< exact TsujiLaw alpha [-]
   double lammps_tsuji_input = 0.0;  ///< e_in for LAMMPS damping tsuji [-]
   // e(v)
-  std::optional<CurveFit> viscoelastic;  ///< fitted c [N s/m^1.5] of ViscoelasticHertzLaw
-  std::optional<CurveFit> thornton;      ///< fitted p_y [Pa] of ThorntonNingLaw
-  std::optional<CurveFit> liggghts;      ///< fitted p_y [Pa] of LiggghtsThorntonNingLaw
-  double particle_radius = 0.0;          ///< r_i of type_i [m] (LIGGGHTS yield ratio)
+  std::optional<CurveFit> viscoelastic;   ///< fitted c [N s/m^1.5] of ViscoelasticHertzLaw
+  std::optional<CurveFit> thornton;       ///< fitted p_y [Pa] of ThorntonNingLaw
+  std::optional<CurveFit> liggghts;       ///< fitted p_y [Pa] of LiggghtsThorntonNingLaw
+  std::optional<CurveFit> best_constant;  ///< minimax constant e of the e(v) (parameter = e)
+  /// LIGGGHTS thornton_ning with the yield ratios written per type (a type shares one ratio
+  /// among its pairs): its e at the fit speeds against the target (parameter = worst ratio).
+  std::optional<CurveFit> liggghts_written;
+  double particle_radius = 0.0;  ///< r_i of type_i [m] (LIGGGHTS yield ratio)
+  /// "i-j" or "i-wall" (type ids) followed by the label: "1-wall (glass-copper)".
+  std::string name() const;
   /// LAMMPS damping viscoelastic coefficient eta_n = c/(m* sqrt(R*)) [1/(m s)].
   double lammps_viscoelastic_eta() const;
   /// LIGGGHTS coefficientYieldRatio = pi R* p_y / (2 E* r_i) [-].
@@ -62,12 +100,46 @@ struct PairCalibration {
 /// type against the wall.
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec);
 
-/// LAMMPS (29Sep2021+) fragment: pair_style granular with per-type-pair pair_coeff and one
-/// fix wall/gran per type (zplane at z = 0), pre-compensated where LAMMPS's mapping is not exact.
-std::string write_lammps(const ExportSpec& spec, const std::vector<PairCalibration>& pairs);
-/// LIGGGHTS 3.8 fragment (constant e: model hertz, exact; e(v): model thornton_ning).
+/// LIGGGHTS thornton_ning's coefficientYieldRatio per type (a_y = ratio r_i): its wall fit,
+/// else its same-type fit; 1 (never yields) for a type without a fitted pair.
+std::vector<double> liggghts_type_ratios(const ExportSpec& spec,
+                                         const std::vector<PairCalibration>& pairs);
+/// LIGGGHTS writes one normal model for all pairs: thornton_ning (e(v) through per-type yield
+/// ratios) when its worst misfit over the pairs is below that of per-pair constants (model hertz).
+bool liggghts_uses_thornton_ning(const std::vector<PairCalibration>& pairs);
+
+/// How one code's fragment delivers one pair's target: the law it runs, in words, and its
+/// max |e_law - e_target| over the fit speeds (0 where exact; the table interpolation for the
+/// hooks). The time step adds at most kTimeStepError (time_step.hpp) at the recommended step.
+struct Delivery {
+  CodeLaw law = CodeLaw::yade_mindlin;
+  std::string route;
+  double max_abs_error = 0.0;
+  std::vector<double> law_e;  ///< e the code's law delivers at the fit speeds, where not the target
+};
+/// e YADE 2023.02a's Hertz-Mindlin delivers for its input en: measured, as it falls short of en
+/// above en = 0.9 (0.99 -> 0.979); en itself below 0.85 and at 1 (table in yade_writer.cpp).
+double yade_delivered_e(double en);
+Delivery lammps_delivery(const ExportSpec& spec, const PairCalibration& pair, bool python_hook);
+Delivery liggghts_delivery(const std::vector<PairCalibration>& pairs, const PairCalibration& pair);
+Delivery yade_delivery(const ExportSpec& spec, const PairCalibration& pair);
+/// The recommended step of each fragment [s]: the shortest contact time at v_max over the
+/// measured steps per contact of the law each pair runs with (time_step.hpp).
+double lammps_time_step(const std::vector<PairCalibration>& pairs, bool python_hook);
+double liggghts_time_step(const std::vector<PairCalibration>& pairs);
+double yade_time_step(const std::vector<PairCalibration>& pairs);
+
+/// LAMMPS (7Jan2022 / Debian 12) fragment: pair_style granular with per-type-pair pair_coeff and
+/// one fix wall/gran per type (zplane at z = 0). Constant e: damping tsuji, pre-compensated.
+/// e(v): elastic Hertz plus a `fix python/invoke` hook that adds the hysteresis damping with the
+/// exact chi(e(v_in)) per contact (needs Debian's python3-lammps). `python_hook = false`: no
+/// Python; per pair the better of a fitted `damping viscoelastic` and a constant e.
+std::string write_lammps(const ExportSpec& spec,
+                         const std::vector<PairCalibration>& pairs,
+                         bool python_hook = true);
+/// LIGGGHTS 3.8 fragment (model hertz: constant e per type pair, exact; or thornton_ning).
 std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibration>& pairs);
-/// YADE fragment (Python): materials and interaction physics.
+/// YADE fragment (Python): materials, en per material pair, the e(v) hook, O.dt.
 std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration>& pairs);
 /// e(v) and chi(v) table, CSV: pair,v,e,chi,e_viscoelastic (linear interpolation in v).
 std::string write_table_csv(const ExportSpec& spec,

@@ -4,11 +4,13 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include "corlab/core/error.hpp"
 #include "corlab/dem/calibration.hpp"
 #include "corlab/dem/lammps_mapping.hpp"
+#include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material_database.hpp"
 
 namespace corlab::dem {
@@ -18,7 +20,7 @@ const Material& material(const char* name) { return MaterialDatabase::builtin().
 
 ExportSpec constant_spec() {
   ExportSpec spec;
-  spec.types = {{material("steel_ma2023"), 0.005}, {material("alumina_ma2023"), 0.003}};
+  spec.types = {{material("steel_ma2023"), 0.005, ""}, {material("alumina_ma2023"), 0.003, ""}};
   spec.wall = material("steel_ma2023");
   spec.restitution = 0.6;
   return spec;
@@ -37,12 +39,26 @@ TEST(DemExport, ConstantEPairsAndCompensatedLammpsInput) {
   EXPECT_NEAR(pairs[1].effective_radius, 0.005 * 0.003 / 0.008, 1e-15);
   const std::string liggghts = write_liggghts(spec, pairs);
   EXPECT_NE(liggghts.find("coefficientRestitution peratomtypepair 3"), std::string::npos);
-  EXPECT_NE(write_yade(spec, pairs).find("MindlinPhys(en=0.6)"), std::string::npos);
+  EXPECT_NE(write_yade(spec, pairs).find("(corlab_mat1, corlab_mat2, 0.6)"), std::string::npos);
+  // Labels: the material names; each fragment sets the step it states.
+  EXPECT_EQ(pairs[1].name(), "1-2 (steel_ma2023-alumina_ma2023)");
+  EXPECT_NE(lammps.find(fmt::format("timestep {:.4g}\n", lammps_time_step(pairs, true))),
+            std::string::npos);
+  EXPECT_NE(liggghts.find(fmt::format("timestep {:.4g}\n", liggghts_time_step(pairs))),
+            std::string::npos);
+  EXPECT_NE(write_yade(spec, pairs).find(fmt::format("O.dt = {:.4g}\n", yade_time_step(pairs))),
+            std::string::npos);
+  // The step is the shortest contact time at v_max over the measured steps per contact.
+  double shortest = 1.0;
+  for (const auto& p : pairs) shortest = std::min(shortest, p.contact_time_fast);
+  EXPECT_DOUBLE_EQ(lammps_time_step(pairs, true),
+                   shortest / step_rule(CodeLaw::lammps_tsuji).steps_per_contact);
+  EXPECT_GT(pairs[0].contact_time_slow, pairs[0].contact_time_fast);
 }
 
 TEST(DemExport, ModelCurveFitsAndJson) {
   ExportSpec spec;
-  spec.types = {{material("alumina_ma2023"), 0.005}};
+  spec.types = {{material("alumina_ma2023"), 0.005, ""}};
   spec.wall = material("aluminium_ma2023");
   spec.wall_only = true;
   spec.model = "thornton1997";
@@ -59,10 +75,68 @@ TEST(DemExport, ModelCurveFitsAndJson) {
   EXPECT_GT(pairs[0].viscoelastic->max_abs_error, pairs[0].liggghts->max_abs_error);
   const auto json = nlohmann::json::parse(write_json(spec, pairs, 8));
   EXPECT_EQ(json["pairs"][0]["pair"], "1-wall");
+  EXPECT_EQ(json["pairs"][0]["label"], "alumina_ma2023-aluminium_ma2023");
   EXPECT_EQ(json["pairs"][0]["table"].size(), 8u);
   EXPECT_NEAR(json["pairs"][0]["liggghts_yield_ratio"].get<double>(),
               pairs[0].liggghts_yield_ratio(), 1e-12);
-  EXPECT_EQ(write_lammps(spec, pairs).find("\npair_style granular\n"), std::string::npos);
+  // --wall-only still defines the particle pairs (elastic), so many particles see each other.
+  const std::string lammps = write_lammps(spec, pairs);
+  EXPECT_NE(lammps.find("\npair_style granular\n"), std::string::npos);
+  EXPECT_NE(lammps.find("pair_coeff 1 1 hertz"), std::string::npos);
+  // e(v): the python/invoke hook in lammps.in, none in the fallback.
+  EXPECT_NE(lammps.find("fix corlab_ev all python/invoke 1 post_force corlab_ev_force"),
+            std::string::npos);
+  EXPECT_EQ(write_lammps(spec, pairs, false).find("python/invoke 1"), std::string::npos);
+  EXPECT_LT(lammps_delivery(spec, pairs[0], true).max_abs_error, 1e-3);
+  EXPECT_EQ(lammps_delivery(spec, pairs[0], false).max_abs_error,
+            std::min(pairs[0].viscoelastic->max_abs_error, pairs[0].best_constant->max_abs_error));
+  // YADE's hook takes the normal approach speed.
+  EXPECT_NE(write_yade(spec, pairs).find("speed = (b1.state.vel - b2.state.vel).dot(n)"),
+            std::string::npos);
+}
+
+TEST(DemExport, LabelsAndAnElasticPairByOverride) {
+  const auto glass = parse_labelled_material("glass=E=63e9,nu=0.22,rho=2500", "type");
+  EXPECT_EQ(glass.label, "glass");
+  EXPECT_DOUBLE_EQ(glass.material.youngs_modulus, 63e9);
+  EXPECT_EQ(parse_labelled_material("E=63e9,nu=0.22,rho=2500", "type").label, "");
+  EXPECT_EQ(parse_labelled_material("steel_ma2023", "type").label, "steel_ma2023");
+  ExportSpec spec;
+  spec.types = {{glass.material, 0.002, glass.label}};
+  spec.wall = parse_labelled_material("copper=E=120e9,nu=0.34,rho=8900,sy=200e6", "wall").material;
+  spec.wall_label = "copper";
+  spec.model = "corlab2026";
+  spec.v_min = 0.5;
+  spec.v_max = 4.0;
+  try {  // glass-glass: no yield stress, no model e(v): the pair and the ways out, one line
+    calibrate_pairs(spec);
+    FAIL();
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("pair 1-1 (glass-glass)"), std::string::npos) << what;
+    EXPECT_NE(what.find("--pair glass/glass=E"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos);
+  }
+  spec.pair_restitution = {parse_pair_restitution("glass/glass=1")};
+  const auto pairs = calibrate_pairs(spec);
+  ASSERT_EQ(pairs.size(), 2u);
+  EXPECT_EQ(pairs[0].constant.value_or(0.0), 1.0);
+  EXPECT_EQ(pairs[1].label, "glass-copper");
+  EXPECT_NE(pairs[1].target.find("corlab2026 (glass on copper)"), std::string::npos);
+  EXPECT_NE(write_lammps(spec, pairs).find("pair_coeff 1 1 hertz 4.413619168e+10 0.0 "),
+            std::string::npos);  // e = 1: no damping
+  EXPECT_NE(write_yade(spec, pairs).find("label='glass'"), std::string::npos);
+  EXPECT_THROW(parse_pair_restitution("glass/glass=1.5"), InputError);
+  EXPECT_THROW(parse_pair_restitution("glass=0.5"), InputError);
+  spec.pair_restitution = {parse_pair_restitution("glass/lead=0.5")};
+  EXPECT_THROW(calibrate_pairs(spec), InputError);
+}
+
+TEST(DemExport, YadeEnMappingAsMeasured) {
+  EXPECT_EQ(yade_delivered_e(0.5), 0.5);
+  EXPECT_EQ(yade_delivered_e(1.0), 1.0);
+  EXPECT_NEAR(yade_delivered_e(0.99), 0.97895, 1e-12);
+  EXPECT_NEAR(yade_delivered_e(0.985), 0.5 * (0.97237 + 0.97895), 1e-12);
 }
 
 TEST(DemExport, BadSpecsNameTheField) {
@@ -79,7 +153,8 @@ TEST(DemExport, BadSpecsNameTheField) {
     calibrate_pairs(spec);
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("material pair"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("pair 2-2 (alumina_ma2023-alumina_ma2023)"),
+              std::string::npos);
   }
 }
 

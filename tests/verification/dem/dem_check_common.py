@@ -1,11 +1,34 @@
-"""Shared helpers of the DEM real-code checks (dem_lammps_check.py, dem_liggghts_check.py)."""
+"""Shared helpers of the DEM real-code checks (dem_{lammps,liggghts,yade}_check.py) and of
+scripts/dem_time_step.py: exports, one-sphere drop tests (a sphere on the wall, two equal
+spheres head-on, an oblique frictionless impact) in Debian's codes, and the cases checked."""
 import json
+import math
 import os
 import subprocess
 
-STEPS_PER_CONTACT = 4000
-FE_TABLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "dem",
-                        "fe_alumina_aluminium.csv")
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "dem")
+FE_TABLE = os.path.join(DATA, "fe_alumina_aluminium.csv")
+GLASS = "glass=E=63e9,nu=0.22,rho=2500"
+COPPER = "copper=E=120e9,nu=0.34,rho=8900,sy=200e6"
+
+# The three pairs of issue 30, each with its e(v) range:
+#   glass on copper, corlab2026 (and the elastic glass-glass pair, e = 1 by --pair);
+#   alumina on aluminium alloy, thornton1997 (and corlab's FE e(v) of it);
+#   aluminium spheres head-on, thornton1997 (a plastic particle-particle pair).
+EV_CASES = (
+    ("glass_copper", ["--type", GLASS + ":0.002", "--wall", COPPER, "--model", "corlab2026",
+                      "--pair", "glass/glass=1", "--v-min", "0.5", "--v-max", "4"],
+     (("1-wall", "wall"), ("1-1", "pair"))),
+    ("alumina_aluminium", ["--type", "alumina_ma2023:0.005", "--wall", "aluminium_ma2023",
+                           "--wall-only", "--model", "thornton1997", "--v-min", "0.3",
+                           "--v-max", "3"], (("1-wall", "wall"),)),
+    ("alumina_fe_table", ["--type", "alumina_ma2023:0.005", "--wall", "aluminium_ma2023",
+                          "--wall-only", "--table", FE_TABLE, "--v-min", "0.3", "--v-max", "3"],
+     (("1-wall", "wall"),)),
+    ("aluminium_spheres", ["--type", "aluminium_ma2023:0.005", "--model", "thornton1997",
+                           "--v-min", "0.3", "--v-max", "3"], (("1-1", "pair"),)),
+)
+CONSTANT_TARGETS = (0.3, 0.9)
 
 
 def run(cmd, **kw):
@@ -33,56 +56,90 @@ def parse_e(out):
     raise RuntimeError("no CORLAB_E in the code's output:\n" + out[-2000:])
 
 
-def check_cases(simulate, corlab, work, fit_key, radius=0.005, exact=False):
-    """Runs the constant-e and e(v) cases; `simulate(out, pair, density, v, geometry)` returns the
-    code's measured e. exact=True: the code's e(v) route is exact (YADE hook), so e must be within
-    1 % of the target itself. Returns (report rows, number of failures)."""
-    import math
-    rows, failures = [], 0
-    volume = 4.0 / 3.0 * math.pi * radius ** 3
-    for target in (0.3, 0.5, 0.7, 0.9):
+class Drop:
+    """One drop test: the sphere (radius [m], density [kg/m^3]) of the pair's first type at
+    normal speed v [m/s] (tangential vt [m/s], frictionless) on the wall or on its twin; dt [s]
+    the step (None: the fragment's own)."""
+
+    def __init__(self, pair, geometry, v, dt, vt=0.0):
+        self.pair, self.geometry, self.v, self.dt, self.vt = pair, geometry, v, dt, vt
+        self.radius = pair["effective_radius_m"] * (1 if geometry == "wall" else 2)
+        volume = 4.0 / 3.0 * math.pi * self.radius ** 3
+        self.density = pair["effective_mass_kg"] * (1 if geometry == "wall" else 2) / volume
+        tc = contact_time(pair, v)
+        self.gap = 20 * v * dt
+        self.steps = int((self.gap / v + 2.0 * tc) / dt)
+
+
+def law_e(pair, key, i):
+    """e [-] of the law that fragment `key` runs for the pair, at its i-th fit speed (ODE)."""
+    route = pair["delivered"][key]["route"]
+    if pair["delivered"][key]["law_e"]:
+        return pair["delivered"][key]["law_e"][i]
+    if "viscoelastic" in route:
+        return pair["viscoelastic_damping_N_s_per_m1.5"]["fitted"][i]
+    if "thornton_ning" in route:
+        return pair["liggghts_as_written"]["fitted"][i]
+    if "closest constant" in route:
+        return pair["best_constant_e"]["parameter"]
+    return pair["best_constant_e"]["target"][i]
+
+
+def case_rows(corlab, work, code, simulate, fragments, time_step_key, steps_per_contact=None):
+    """Runs every case through `simulate(out, fragment, drop)` (returns e) for each fragment
+    (file name, key of "delivered" in dem_export.json), at the export's recommended step (or,
+    given steps_per_contact, at the shortest contact time at v_max over it); checks |e - e_law|
+    <= the time-step error and |e - target| <= the stated max |de| of that fragment + the
+    time-step error. Returns (report rows, failures, worst |e - e_law| per law)."""
+    rows, failures, worst = [], 0, {}
+
+    def step(data, key):
+        if steps_per_contact is None:
+            return data["time_step_s"][time_step_key(key)]
+        return min(p["contact_time_at_v_max_s"] for p in data["pairs"]) / steps_per_contact
+
+    def check(label, e, target, law, stated, promise, law_name):
+        nonlocal failures
+        worst[law_name] = max(worst.get(law_name, 0.0), abs(e - law))
+        ok = abs(e - law) <= promise and abs(e - target) <= stated + promise
+        failures += not ok
+        rows.append("%-52s e=%.6f law=%.6f target=%.6f |e-law|=%.1e (<= %.0e) |e-target|=%.2e "
+                    "(<= stated %.2e + %.0e) %s" % (label, e, law, target, abs(e - law), promise,
+                                                    abs(e - target), stated, promise,
+                                                    "ok" if ok else "FAIL"))
+
+    for target in CONSTANT_TARGETS:
         out = os.path.join(work, "const_%g" % target)
-        data = export(corlab, out, ["--type", "steel_ma2023:%g" % radius, "--wall", "steel_ma2023",
+        data = export(corlab, out, ["--type", "steel_ma2023:0.005", "--wall", "steel_ma2023",
                                     "--restitution", str(target)])
         pairs = {p["pair"]: p for p in data["pairs"]}
-        rho = pairs["1-wall"]["effective_mass_kg"] / volume
-        for geometry, key in (("wall", "1-wall"), ("pair", "1-1")):
-            for v in (0.1, 1.0, 10.0):
-                e = simulate(out, pairs[key], rho, v, geometry)
-                err = abs(e - target) / target
-                ok = err <= 0.01
-                failures += not ok
-                rows.append("constant  %-5s e=%.2f v=%6.2f m/s  measured e=%.5f  rel.err=%.2e %s"
-                            % (geometry, target, v, e, err, "ok" if ok else "FAIL"))
-    # e(v) of the paper pair alumina on aluminium alloy: thornton1997 (wall; and aluminium spheres
-    # head-on) and corlab's own FE e(v) (tests/data/dem/fe_alumina_aluminium.csv, sphere on wall).
-    wall = ["--type", "alumina_ma2023:%g" % radius, "--wall", "aluminium_ma2023", "--wall-only"]
-    cases = (("thornton1997", "wall", wall + ["--model", "thornton1997"], "1-wall"),
-             ("thornton1997", "pair",
-              ["--type", "aluminium_ma2023:%g" % radius, "--model", "thornton1997"], "1-1"),
-             ("FE table", "wall", wall + ["--table", FE_TABLE], "1-wall"))
-    for source, geometry, args, key in cases:
-        out = os.path.join(work, "ev_%s_%s" % (source.split()[0], geometry))
-        data = export(corlab, out, args + ["--v-min", "0.3", "--v-max", "3"])
-        pair = {p["pair"]: p for p in data["pairs"]}[key]
-        fit = pair[fit_key]
-        rho = pair["effective_mass_kg"] * (1 if geometry == "wall" else 2) / volume
-        for i in (0, len(fit["velocities"]) // 2, len(fit["velocities"]) - 1):
-            v, law_e, target = fit["velocities"][i], fit["fitted"][i], fit["target"][i]
-            e = simulate(out, pair, rho, v, geometry)
-            if exact:
-                law_e = target
-            err_law = abs(e - law_e) / law_e
-            tolerance = (0.0 if exact else fit["max_abs_error"]) + 0.01 * target
-            ok = err_law <= 0.01 and abs(e - target) <= tolerance
-            failures += not ok
-            rows.append("e(v)      %-5s v=%6.3f m/s  target(%s)=%.5f  fitted law=%.5f  "
-                        "measured e=%.5f  "
-                        "rel.err vs law=%.2e  |e-target|=%.3f (stated fit error %.3f) %s"
-                        % (geometry, v, source, target, law_e, e, err_law, abs(e - target),
-                           0.0 if exact else fit["max_abs_error"],
-                           "ok" if ok else "FAIL"))
-    return rows, failures
+        for fragment, key in fragments[:1]:
+            dt = step(data, key)
+            for geometry, pair_key in (("wall", "1-wall"), ("pair", "1-1")):
+                for v in (0.1, 10.0):
+                    pair = pairs[pair_key]
+                    e = simulate(out, fragment, Drop(pair, geometry, v, dt))
+                    check("%s e=%.1f %s v=%g" % (fragment, target, geometry, v), e, target,
+                          law_e(pair, key, 0), pair["delivered"][key]["max_abs_error"],
+                          data["time_step_error"], pair["delivered"][key]["law"])
+    for name, args, checked in EV_CASES:
+        out = os.path.join(work, name)
+        data = export(corlab, out, args)
+        pairs = {p["pair"]: p for p in data["pairs"]}
+        for fragment, key in fragments:
+            dt = step(data, key)
+            for pair_key, geometry in checked:
+                pair = pairs[pair_key]
+                fit = pair["best_constant_e"]
+                last = len(fit["velocities"]) - 1
+                picks = (0, last // 2, last)
+                for i in picks:
+                    v, target = fit["velocities"][i], fit["target"][i]
+                    e = simulate(out, fragment, Drop(pair, geometry, v, dt))
+                    check("%s %s %s v=%.3g" % (fragment, name, pair["label"], v), e, target,
+                          law_e(pair, key, i), pair["delivered"][key]["max_abs_error"],
+                          data["time_step_error"], pair["delivered"][key]["law"])
+    return rows, failures, worst
 
 
 def finish(name, rows, failures, report):

@@ -1,65 +1,63 @@
 #!/usr/bin/env python3
 """Real-code check of `corlab dem` exports in LAMMPS (Debian's `lmp`, never mocked).
 
-For each case `corlab dem` writes the LAMMPS fragment; this script wraps it in a minimal input
-(one sphere hitting the fix wall/gran plane z = 0, or two equal spheres head-on), runs `lmp`,
-and measures e = rebound speed / impact speed from LAMMPS's own output (no gravity, so the
-measured e is the contact's alone).
-  constant e in {0.3, 0.5, 0.7, 0.9} at 0.1, 1, 10 m/s: |e_lammps - e| <= 1 % of e.
-  e(v) of thornton1997 (alumina on aluminium wall; aluminium spheres) at 3 speeds spanning a
-  decade: e_lammps within 1 % of the fitted viscoelastic law's e (ODE) and so within the fit's
-  stated error (max |de| in dem_export.json) + 1 % of the target.
+Each case's export is wrapped in a minimal input (one sphere hitting the fix wall/gran plane
+z = 0, or two equal spheres head-on; no gravity, so e is the contact's alone) and run at the
+export's recommended time step, both lammps.in (e(v) through the python/invoke hook) and
+lammps_nopython.in: e must be within the time-step error (1e-3) of the law the fragment runs, and
+within the fragment's stated max |de| + 1e-3 of the target. Cases: dem_check_common.py.
 usage: dem_lammps_check.py CORLAB_BIN LMP_BIN WORK_DIR [--report FILE]
 """
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dem_check_common import (  # noqa: E402
-    STEPS_PER_CONTACT, check_cases, contact_time, finish, parse_e, run)
+from dem_check_common import case_rows, finish, parse_e, run  # noqa: E402
 
 
-def lammps_input(fragment, pair, radius, density, v, geometry):
-    tc = contact_time(pair, v)
-    dt = tc / STEPS_PER_CONTACT
-    gap = 20 * v * dt
-    steps = int((gap / v + 1.6 * tc) / dt)
+def lammps_input(fragment, drop):
+    r, v, dt = drop.radius, drop.v, drop.dt
     lines = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
-             "comm_modify vel yes", "neighbor %g bin" % (0.2 * radius),
-             "region box block -%g %g -%g %g -%g %g" % ((8 * radius,) * 6), "create_box 1 box"]
-    if geometry == "wall":
-        lines += ["create_atoms 1 single 0 0 %.12g" % (radius + gap)]
+             "comm_modify vel yes", "region box block -%g %g -%g %g -%g %g" % ((8 * r,) * 6),
+             "create_box 1 box"]
+    if drop.geometry == "wall":
+        lines += ["create_atoms 1 single 0 0 %.12g" % (r + drop.gap)]
     else:
-        lines += ["create_atoms 1 single %.12g 0 %.12g" % (-(radius + gap / 2), 4 * radius),
-                  "create_atoms 1 single %.12g 0 %.12g" % (radius + gap / 2, 4 * radius)]
-    lines += ["set atom * diameter %.12g density %.12g" % (2 * radius, density)]
-    if geometry == "wall":
-        lines += ["velocity all set 0 0 %.12g" % (-v)]
+        lines += ["create_atoms 1 single %.12g 0 %.12g" % (-(r + drop.gap / 2), 4 * r),
+                  "create_atoms 1 single %.12g 0 %.12g" % (r + drop.gap / 2, 4 * r)]
+    lines += ["set atom * diameter %.12g density %.12g" % (2 * r, drop.density)]
+    if drop.geometry == "wall":
+        lines += ["velocity all set %.12g 0 %.12g" % (drop.vt, -v)]
     else:
         lines += ["set atom 1 vx %.12g" % (v / 2), "set atom 2 vx %.12g" % (-v / 2)]
     lines += ["include %s" % fragment]
-    if geometry == "pair" and "corlab_wall1" in open(fragment).read():
+    if drop.geometry == "pair" and "corlab_wall1" in open(fragment).read():
         lines += ["unfix corlab_wall1"]
-    lines += ["fix corlab_nve all nve/sphere", "timestep %.12g" % dt, "thermo 0", "run %d" % steps]
-    if geometry == "wall":
+    lines += ["fix corlab_nve all nve/sphere", "timestep %.12g" % dt, "thermo 0",
+              "run %d" % drop.steps]
+    if drop.geometry == "wall":
         lines += ["variable e equal vz[1]/%.17g" % v]
     else:
         lines += ["variable e equal (vx[2]-vx[1])/%.17g" % v]
     return "\n".join(lines + ['print "CORLAB_E ${e}"']) + "\n"
 
 
+def simulator(lmp):
+    def simulate(out, fragment, drop):
+        path = os.path.join(out, "in.%s_%s_%g_%g" % (fragment, drop.geometry, drop.v, drop.dt))
+        with open(path, "w") as f:
+            f.write(lammps_input(os.path.join(out, fragment), drop))
+        return parse_e(run([lmp, "-in", path, "-log", "none", "-echo", "none"]).stdout)
+    return simulate
+
+
 def main():
     corlab, lmp, work = sys.argv[1:4]
     report = sys.argv[sys.argv.index("--report") + 1] if "--report" in sys.argv else None
     os.makedirs(work, exist_ok=True)
-
-    def simulate(out, pair, density, v, geometry):
-        path = os.path.join(out, "in.%s_%g" % (geometry, v))
-        with open(path, "w") as f:
-            f.write(lammps_input(os.path.join(out, "lammps.in"), pair, 0.005, density, v, geometry))
-        return parse_e(run([lmp, "-in", path, "-log", "none", "-echo", "none"]).stdout)
-
-    rows, failures = check_cases(simulate, corlab, work, "viscoelastic_damping_N_s_per_m1.5")
+    fragments = (("lammps.in", "lammps"), ("lammps_nopython.in", "lammps_nopython"))
+    rows, failures, _ = case_rows(corlab, work, "lammps", simulator(lmp), fragments,
+                                  lambda key: key)
     return finish("dem_lammps_check", rows, failures, report)
 
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """Real-code check of `corlab dem` exports in YADE 2023.02a (Debian's `yade`, never mocked).
 
-Constant e: Hertz-Mindlin with en (exact for Hertz) within 1 %. e(v) of thornton1997 through
-the fragment's per-contact hook (a PyRunner setting the Ip2 functor's en from each new contact's
-approach speed): within 1 % of the target e(v) itself at 3 speeds spanning a decade.
+Same cases and bounds as dem_lammps_check.py (dem_check_common.py), with yade_fragment.py at its
+recommended step (O.dt): Hertz-Mindlin with en per material pair, e(v) through the fragment's
+hook (a PyRunner setting en from each forming contact's normal approach speed); plus one
+oblique frictionless impact (glass on copper, v_n = 2, v_t = 1.5 m/s) whose normal e must be
+e(v_n), not e(|v|).
 usage: dem_yade_check.py CORLAB_BIN YADE_BIN WORK_DIR [--report FILE]
 """
 import os
@@ -11,28 +13,25 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from dem_check_common import (  # noqa: E402
-    STEPS_PER_CONTACT, check_cases, contact_time, finish, parse_e, run)
+    EV_CASES, Drop, case_rows, export, finish, parse_e, run)
 
 
-def yade_script(fragment, pair, radius, v, geometry):
-    tc = contact_time(pair, v)
-    dt = tc / STEPS_PER_CONTACT
-    gap = 20 * v * dt
-    steps = int((gap / v + 1.6 * tc) / dt)
+def yade_script(fragment, drop):
+    r, v = drop.radius, drop.v
     hook = "corlab_set_en" in open(fragment).read()
-    lines = ["exec(open(%r).read())" % fragment, "R = %.17g" % radius]
-    if geometry == "wall":
+    lines = ["exec(open(%r).read())" % fragment, "R = %.17g" % r]
+    if drop.geometry == "wall":
         lines += ["O.bodies.append(box((0, 0, -R), (8 * R, 8 * R, R), fixed=True, "
                   "material=corlab_wall_mat))",
                   "a = O.bodies.append(sphere((0, 0, R + %.17g), R, material=corlab_mat1))"
-                  % gap,
-                  "O.bodies[a].state.vel = Vector3(0, 0, %.17g)" % (-v)]
+                  % drop.gap,
+                  "O.bodies[a].state.vel = Vector3(%.17g, 0, %.17g)" % (drop.vt, -v)]
         measure = "O.bodies[a].state.vel[2] / %.17g" % v
     else:
         lines += ["a = O.bodies.append(sphere((%.17g, 0, 0), R, material=corlab_mat1))"
-                  % (-(radius + gap / 2)),
+                  % (-(r + drop.gap / 2)),
                   "b = O.bodies.append(sphere((%.17g, 0, 0), R, material=corlab_mat1))"
-                  % (radius + gap / 2),
+                  % (r + drop.gap / 2),
                   "O.bodies[a].state.vel = Vector3(%.17g, 0, 0)" % (v / 2),
                   "O.bodies[b].state.vel = Vector3(%.17g, 0, 0)" % (-v / 2)]
         measure = "(O.bodies[b].state.vel[0] - O.bodies[a].state.vel[0]) / %.17g" % v
@@ -44,24 +43,49 @@ def yade_script(fragment, pair, radius, v, geometry):
               "[corlab_ip2],",
               "                    [Law2_ScGeom_MindlinPhys_Mindlin()]),",
               "    NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]",
-              "O.dt = %.17g" % dt, "O.run(%d, True)" % steps, "print('CORLAB_E', %s)" % measure]
+              "O.dt = %.17g" % drop.dt, "O.run(%d, True)" % drop.steps,
+              "print('CORLAB_E', %s)" % measure]
     return "\n".join(lines) + "\n"
+
+
+def simulator(yade):
+    def simulate(out, fragment, drop):
+        path = os.path.join(out, "yade_%s_%g_%g_%g.py" % (drop.geometry, drop.v, drop.vt, drop.dt))
+        with open(path, "w") as f:
+            f.write(yade_script(os.path.join(out, fragment), drop))
+        return parse_e(run([yade, "-n", "-x", path], cwd=out).stdout)
+    return simulate
+
+
+def oblique(corlab, work, simulate):
+    """Glass on copper, frictionless, v_n = 2 and v_t = 1.5 m/s: e must be e(v_n)."""
+    name, args, _ = EV_CASES[0]
+    out = os.path.join(work, name + "_oblique")
+    data = export(corlab, out, args)
+    pair = {p["pair"]: p for p in data["pairs"]}["1-wall"]
+    e_n = [row["e"] for row in pair["table"]]
+    v_tab = [row["v"] for row in pair["table"]]
+    import numpy
+    target = float(numpy.interp(2.0, v_tab, e_n))
+    full = float(numpy.interp(2.5, v_tab, e_n))
+    e = simulate(out, "yade_fragment.py", Drop(pair, "wall", 2.0, data["time_step_s"]["yade"],
+                                               vt=1.5))
+    bound = pair["delivered"]["yade"]["max_abs_error"] + data["time_step_error"]
+    ok = abs(e - target) <= bound
+    return ("oblique glass-copper v_n=2 v_t=1.5: e=%.6f e(v_n)=%.6f (e(|v|)=%.6f) |de|=%.1e "
+            "(<= %.1e) %s" % (e, target, full, abs(e - target), bound, "ok" if ok else "FAIL"),
+            not ok)
 
 
 def main():
     corlab, yade, work = sys.argv[1:4]
     report = sys.argv[sys.argv.index("--report") + 1] if "--report" in sys.argv else None
     os.makedirs(work, exist_ok=True)
-
-    def simulate(out, pair, density, v, geometry):
-        path = os.path.join(out, "yade_%s_%g.py" % (geometry, v))
-        with open(path, "w") as f:
-            f.write(yade_script(os.path.join(out, "yade_fragment.py"), pair, 0.005, v, geometry))
-        return parse_e(run([yade, "-n", "-x", path], cwd=out).stdout)
-
-    rows, failures = check_cases(simulate, corlab, work, "viscoelastic_damping_N_s_per_m1.5",
-                                 exact=True)
-    return finish("dem_yade_check", rows, failures, report)
+    simulate = simulator(yade)
+    rows, failures, _ = case_rows(corlab, work, "yade", simulate, (("yade_fragment.py", "yade"),),
+                                  lambda key: key)
+    row, failed = oblique(corlab, work, simulate)
+    return finish("dem_yade_check", rows + [row], failures + failed, report)
 
 
 if __name__ == "__main__":

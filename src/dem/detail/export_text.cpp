@@ -1,0 +1,92 @@
+#include "dem/detail/export_text.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "corlab/version.hpp"
+
+namespace corlab::dem::detail {
+
+std::string export_header(const ExportSpec& spec, std::string_view code) {
+  std::string out =
+      fmt::format("# corlab {} dem export for {} (SI units). Particle types:\n", kVersion, code);
+  for (std::size_t i = 0; i < spec.types.size(); ++i) {
+    const auto id = static_cast<int>(i) + 1;
+    out += fmt::format("#   type {} = {}: {}, radius {:.6g} m\n", id, type_label(spec, id),
+                       spec.types[i].material.name, spec.types[i].radius);
+  }
+  if (spec.wall) {
+    out += fmt::format("#   wall = {}: {} (rigid, flat)\n", wall_label(spec), spec.wall->name);
+  }
+  return out;
+}
+
+std::string fit_comment(const CurveFit& fit) {
+  return fmt::format("fit over {:.4g}..{:.4g} m/s ({} speeds): rms {:.2e}, max |de| {:.2e}",
+                     fit.velocities.front(), fit.velocities.back(), fit.velocities.size(),
+                     fit.rms_error, fit.max_abs_error);
+}
+
+std::vector<double> table_speeds(const ExportSpec& spec, int points) {
+  std::vector<double> v(static_cast<std::size_t>(points));
+  for (int i = 0; i < points; ++i) {
+    v[static_cast<std::size_t>(i)] = spec.v_min + (spec.v_max - spec.v_min) * i / (points - 1);
+  }
+  return v;
+}
+
+double recommended_step(const std::vector<PairCalibration>& pairs,
+                        const std::function<CodeLaw(const PairCalibration&)>& law_of) {
+  double dt = std::numeric_limits<double>::infinity();
+  for (const auto& p : pairs) {
+    dt = std::min(dt, p.contact_time_fast / step_rule(law_of(p)).steps_per_contact);
+  }
+  return dt;
+}
+
+std::string time_step_comment(const ExportSpec& spec,
+                              const std::vector<PairCalibration>& pairs,
+                              const std::function<CodeLaw(const PairCalibration&)>& law_of,
+                              std::string_view comment) {
+  std::string out = fmt::format(
+      "{0} Time step. Hertz contact time of each pair at v_max = {1:.4g} m/s and v_min = {2:.4g} "
+      "m/s:\n",
+      comment, spec.v_max, spec.v_min);
+  for (const auto& p : pairs) {
+    const StepRule& rule = step_rule(law_of(p));
+    out += fmt::format("{}   {}: {:.3e} s / {:.3e} s; {}: contact time / {}\n", comment, p.name(),
+                       p.contact_time_fast, p.contact_time_slow, rule.name, rule.steps_per_contact);
+  }
+  out += fmt::format(
+      "{0} Recommended step {1:.3e} s (the shortest of those): at it this code's e stays within "
+      "{2:.0e}\n{0} of its law's (measured in drop tests, scripts/dem_time_step.py); a larger step "
+      "delivers another e.\n",
+      comment, recommended_step(pairs, law_of), kTimeStepError);
+  return out;
+}
+
+}  // namespace corlab::dem::detail
+
+#include <cmath>
+
+#include "corlab/dem/hysteresis_chi.hpp"
+
+namespace corlab::dem::detail {
+
+double hook_table_error(const ExportSpec& spec, const PairCalibration& pair, bool chi_table) {
+  const auto v = table_speeds(spec, kHookTableRows);
+  double worst = 0.0;
+  for (std::size_t k = 0; k + 1 < v.size(); ++k) {
+    const double mid = 0.5 * (v[k] + v[k + 1]);
+    const double e0 = pair.curve(v[k]);
+    const double e1 = pair.curve(v[k + 1]);
+    const double e =
+        chi_table ? exact_restitution(0.5 * (exact_chi(e0) + exact_chi(e1))) : 0.5 * (e0 + e1);
+    worst = std::max(worst, std::abs(e - pair.curve(mid)));
+  }
+  return worst;
+}
+
+}  // namespace corlab::dem::detail

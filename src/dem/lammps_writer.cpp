@@ -1,0 +1,278 @@
+// The LAMMPS fragment of a DEM export (pair_style granular, fix wall/gran, the e(v) hook).
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "corlab/dem/dem_export.hpp"
+#include "corlab/dem/hysteresis_chi.hpp"
+#include "corlab/dem/lammps_mapping.hpp"
+#include "dem/detail/export_text.hpp"
+
+namespace corlab::dem {
+namespace {
+
+enum class Route { tsuji, hook, viscoelastic, constant_fallback };
+
+Route route_of(const PairCalibration& p, bool python_hook) {
+  if (p.constant) return Route::tsuji;
+  if (python_hook) return Route::hook;
+  return p.viscoelastic->max_abs_error < p.best_constant->max_abs_error ? Route::viscoelastic
+                                                                        : Route::constant_fallback;
+}
+
+CodeLaw law_of(Route r) {
+  switch (r) {
+    case Route::hook:
+      return CodeLaw::lammps_hook;
+    case Route::viscoelastic:
+      return CodeLaw::lammps_viscoelastic;
+    default:
+      return CodeLaw::lammps_tsuji;
+  }
+}
+
+// "hertz KN DAMP tangential ... damping MODEL" of one pair (pair_coeff and fix wall/gran).
+std::string normal_model(const PairCalibration& p, Route r) {
+  const double kn = 4.0 / 3.0 * p.effective_modulus;
+  std::string damping;
+  const double e = r == Route::tsuji ? p.constant.value_or(1.0) : p.best_constant->parameter;
+  if (r == Route::hook || (r != Route::viscoelastic && e >= 1.0)) {
+    damping = "0.0 tangential linear_nohistory 0.0 0.0 damping velocity";  // elastic Hertz
+  } else if (r == Route::viscoelastic) {
+    damping = fmt::format("{:.10g} tangential linear_nohistory 0.0 0.0 damping viscoelastic",
+                          p.lammps_viscoelastic_eta());
+  } else {
+    const double e_in = r == Route::tsuji ? p.lammps_tsuji_input : lammps_tsuji_input(e);
+    damping = fmt::format("{:.10g} tangential linear_nohistory 0.0 0.0 damping tsuji", e_in);
+  }
+  return fmt::format("hertz {:.10g} {}", kn, damping);
+}
+
+std::string route_comment(const ExportSpec& spec, const PairCalibration& p, Route r) {
+  switch (r) {
+    case Route::tsuji:
+      return fmt::format("# {}: {}; damping tsuji, exact (e_in pre-compensated)\n", p.name(),
+                         p.target);
+    case Route::hook:
+      return fmt::format(
+          "# {}: {}; elastic Hertz + the hook's damping with chi(e(v_in)): max |de| {:.1e} "
+          "(table interpolation)\n",
+          p.name(), p.target, detail::hook_table_error(spec, p, true));
+    case Route::viscoelastic:
+      return fmt::format("# {}: {}; damping viscoelastic, {}\n", p.name(), p.target,
+                         detail::fit_comment(*p.viscoelastic));
+    default:
+      return fmt::format("# {}: {}; constant e = {:.6g} (damping tsuji): {}\n", p.name(), p.target,
+                         p.best_constant->parameter, detail::fit_comment(*p.best_constant));
+  }
+}
+
+// The hook's functions (Python, inside LAMMPS's `python ... here """..."""`): per-contact memory of
+// v_in, the damping, and the post_force callback over wall contacts and particle pairs.
+constexpr std::string_view kHookFunctions =
+    R"(corlab_memory = {"wall": (np.zeros(0, np.int64), np.zeros(0)),
+                 "pair": (np.zeros(0, np.int64), np.zeros(0))}
+
+def corlab_v_in(name, keys, rate):
+    # Approach speed at first touch: kept from the last step for contacts that go on.
+    old_keys, old_v = corlab_memory[name]
+    v_in = rate.copy()
+    if old_keys.size and keys.size:
+        k = np.minimum(np.searchsorted(old_keys, keys), old_keys.size - 1)
+        found = old_keys[k] == keys
+        v_in[found] = old_v[k[found]]
+    order = np.argsort(keys)
+    corlab_memory[name] = (keys[order], v_in[order])
+    return v_in
+
+def corlab_damping(rows, v_in, rate, estar, radius, overlap):
+    # Hysteresis damping K delta^1.5 chi rate / v_in, K = 4/3 E* sqrt(R*), chi of e(v_in).
+    chi = np.zeros(rows.size)
+    for r in np.unique(rows):
+        m = rows == r
+        chi[m] = np.interp(v_in[m], corlab_v, corlab_chi[r])
+    k = 4.0 / 3.0 * estar * np.sqrt(radius)
+    return np.where(v_in > 0, k * overlap ** 1.5 * chi * rate / np.maximum(v_in, 1e-300), 0.0)
+
+def corlab_ev_force(lmpptr, vflag):
+    lmp = lammps(ptr=lmpptr)
+    nlocal = lmp.extract_global("nlocal")
+    nall = nlocal + lmp.extract_global("nghost")
+    x = lmp.numpy.extract_atom("x", nelem=nall)
+    v = lmp.numpy.extract_atom("v", nelem=nall)
+    r = lmp.numpy.extract_atom("radius", nelem=nall)
+    t = lmp.numpy.extract_atom("type", nelem=nall)
+    tag = lmp.numpy.extract_atom("id", nelem=nall).astype(np.int64)
+    f = lmp.numpy.extract_atom("f", nelem=nlocal)
+    overlap = r[:nlocal] - (x[:nlocal, 2] - corlab_wall_z)
+    i = np.nonzero((overlap > 0) & (corlab_row[t[:nlocal], 0] >= 0))[0]
+    rate = -v[i, 2]
+    v_in = corlab_v_in("wall", tag[i], rate)
+    f[i, 2] += corlab_damping(corlab_row[t[i], 0], v_in, rate, corlab_estar[t[i], 0], r[i],
+                              overlap[i])
+    if nall < 2 or corlab_row[1:, 1:].max() < 0:
+        return
+    pairs = cKDTree(x[:nall]).query_pairs(2.0 * r[:nall].max(), output_type="ndarray")
+    if pairs.size == 0:
+        corlab_v_in("pair", np.zeros(0, np.int64), np.zeros(0))
+        return
+    i, j = pairs[:, 0], pairs[:, 1]
+    d = x[j] - x[i]
+    dist = np.sqrt((d * d).sum(axis=1))
+    overlap = r[i] + r[j] - dist
+    m = (overlap > 0) & (corlab_row[t[i], t[j]] >= 0) & ((i < nlocal) | (j < nlocal))
+    i, j, d, dist, overlap = i[m], j[m], d[m], dist[m], overlap[m]
+    n = d / dist[:, None]
+    rate = ((v[i] - v[j]) * n).sum(axis=1)
+    keys = np.minimum(tag[i], tag[j]) * 2 ** 31 + np.maximum(tag[i], tag[j])
+    v_in = corlab_v_in("pair", keys, rate)
+    force = corlab_damping(corlab_row[t[i], t[j]], v_in, rate, corlab_estar[t[i], t[j]],
+                           r[i] * r[j] / (r[i] + r[j]), overlap)[:, None] * n
+    li, lj = i < nlocal, j < nlocal
+    np.add.at(f, i[li], -force[li])
+    np.add.at(f, j[lj], force[lj])
+)";
+
+// The Python of the hook (LAMMPS `python ... here`): tables, then the post_force function.
+std::string hook_python(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
+  const std::size_t n = spec.types.size();
+  std::vector<std::vector<int>> row(n + 1, std::vector<int>(n + 1, -1));
+  std::vector<std::vector<double>> estar(n + 1, std::vector<double>(n + 1, 0.0));
+  std::string chi;
+  int rows = 0;
+  for (const auto& p : pairs) {
+    if (p.constant) continue;
+    const auto i = static_cast<std::size_t>(p.type_i);
+    const auto j = static_cast<std::size_t>(p.type_j);
+    row[i][j] = row[j][i] = rows++;
+    estar[i][j] = estar[j][i] = p.effective_modulus;
+    std::vector<std::string> c;
+    for (const double v : detail::table_speeds(spec, detail::kHookTableRows)) {
+      c.push_back(fmt::format("{:.8g}", exact_chi(std::min(p.curve(v), 1.0))));
+    }
+    chi += fmt::format("    [{}],  # {}\n", fmt::join(c, ", "), p.name());
+  }
+  std::string out = "python corlab_ev_force here \"\"\"\n";
+  out += "import numpy as np\nfrom lammps import lammps\nfrom scipy.spatial import cKDTree\n";
+  out +=
+      "# row of each type pair [type i][type j] in corlab_chi, -1: not the hook's; j = 0: wall\n";
+  out += "corlab_row = np.array([";
+  for (const auto& r : row) out += fmt::format("[{}], ", fmt::join(r, ", "));
+  out += "])\ncorlab_estar = np.array([";  // E* [Pa] of each type pair
+  for (const auto& r : estar) out += fmt::format("[{}], ", fmt::join(r, ", "));
+  std::vector<std::string> vs;
+  for (const double v : detail::table_speeds(spec, detail::kHookTableRows)) {
+    vs.push_back(fmt::format("{:.8g}", v));
+  }
+  out += fmt::format("])\ncorlab_v = np.array([{}])  # m/s\ncorlab_chi = np.array([\n{}])\n",
+                     fmt::join(vs, ", "), chi);
+  out += "corlab_wall_z = 0.0  # the plane of the fix wall/gran walls below (edit both)\n";
+  out += kHookFunctions;
+  out += "\"\"\"\nfix corlab_ev all python/invoke 1 post_force corlab_ev_force\n";
+  return out;
+}
+
+}  // namespace
+
+Delivery lammps_delivery(const ExportSpec& spec, const PairCalibration& pair, bool python_hook) {
+  const Route r = route_of(pair, python_hook);
+  switch (r) {
+    case Route::tsuji:
+      return {law_of(r), "damping tsuji (pre-compensated)", 0.0, {}};
+    case Route::hook:
+      return {law_of(r),
+              "elastic Hertz + corlab's python/invoke hook",
+              detail::hook_table_error(spec, pair, true),
+              {}};
+    case Route::viscoelastic:
+      return {law_of(r), "damping viscoelastic (fitted eta)", pair.viscoelastic->max_abs_error, {}};
+    default:
+      return {law_of(r),
+              "damping tsuji, the closest constant e",
+              pair.best_constant->max_abs_error,
+              {}};
+  }
+}
+
+double lammps_time_step(const std::vector<PairCalibration>& pairs, bool python_hook) {
+  return detail::recommended_step(
+      pairs, [python_hook](const PairCalibration& p) { return law_of(route_of(p, python_hook)); });
+}
+
+std::string write_lammps(const ExportSpec& spec,
+                         const std::vector<PairCalibration>& pairs,
+                         bool python_hook) {
+  const bool any_curve =
+      std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
+  const bool hook = python_hook && any_curve;
+  std::string out =
+      detail::export_header(spec, "LAMMPS (pair_style granular, tested with Debian 12's 7Jan2022)");
+  out +=
+      "# Needs: units si, atom_style sphere, comm_modify vel yes, fix nve/sphere; include it "
+      "after\n"
+      "# the atoms exist. Normal model `hertz` with kn = 4/3 E* [Pa]: F = kn sqrt(R* delta) delta\n"
+      "# (exact Hertz; `hertz/material` is avoided: this LAMMPS's fix wall/gran uses about\n"
+      "# E/(2(1-nu)) for the wall). Tangential: frictionless (edit as needed).\n"
+      "# Constant e: `damping tsuji` maps e_in to alpha with a polynomial that is not exact for\n"
+      "# this law (asked 0.3 it delivers 0.440), so e_in is pre-compensated: alpha(e_in) = the\n"
+      "# exact alpha(e) (corlab ODE); e = 1: no damping.\n";
+  if (hook) {
+    out +=
+        "# e(v): elastic Hertz plus a per-contact hook (fix python/invoke, post_force; needs\n"
+        "# Debian's python3-lammps and python3-scipy) adding the hysteresis damping\n"
+        "# K delta^1.5 chi delta_dot / v_in with the exact chi(e(v_in)) of each contact's normal\n"
+        "# approach speed v_in (tables below, linear in v, end values outside). Its virial is not\n"
+        "# counted (pressure); contact memory is per MPI rank (a contact that moves to another\n"
+        "# rank restarts its v_in). No Python: `corlab dem` also writes lammps_nopython.in.\n";
+  } else if (any_curve) {
+    out +=
+        "# e(v) without Python: per pair the better of `damping viscoelastic` (F_d = eta a m*\n"
+        "# delta_dot, a = sqrt(R* delta); its e falls as 1 - c v^(1/5)) with eta fitted to the\n"
+        "# target, and the constant e closest to it (misfits below). lammps.in delivers e(v)\n"
+        "# itself (fix python/invoke).\n";
+  }
+  out += "# Type pairs, the target and how this fragment delivers it:\n";
+  for (const auto& p : pairs) out += route_comment(spec, p, route_of(p, python_hook));
+  const double r_min =
+      std::min_element(spec.types.begin(), spec.types.end(), [](const auto& a, const auto& b) {
+        return a.radius < b.radius;
+      })->radius;
+  out += fmt::format(
+      "# The pair cutoff follows the radii (pair_style granular without a cutoff); skin 0.2 "
+      "r_min.\npair_style granular\nneighbor {:.6g} bin\nneigh_modify delay 0\n",
+      0.2 * r_min);
+  const auto n = static_cast<int>(spec.types.size());
+  if (spec.wall_only) {
+    out += "# --wall-only: particle-particle contacts elastic Hertz (e = 1), not calibrated\n";
+    for (int i = 1; i <= n; ++i) {
+      for (int j = i; j <= n; ++j) {
+        const Material& a = spec.types[static_cast<std::size_t>(i - 1)].material;
+        const Material& b = spec.types[static_cast<std::size_t>(j - 1)].material;
+        out += fmt::format(
+            "pair_coeff {} {} hertz {:.10g} 0.0 tangential linear_nohistory 0.0 0.0 damping "
+            "velocity\n",
+            i, j, 4.0 / 3.0 * effective_modulus(a, b));
+      }
+    }
+  }
+  for (const auto& p : pairs) {
+    if (p.type_j == 0) continue;
+    out += fmt::format("pair_coeff {} {} {}\n", p.type_i, p.type_j,
+                       normal_model(p, route_of(p, python_hook)));
+  }
+  for (const auto& p : pairs) {
+    if (p.type_j != 0) continue;
+    out += fmt::format("group corlab_type{0} type {0}\n", p.type_i);
+    out += fmt::format("fix corlab_wall{0} corlab_type{0} wall/gran granular {1} zplane 0.0 NULL\n",
+                       p.type_i, normal_model(p, route_of(p, python_hook)));
+  }
+  if (hook) out += hook_python(spec, pairs);
+  const auto law = [python_hook](const PairCalibration& p) {
+    return law_of(route_of(p, python_hook));
+  };
+  out += detail::time_step_comment(spec, pairs, law);
+  out += fmt::format("timestep {:.4g}\n", detail::recommended_step(pairs, law));
+  return out;
+}
+
+}  // namespace corlab::dem
