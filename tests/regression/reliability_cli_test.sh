@@ -120,8 +120,8 @@ limited "$corlab" sweep "$work/ee.toml" --out "$work/ee_sweep" --error-estimate 
 head -1 "$work/ee_sweep/results.csv" | grep -q ",e_error_reason," || fail "no e_error_reason column"
 grep -q ",no companion mesh at 2h: " "$work/ee_sweep/results.csv" || fail "no reason in the row"
 
-# 10. The elastic particle pair of the README's old dem example is refused with the way out.
-refused "material pair = 'alumina_ma2023 / alumina_ma2023': .*--wall-only calibrates only" \
+# 10. The elastic particle pair of the README's old dem example is refused with the ways out.
+refused "pair 1-1 (alumina_ma2023-alumina_ma2023) = .*--pair alumina_ma2023/alumina_ma2023=E.*--wall-only" \
   dem --type alumina_ma2023:0.005 --wall aluminium_ma2023 --model thornton1997 --out "$work/X"
 
 # 11. Hardening >= E is refused on an elastic body too; a long unknown material name is cut and
