@@ -11,8 +11,8 @@ REPORT_PRESET ?= paper
 DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   libeigen3-dev libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev \
   libgtest-dev libgmock-dev libbenchmark-dev pybind11-dev python3-dev python3-numpy \
-  python3-matplotlib python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
-  libgsl-dev libmuparser-dev \
+  python3-matplotlib python3-scipy python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
+  libgsl-dev libmuparser-dev python3-mypy \
   clang-tidy python3-flake8
 # Only the tests need these: the DEM codes the DEM exports are checked with (issue 11; apt install
 # time measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB
