@@ -73,10 +73,15 @@ lint-python:
 dem-check: deps-test build
 	cd $(BUILD_DIR) && ctest --output-on-failure -L dem $(CTEST_ARGS)
 
-# The DEM C library (libcorlab_dem, corlab_dem.h, CMake config, pkg-config) into PREFIX.
+# Everything into PREFIX (default /usr/local; docs/user/install.md): the corlab program, the C++
+# library libcorlab and the DEM C library libcorlab_dem with their headers, find_package(corlab)
+# and pkg-config files, the data (share/corlab) and the Python package, where Debian's
+# /usr/bin/python3 finds it for /usr/local and /usr. ldconfig (as root) makes the new libraries
+# known to the loader.
 PREFIX ?= /usr/local
 install: build
-	cmake --install $(BUILD_DIR) --prefix $(PREFIX) --component dem
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+	@if [ "$$(id -u)" -eq 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
 
 # AddressSanitizer + UndefinedBehaviorSanitizer (preset asan, build dir build-asan): the unit
 # tests, the fuzz targets (fewer mutants) and the CLI input reproducers, then the verification
