@@ -20,7 +20,7 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
 TEST_DEBIAN_PACKAGES := lammps liggghts yade
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
-  bench format clean dem-check install golden-rebaseline
+  bench format clean dem-check install deb golden-rebaseline
 
 # Installs the missing packages of $(1) with apt-get (as root).
 define apt_install
@@ -82,6 +82,10 @@ PREFIX ?= /usr/local
 install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 	@if [ "$$(id -u)" -eq 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
+
+# A Debian package of the same (prefix /usr) with CPack: build/package/corlab_<version>_<arch>.deb.
+deb: build
+	cd $(BUILD_DIR) && cpack -G DEB
 
 # AddressSanitizer + UndefinedBehaviorSanitizer (preset asan, build dir build-asan): the unit
 # tests, the fuzz targets (fewer mutants) and the CLI input reproducers, then the verification

@@ -1,4 +1,4 @@
-# `make install PREFIX=...` (cmake --install): the corlab program, the C++
+# `make install PREFIX=...` (cmake --install) and `make deb` (CPack): the corlab program, the C++
 # library libcorlab with its headers, the DEM C library (CorlabDemInstall.cmake), the data, the
 # Python package, find_package(corlab) and pkg-config (corlab, corlab-cxx). Every path is relative
 # to the prefix, so one build installs to any prefix; the installed code finds its data from where
@@ -94,3 +94,5 @@ install(FILES ${CMAKE_BINARY_DIR}/pkgconfig/corlab.pc
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dem)
 install(FILES ${CMAKE_BINARY_DIR}/pkgconfig/corlab-cxx.pc
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT cxx)
+
+include(${PROJECT_SOURCE_DIR}/cmake/CorlabPackage.cmake)  # make deb
