@@ -11,8 +11,8 @@ REPORT_PRESET ?= paper
 DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   libeigen3-dev libfmt-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev \
   libgtest-dev libgmock-dev libbenchmark-dev pybind11-dev python3-dev python3-numpy \
-  python3-matplotlib python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
-  libgsl-dev libmuparser-dev \
+  python3-matplotlib python3-scipy python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
+  libgsl-dev libmuparser-dev python3-mypy \
   clang-tidy python3-flake8
 # Only the tests need these: the DEM codes the DEM exports are checked with (issue 11; apt install
 # time measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB
@@ -20,7 +20,7 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
 TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
-  bench format clean dem-check install golden-rebaseline
+  bench format clean dem-check install deb golden-rebaseline
 
 # Installs the missing packages of $(1) with apt-get (as root).
 define apt_install
@@ -73,10 +73,19 @@ lint-python:
 dem-check: deps-test build
 	cd $(BUILD_DIR) && ctest --output-on-failure -L dem $(CTEST_ARGS)
 
-# The DEM C library (libcorlab_dem, corlab_dem.h, CMake config, pkg-config) into PREFIX.
+# Everything into PREFIX (default /usr/local; docs/user/install.md): the corlab program, the C++
+# library libcorlab and the DEM C library libcorlab_dem with their headers, find_package(corlab)
+# and pkg-config files, the data (share/corlab) and the Python package, where Debian's
+# /usr/bin/python3 finds it for /usr/local and /usr. ldconfig (as root) makes the new libraries
+# known to the loader.
 PREFIX ?= /usr/local
 install: build
-	cmake --install $(BUILD_DIR) --prefix $(PREFIX) --component dem
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+	@if [ "$$(id -u)" -eq 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
+
+# A Debian package of the same (prefix /usr) with CPack: build/package/corlab_<version>_<arch>.deb.
+deb: build
+	cd $(BUILD_DIR) && cpack -G DEB
 
 # AddressSanitizer + UndefinedBehaviorSanitizer (preset asan, build dir build-asan): the unit
 # tests, the fuzz targets (fewer mutants) and the CLI input reproducers, then the verification

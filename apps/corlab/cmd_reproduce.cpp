@@ -72,7 +72,10 @@ std::string own_command_line() {
   return out;
 }
 
-/// <build>/python next to <build>/bin/corlab; CORLAB_PYTHONPATH overrides.
+/// The directory holding the Python package `corlab`: $CORLAB_PYTHONPATH if set; else
+/// <build>/python next to <build>/bin/corlab; else, for an installed corlab, the package directory
+/// next to <prefix>/bin (CORLAB_INSTALL_PYTHON_FROM_BIN, from the install layout in
+/// cmake/CorlabInstall.cmake).
 fs::path python_package_dir() {
   if (const char* env = std::getenv("CORLAB_PYTHONPATH"); env != nullptr && *env != '\0') {
     return env;
@@ -80,7 +83,15 @@ fs::path python_package_dir() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return {};
-  return exe.parent_path().parent_path() / "python";
+  fs::path build = exe.parent_path().parent_path() / "python";
+#ifdef CORLAB_INSTALL_PYTHON_FROM_BIN
+  fs::path installed = (exe.parent_path() / CORLAB_INSTALL_PYTHON_FROM_BIN).lexically_normal();
+  if (!fs::exists(build / "corlab" / "report.py", ec) &&
+      fs::exists(installed / "corlab" / "report.py", ec)) {
+    return installed;
+  }
+#endif
+  return build;
 }
 
 /// Writes the report with Python; 0 when written, 1 when it failed, 128 + signal when a signal
@@ -179,7 +190,8 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--only", args->only,
                      "run only these studies (names as in studies/<preset>/)");
       sub.add_option("--studies", args->studies,
-                     "folder holding <preset>/<study>.toml (default: the source tree's studies/)");
+                     "folder holding <preset>/<study>.toml (default: the installed or source "
+                     "tree's studies/)");
       sub.add_flag("--no-report", args->no_report, "skip the Python report");
       sub.add_flag("--quiet", args->quiet, "no progress on stderr");
       return [args] { return run(*args); };

@@ -49,13 +49,9 @@ corlab_dem_pair* make_pair(const corlab::dem::RestitutionCurve& curve,
   return pair;
 }
 
-// The library may run where the source tree is not: data_directory() then takes the copy that
-// `cmake --install` put under the configured prefix.
-const corlab::MaterialDatabase& material_database() {
-  static const corlab::MaterialDatabase db = corlab::MaterialDatabase::load(
-      corlab::data_directory(CORLAB_DEM_INSTALL_DATA_DIR) / "materials.toml");
-  return db;
-}
+// The library may run where the source tree is not: data_directory() then takes the copy
+// installed next to it (<prefix>/share/corlab, installed_data_directory()).
+const corlab::MaterialDatabase& material_database() { return corlab::MaterialDatabase::builtin(); }
 
 template <class F>
 corlab_dem_pair* guarded(char* err, size_t err_len, const F& make) {

@@ -5,7 +5,6 @@
 #include <toml++/toml.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <system_error>
@@ -39,17 +38,6 @@ bool set_field(Material& m, std::string_view key, double value) {
 }
 
 }  // namespace
-
-std::filesystem::path data_directory(const std::filesystem::path& installed) {
-  if (const char* env = std::getenv("CORLAB_DATA_DIR"); env != nullptr && *env != '\0') {
-    return env;
-  }
-  std::error_code ec;  // an unreadable installed copy counts as none
-  if (!installed.empty() && std::filesystem::is_regular_file(installed / "materials.toml", ec)) {
-    return installed;
-  }
-  return CORLAB_DATA_DIR;
-}
 
 MaterialDatabase MaterialDatabase::load(const std::filesystem::path& file) {
   toml::table table;

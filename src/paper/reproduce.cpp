@@ -28,8 +28,7 @@ namespace reproduce_detail {
 std::filesystem::path spec_file(const std::filesystem::path& studies_dir,
                                 const std::string& preset,
                                 const std::string& study) {
-  const std::filesystem::path root =
-      studies_dir.empty() ? std::filesystem::path(CORLAB_STUDIES_DIR) : studies_dir;
+  const std::filesystem::path root = studies_dir.empty() ? studies_directory() : studies_dir;
   return root / preset / (study + ".toml");
 }
 

@@ -38,9 +38,21 @@ Material parse_material_spec(std::string_view spec,
                              std::string_view field,
                              const MaterialDatabase& database = MaterialDatabase::builtin());
 
-/// Directory of shipped data files, the one rule for every caller: $CORLAB_DATA_DIR if set and
-/// not empty; else `installed` if it holds materials.toml (an installed copy: the DEM C library
-/// passes <prefix>/share/corlab of its build); else the source tree's data/.
-std::filesystem::path data_directory(const std::filesystem::path& installed = {});
+/// <prefix>/share/corlab when the code calling this (the `corlab` program, libcorlab,
+/// libcorlab_dem or the Python module) runs from where `cmake --install` or the .deb put it under
+/// <prefix> and that directory holds materials.toml; else empty (a build tree). Found from the
+/// file the code was loaded from (dladdr), so it holds for any prefix and from any directory.
+std::filesystem::path installed_data_directory();
+
+/// Directory of shipped data files (materials.toml, fe_restitution/), the one rule for every
+/// caller: $CORLAB_DATA_DIR if set and not empty; else `installed` if it holds materials.toml
+/// (by default the installed copy next to the code, installed_data_directory()); else the source
+/// tree's data/.
+std::filesystem::path data_directory(
+    const std::filesystem::path& installed = installed_data_directory());
+
+/// Directory of the shipped study specs (<preset>/<study>.toml): studies/ of the installed
+/// copy when there is one (installed_data_directory()), else the source tree's studies/.
+std::filesystem::path studies_directory();
 
 }  // namespace corlab

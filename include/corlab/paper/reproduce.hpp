@@ -30,7 +30,7 @@ struct ReproduceOptions {
   /// (e_error, discretisation_error.hpp; +11-12 % CPU time per run).
   bool error_estimate = true;
   std::filesystem::path out_dir;              ///< output directory (created)
-  std::filesystem::path studies_dir;          ///< empty = CORLAB_STUDIES_DIR (the source tree)
+  std::filesystem::path studies_dir;          ///< empty = studies_directory()
   int jobs = 0;                               ///< runs at the same time; 0 = all cores
   bool progress = true;                       ///< progress on stderr
   std::string command_line;                   ///< echoed into fit.json (the report shows it)

@@ -1,13 +1,12 @@
 // The material database (material_database.hpp): the built-in entries, database files, the
-// material spec parser, the data-directory rule, and every bad-input message of them.
+// material spec parser and every bad-input message of them (the data-directory rule:
+// data_directory_test.cpp).
 #include "corlab/materials/material_database.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,54 +50,6 @@ TEST(MaterialDatabase, UnknownNameMessage) {
     EXPECT_EQ(msg.rfind("invalid sphere = 'unobtainium': must be one of [alumina_ma2023, ", 0), 0u)
         << msg;
     EXPECT_NE(msg.find("] or E=..,nu=..,rho=..[,sy=..]"), std::string::npos) << msg;
-  }
-}
-
-// Sets CORLAB_DATA_DIR (nullptr: unsets it) for one scope, then puts back what was there.
-class DataDirEnvironment {
- public:
-  explicit DataDirEnvironment(const char* value) {
-    if (const char* old = std::getenv("CORLAB_DATA_DIR")) saved_ = old;
-    if (value != nullptr) {
-      ::setenv("CORLAB_DATA_DIR", value, 1);
-    } else {
-      ::unsetenv("CORLAB_DATA_DIR");
-    }
-  }
-  ~DataDirEnvironment() {
-    if (saved_) {
-      ::setenv("CORLAB_DATA_DIR", saved_->c_str(), 1);
-    } else {
-      ::unsetenv("CORLAB_DATA_DIR");
-    }
-  }
-  DataDirEnvironment(const DataDirEnvironment&) = delete;
-  DataDirEnvironment& operator=(const DataDirEnvironment&) = delete;
-
- private:
-  std::optional<std::string> saved_;
-};
-
-TEST(DataDirectory, TheEnvironmentComesFirst) {
-  const auto installed = test::fresh_dir("installed");
-  test::spit(installed / "materials.toml", "");
-  const DataDirEnvironment env("/tmp/corlab-data-test");
-  EXPECT_EQ(data_directory(), std::filesystem::path("/tmp/corlab-data-test"));
-  EXPECT_EQ(data_directory(installed), std::filesystem::path("/tmp/corlab-data-test"));
-}
-
-TEST(DataDirectory, UnsetOrEmptyTakesTheInstalledCopyElseTheSourceTree) {
-  const auto installed = test::fresh_dir("installed");
-  for (const char* value : {static_cast<const char*>(nullptr), ""}) {
-    SCOPED_TRACE(value == nullptr ? "unset" : "empty");
-    const DataDirEnvironment env(value);
-    EXPECT_EQ(data_directory(), std::filesystem::path(CORLAB_DATA_DIR));
-    // an installed directory without materials.toml is no copy
-    EXPECT_EQ(data_directory(installed), std::filesystem::path(CORLAB_DATA_DIR));
-    EXPECT_EQ(data_directory(installed / "missing"), std::filesystem::path(CORLAB_DATA_DIR));
-    test::spit(installed / "materials.toml", "");
-    EXPECT_EQ(data_directory(installed), installed);
-    std::filesystem::remove(installed / "materials.toml");
   }
 }
 

@@ -1,0 +1,98 @@
+# `make install PREFIX=...` (cmake --install) and `make deb` (CPack): the corlab program, the C++
+# library libcorlab with its headers, the DEM C library (CorlabDemInstall.cmake), the data, the
+# Python package, find_package(corlab) and pkg-config (corlab, corlab-cxx). Every path is relative
+# to the prefix, so one build installs to any prefix; the installed code finds its data from where
+# it was loaded (corlab::installed_data_directory()), with no environment variable.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(CORLAB_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/corlab)
+set(CORLAB_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/corlab)
+# Debian's /usr/bin/python3 has <prefix>/lib/python3.X/dist-packages on sys.path for both
+# /usr/local (make install) and /usr (the .deb); the extension is built for that one X.
+if(DEFINED PYTHON_VERSION_MAJOR AND DEFINED PYTHON_VERSION_MINOR)
+  set(corlab_python_default lib/python${PYTHON_VERSION_MAJOR}.${PYTHON_VERSION_MINOR}/dist-packages)
+else()
+  set(corlab_python_default lib/python3/dist-packages)
+endif()
+set(CORLAB_INSTALL_PYTHONDIR ${corlab_python_default} CACHE STRING
+  "Where the Python package corlab is installed, relative to the prefix")
+
+# The data directory as seen from each directory code is installed to (bin/, lib/, the Python
+# package): compiled into corlab::installed_data_directory() and the CLI's report step.
+set(corlab_data_from_code "")
+foreach(code_dir ${CMAKE_INSTALL_BINDIR} ${CMAKE_INSTALL_LIBDIR} ${CORLAB_INSTALL_PYTHONDIR}/corlab)
+  file(RELATIVE_PATH rel /prefix/${code_dir} /prefix/${CORLAB_INSTALL_DATADIR})
+  list(APPEND corlab_data_from_code ${rel})
+endforeach()
+list(REMOVE_DUPLICATES corlab_data_from_code)
+list(JOIN corlab_data_from_code ":" corlab_data_from_code)
+set_property(SOURCE ${PROJECT_SOURCE_DIR}/src/materials/data_directory.cpp
+  TARGET_DIRECTORY corlab_materials APPEND PROPERTY
+  COMPILE_DEFINITIONS CORLAB_INSTALL_DATA_FROM_CODE="${corlab_data_from_code}")
+file(RELATIVE_PATH corlab_python_from_bin /prefix/${CMAKE_INSTALL_BINDIR}
+  /prefix/${CORLAB_INSTALL_PYTHONDIR})
+target_compile_definitions(corlab PRIVATE CORLAB_INSTALL_PYTHON_FROM_BIN="${corlab_python_from_bin}")
+
+# libcorlab: every static module in one shared library (no second compile), for C++ programs
+# built against an installed corlab. Its own dependencies stay private (DT_NEEDED); the headers
+# need Eigen and nlohmann_json (header-only).
+set(corlab_module_objects "")
+foreach(module core materials restitution fem fit study paper dataset dem)
+  list(APPEND corlab_module_objects $<TARGET_OBJECTS:corlab_${module}>)
+endforeach()
+add_library(corlab_shared SHARED ${corlab_module_objects})
+# corlab::all brings the modules' own dependencies (its archives add nothing: every object is in).
+target_link_libraries(corlab_shared PRIVATE corlab::all
+  PUBLIC Eigen3::Eigen nlohmann_json::nlohmann_json)
+target_include_directories(corlab_shared INTERFACE
+  $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+target_compile_features(corlab_shared INTERFACE cxx_std_20)
+# 0.x: every minor version may change the ABI.
+set_target_properties(corlab_shared PROPERTIES OUTPUT_NAME corlab EXPORT_NAME corlab
+  VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
+  LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/lib)
+add_library(corlab::corlab ALIAS corlab_shared)
+
+install(TARGETS corlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli)
+install(TARGETS corlab_shared EXPORT corlabCxxTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT cxx NAMELINK_COMPONENT cxx)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/corlab DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+  COMPONENT cxx FILES_MATCHING PATTERN "*.hpp")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/fe_restitution ${PROJECT_SOURCE_DIR}/studies
+  DESTINATION ${CORLAB_INSTALL_DATADIR} COMPONENT data)
+
+if(TARGET _core)
+  install(TARGETS _core LIBRARY DESTINATION ${CORLAB_INSTALL_PYTHONDIR}/corlab COMPONENT python)
+  install(DIRECTORY ${CMAKE_BINARY_DIR}/python/corlab/ DESTINATION ${CORLAB_INSTALL_PYTHONDIR}/corlab
+    COMPONENT python FILES_MATCHING PATTERN "*.py" PATTERN "*.pyi" PATTERN "py.typed"
+    PATTERN "__pycache__" EXCLUDE)
+endif()
+
+# find_package(corlab): corlab::corlab_dem always, corlab::corlab (component cxx) when installed
+# and its header-only dependencies are found.
+install(EXPORT corlabTargets NAMESPACE corlab:: FILE corlabTargets.cmake
+  DESTINATION ${CORLAB_INSTALL_CMAKEDIR} COMPONENT dem)
+install(EXPORT corlabCxxTargets NAMESPACE corlab:: FILE corlabCxxTargets.cmake
+  DESTINATION ${CORLAB_INSTALL_CMAKEDIR} COMPONENT cxx)
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/corlabConfig.cmake.in
+  ${CMAKE_BINARY_DIR}/corlabConfig.cmake INSTALL_DESTINATION ${CORLAB_INSTALL_CMAKEDIR}
+  PATH_VARS CORLAB_INSTALL_DATADIR)
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/corlabConfigVersion.cmake
+  COMPATIBILITY SameMajorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/corlabConfig.cmake ${CMAKE_BINARY_DIR}/corlabConfigVersion.cmake
+  DESTINATION ${CORLAB_INSTALL_CMAKEDIR} COMPONENT dem)
+
+# pkg-config: the prefix is found from the .pc file's own place (${pcfiledir}), so the same files
+# serve any prefix, DESTDIR and the .deb.
+file(RELATIVE_PATH corlab_pc_to_prefix /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+string(REGEX REPLACE "/$" "" corlab_pc_to_prefix "${corlab_pc_to_prefix}")
+foreach(pc corlab corlab-cxx)
+  configure_file(${PROJECT_SOURCE_DIR}/cmake/${pc}.pc.in ${CMAKE_BINARY_DIR}/pkgconfig/${pc}.pc @ONLY)
+endforeach()
+install(FILES ${CMAKE_BINARY_DIR}/pkgconfig/corlab.pc
+  DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT dem)
+install(FILES ${CMAKE_BINARY_DIR}/pkgconfig/corlab-cxx.pc
+  DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig COMPONENT cxx)
+
+include(${PROJECT_SOURCE_DIR}/cmake/CorlabPackage.cmake)  # make deb

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# `make deb` and the package's life on this Debian machine: build it with CPack, install it with
+# dpkg (prefix /usr), use it from another directory with no CORLAB_* variable and no PYTHONPATH
+# (the CLI, `import corlab, corlab.dem`, the README's C++ example with find_package), remove it,
+# check that nothing it installed is left, and purge it. It changes /usr, so it runs only as root
+# and only in CI (CI=true, as .ci/run sets) or with CORLAB_TEST_DEB=1; otherwise it is skipped
+# (exit 77). The package's dependencies must be installed (`make` installs them).
+# usage: deb_test.sh <build-dir> <source-dir> <work-dir>
+set -euo pipefail
+build=$1 src=$2 work=$3
+if [ "$(id -u)" -ne 0 ] || { [ "${CI:-}" != true ] && [ "${CORLAB_TEST_DEB:-}" != 1 ]; }; then
+  echo "deb_test: skipped (changes /usr: runs as root with CI=true or CORLAB_TEST_DEB=1)"
+  exit 77
+fi
+if dpkg-query -W -f='${Status}' corlab 2>/dev/null | grep -q "ok installed"; then
+  echo "deb_test: a corlab package is installed already; remove it first (dpkg -r corlab)" >&2
+  exit 1
+fi
+rm -rf "$work" && mkdir -p "$work"
+(cd "$build" && cpack -G DEB -B "$work/package" >"$work/cpack.log") \
+  || { cat "$work/cpack.log" >&2; exit 1; }
+deb=$(ls "$work"/package/corlab_*.deb)
+dpkg-deb -f "$deb" Depends
+# Every path of the package (files and folders) and whether it was there before.
+dpkg-deb -c "$deb" | awk '{print substr($6, 2)}' | sed 's:/$::' | grep -v '^$' >"$work/paths"
+while read -r p; do [ -e "$p" ] && echo "$p"; done <"$work/paths" >"$work/before"
+cleanup() { dpkg -P corlab >/dev/null 2>&1 || true; }
+trap cleanup EXIT
+dpkg -i "$deb" >"$work/dpkg-i.log" || { cat "$work/dpkg-i.log" >&2; exit 1; }
+
+cd "$work"
+env -u PYTHONPATH -u CORLAB_DATA_DIR -u CORLAB_PYTHONPATH bash -c '
+  set -euo pipefail
+  test "$(command -v corlab)" = /usr/bin/corlab
+  corlab materials | grep -q alumina_ma2023
+  corlab predict --model corlab2026 --sphere alumina_ma2023 --substrate aluminium_ma2023 --velocity 2.5
+  /usr/bin/python3 -c "import corlab, corlab.dem; assert corlab.__file__.startswith(\"/usr/lib/\"); print(\"python:\", corlab.__file__, len(corlab.dem.laws()), \"DEM laws\")"'
+cmake -S "$src/examples/installed" -B "$work/cmake-build" >/dev/null
+cmake --build "$work/cmake-build" >/dev/null
+"$work/cmake-build/readme_example" | tee "$work/example.txt"
+grep -qxF "data directory: /usr/share/corlab" "$work/example.txt"
+
+trap - EXIT
+dpkg -r corlab >"$work/dpkg-r.log" || { cat "$work/dpkg-r.log" >&2; exit 1; }
+if grep -q "warning" "$work/dpkg-r.log"; then cat "$work/dpkg-r.log" >&2; exit 1; fi
+left=$(while read -r p; do
+  [ -e "$p" ] && ! grep -qxF "$p" "$work/before" && echo "$p"; done <"$work/paths" || true)
+if [ -n "$left" ]; then echo "deb_test: left after dpkg -r:" >&2; echo "$left" >&2; exit 1; fi
+# No conffiles, but the maintainer scripts keep a config-files record until the purge.
+dpkg -P corlab >/dev/null
+if dpkg-query -W corlab >/dev/null 2>&1; then echo "deb_test: dpkg still knows corlab" >&2; exit 1; fi
+echo "deb_test: $(basename "$deb") installed, used and removed cleanly ($(wc -l <"$work/paths") paths)"
