@@ -7,6 +7,7 @@ CLI's one-line message; the report opens with no console error and every image l
 screenshot of each goes to $CORLAB_ARTEFACTS (`make test` sets build/browser/).
 
 The page and the browser are `make test`'s: a missing one fails these tests, never skips them."""
+import csv
 import json
 import os
 import pathlib
@@ -25,10 +26,15 @@ CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-back
 TOLERANCE = 1e-12  # |e_page - e_cli| and the relative difference of the speeds [-]
 
 
-def required_file(variable, what):
-    path = os.environ.get(variable, "")
+def explorer_page():
+    """$CORLAB_EXPLORER, else explorer/explorer.html of the build CORLAB_BIN is in; fails the
+    test when the page is not there."""
+    path = os.environ.get("CORLAB_EXPLORER", "")
+    if not path and os.environ.get("CORLAB_BIN"):
+        path = str(pathlib.Path(os.environ["CORLAB_BIN"]).parents[1] / "explorer" / "explorer.html")
     if not path or not os.path.isfile(path):
-        pytest.fail(f"{variable} = {path!r} is not a file: {what}", pytrace=False)
+        pytest.fail(f"CORLAB_EXPLORER = {path!r} is not a file: the explorer page (`make explorer`"
+                    " builds it)", pytrace=False)
     return pathlib.Path(path)
 
 
@@ -98,7 +104,7 @@ def screenshot(driver, path):
 
 def open_explorer(driver):
     """Loads the page from file:// with the network emulated offline; its state once ready."""
-    page = required_file("CORLAB_EXPLORER", "the explorer page (`make explorer` builds it)")
+    page = explorer_page()
     driver.execute_cdp_cmd("Network.enable", {})
     driver.execute_cdp_cmd("Network.emulateNetworkConditions", {
         "offline": True, "latency": 0, "downloadThroughput": -1, "uploadThroughput": -1})
@@ -253,3 +259,27 @@ def test_report_opens_with_every_image_loaded(browser, artefacts, tiny_reproduct
     assert [src for src, ok in found if not ok] == []
     assert console_errors(browser) == []
     screenshot(browser, artefacts / "report.png")
+
+
+def test_explorer_nearest_run_of_a_dataset_runs_own_pair_is_that_run(browser):
+    """A run's own materials give that run first, at distance 0 and at its own speed (e depends
+    on the dimensionless inputs only: the pair's speed of equal k1 is the run's)."""
+    data = pathlib.Path(__file__).resolve().parents[2] / "data"
+    with open(data / "fe_restitution" / "dataset.csv", newline="") as f:
+        run = next(r for r in csv.DictReader(f) if r["sphere_sigma_y"] != "inf")
+    open_explorer(browser)
+    choose(browser, "sphere-name", "custom")
+    choose(browser, "substrate-name", "custom")
+    for body in ("sphere", "substrate"):
+        for key, column in (("E", "E"), ("nu", "nu"), ("rho", "rho"), ("sy", "sigma_y"),
+                            ("H", "H")):
+            set_field(browser, f"{body}-{key}", run[f"{body}_{column}"])
+    set_field(browser, "v-min", "0.01")
+    set_field(browser, "v-max", "100")
+    state = page_state(browser)
+    assert state["error"] in (None, ""), state["error"]
+    first = state["result"]["nearest"][0]
+    assert first["design_index"] == int(run["design_index"])
+    assert first["distance"] <= 1e-12
+    assert first["velocity_pair"] == pytest.approx(float(run["velocity"]), rel=1e-12)
+    assert first["e"] == float(run["e"]) and first["e_error"] == float(run["e_error"])
