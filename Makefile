@@ -17,10 +17,14 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
 # Only the tests need these: the DEM codes the DEM exports are checked with (issue 11; apt install
 # time measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB
 # disk)). `make test` installs them, `make run` does not.
-TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy
+TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy \
+  emscripten python3-plotly chromium chromium-driver python3-selenium
+# The e(v) explorer (docs/user/explorer.md) and its browser tests need the second line: emscripten
+# compiles corlab's C++ to WebAssembly, python3-plotly ships plotly.js, the tests drive headless
+# chromium with selenium. python3-lammps, python3-scipy: the LAMMPS export's fix python/invoke hook.
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
-  bench format clean dem-check install deb golden-rebaseline
+  bench format clean dem-check install deb golden-rebaseline explorer
 
 # Installs the missing packages of $(1) with apt-get (as root).
 define apt_install
@@ -50,14 +54,40 @@ build: configure
 run: build
 	./$(BUILD_DIR)/bin/corlab reproduce --preset $(REPORT_PRESET) --out $(REPORT_DIR)
 
-test: deps-test build test-cpp test-python lint test-asan
+test: deps-test build explorer test-cpp test-python lint test-asan
 
 test-cpp:
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
+# CORLAB_EXPLORER: the page the browser tests open; CORLAB_ARTEFACTS: where they keep screenshots.
 test-python:
 	PYTHONPATH=$(CURDIR)/$(BUILD_DIR)/python CORLAB_BIN=$(CURDIR)/$(BUILD_DIR)/bin/corlab \
+	  CORLAB_EXPLORER=$(CURDIR)/$(EXPLORER_DIR)/explorer.html \
+	  CORLAB_ARTEFACTS=$(CURDIR)/$(BUILD_DIR)/browser \
 	  /usr/bin/python3 -m pytest -q python/tests
+
+# The e(v) explorer: corlab's materials, restitution and dem sources compiled to WebAssembly by
+# Debian's emscripten and inlined with plotly.js into one offline page, $(EXPLORER_DIR)/explorer.html
+# (docs/user/explorer.md). GSL (for src/dem) is compiled from Debian's source package, fetched once
+# with apt-get source through a private source list (the system's apt configuration is untouched).
+# NODE_PATH: emscripten's JavaScript tools use Debian's node modules.
+EXPLORER_DIR := $(BUILD_DIR)/explorer
+GSL_SOURCE := $(BUILD_DIR)/gsl-source
+EMSCRIPTEN_ENV := NODE_PATH=/usr/share/nodejs
+explorer: deps-test $(GSL_SOURCE)/gsl/configure
+	$(EMSCRIPTEN_ENV) emcmake cmake -S explorer -B $(EXPLORER_DIR) -G Ninja \
+	  -DCORLAB_GSL_SOURCE_DIR=$(CURDIR)/$(GSL_SOURCE)/gsl
+	$(EMSCRIPTEN_ENV) cmake --build $(EXPLORER_DIR) -j $(JOBS)
+	@echo "corlab: the explorer is $(EXPLORER_DIR)/explorer.html (open it in a browser)"
+
+$(GSL_SOURCE)/gsl/configure:
+	rm -rf $(GSL_SOURCE) && mkdir -p $(GSL_SOURCE)/lists/partial
+	. /etc/os-release && echo "deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg]" \
+	  "http://deb.debian.org/debian $$VERSION_CODENAME main" > $(GSL_SOURCE)/sources.list
+	cd $(GSL_SOURCE) && apt_private="-o Dir::Etc::SourceList=$$PWD/sources.list \
+	  -o Dir::Etc::SourceParts=/dev/null -o Dir::State::Lists=$$PWD/lists" && \
+	  apt-get -qq $$apt_private update && apt-get -qq $$apt_private source gsl && \
+	  mv $$(find . -maxdepth 1 -type d -name 'gsl-*') gsl
 
 # Static analysis: clang-tidy (.clang-tidy; scripts/lint/clang_tidy.sh lists what it leaves out)
 # and flake8 (.flake8) on the Python sources. Both fail on any finding.
@@ -67,7 +97,7 @@ lint-cpp: build
 	scripts/lint/clang_tidy.sh $(BUILD_DIR) $(JOBS)
 
 lint-python:
-	/usr/bin/python3 -m flake8 python scripts tests
+	/usr/bin/python3 -m flake8 python scripts tests explorer
 
 # DEM exports checked by running Debian's LAMMPS and LIGGGHTS (ctest label dem; part of `make test`).
 dem-check: deps-test build

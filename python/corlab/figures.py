@@ -24,6 +24,19 @@ import matplotlib.pyplot as plt  # noqa: E402
 from .vtu import field_snapshots, read_vtu  # noqa: E402
 
 
+# Colours and markers of figures with one series per case (Figs. 6 and 9, yield onset): the first
+# ten cases take matplotlib's ten default colours (tab10) with circles, the next ten the light
+# shade of each (tab20) with squares, and so on, so no two cases look the same.
+_CASE_MARKERS = ("o", "s", "^", "D", "v", "P")
+
+
+def case_style(i):
+    """(colour, marker) of case i: distinct for every i < 10 * len(_CASE_MARKERS)."""
+    cycle, k = divmod(i, 10)
+    colour = matplotlib.colormaps["tab20"].colors[2 * k + cycle % 2]
+    return colour, _CASE_MARKERS[cycle % len(_CASE_MARKERS)]
+
+
 def read_csv(path):
     """Rows of a CSV file as dicts (numbers stay text); [] if the file does not exist."""
     if not os.path.exists(path):
@@ -273,9 +286,9 @@ def fig6_e_vs_k1(out_dir, fit):
     s = (law or {}).get("slope", {}).get("value", math.nan)
     for i, (g, pts) in enumerate(sorted(groups.items())):
         pts.sort(key=lambda p: p[0])
-        color = f"C{i % 10}"
+        color, marker = case_style(i)
         ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=_yerr(p[2] for p in pts),
-                    fmt="o", color=color, ms=4, capsize=2, elinewidth=0.8,
+                    fmt=marker, color=color, ms=4, capsize=2, elinewidth=0.8,
                     label=g.replace("_E115.4GPa", ""))
         if g in lines:
             ax.plot(lines[g]["ln_k1"], lines[g]["e"], "-", color=color, lw=1)
@@ -351,9 +364,9 @@ def fig9_rho_vy2(out_dir, fit):
     curves = {round(c["E_star"] / 1e9, 3): c for c in _lines(fit, "fig9")}
     n = y["n"]["value"]
     for i, (es, pts) in enumerate(sorted(groups.items())):
-        color = f"C{i % 10}"
+        color, marker = case_style(i)
         ax.plot([p["sigma_y"] / 1e6 for p in pts], [p["sphere_rho"] * p["v_y"] ** 2 for p in pts],
-                "o", color=color, ms=4, label=f"E* = {es:g} GPa")
+                marker, color=color, ms=4, label=f"E* = {es:g} GPa")
         if es in curves:
             c = curves[es]
             ax.plot([v / 1e6 for v in c["sigma_y"]], c["ours"], "-", color=color, lw=1)
@@ -466,12 +479,13 @@ def fig_onset(out_dir, fit):
     for i, o in enumerate(onset):
         probes = sorted((p for p in o["probes"] if p.get("kind", "probe") == "probe"),
                         key=lambda p: p["velocity"])
+        color, marker = case_style(i)
         ax.plot([p["velocity"] for p in probes],
-                [max(p["plastic_strain_max"], 1e-12) for p in probes], "o-", color=f"C{i}",
+                [max(p["plastic_strain_max"], 1e-12) for p in probes], marker + "-", color=color,
                 label=o["group"])
         for key, style in (("v_hertz_onset", ":"), ("v_y_paper_eq18", "--"), ("v_scaled", "-.")):
             if o.get(key):
-                ax.axvline(o[key], color=f"C{i}", ls=style, lw=1)
+                ax.axvline(o[key], color=color, ls=style, lw=1)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("impact velocity v [m/s]")

@@ -292,27 +292,8 @@ def test_report_main_without_fit_json_fails_cleanly(tmp_path):
     assert report.main([str(tmp_path)]) == 2
 
 
-TINY_SPEC = """[study]
-name = "table2"
-description = "tiny Table 2 for the test"
-[base]
-"mesh.h_min" = 1.5e-3
-"mesh.contact_elements" = 3.0
-"sphere.rho" = 7850.0
-[grid]
-"substrate.sigma_y" = [300.0e6, 700.0e6, 1300.0e6]
-"impact.velocity" = [3.0, 20.0]
-"""
-
-
-def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tmp_path, corlab_bin):
-    studies = tmp_path / "studies" / "coarse"
-    studies.mkdir(parents=True)
-    (studies / "table2.toml").write_text(TINY_SPEC)
-    out = tmp_path / "out"
-    cmd = [corlab_bin, "reproduce", "--preset", "coarse", "--out", str(out),
-           "--studies", str(tmp_path / "studies"), "--only", "table2", "--jobs", "2", "--quiet"]
-    first = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tiny_reproduction):
+    cmd, first, out = tiny_reproduction  # conftest.py: TINY_TABLE2_SPEC, run once per session
     assert first.returncode == 0, first.stderr
     fit = json.loads((out / "fit.json").read_text())
     assert fit["studies"]["table2"]["ran"] == 6

@@ -7,6 +7,25 @@
 
 namespace corlab::restitution {
 
+CalibrationCheck calibration_check(const ModelInfo& info,
+                                   std::span<const double> velocities,
+                                   const Material& sphere,
+                                   const Material& substrate) {
+  CalibrationCheck check;
+  if (!info.calibrated || !substrate.yield_stress) return check;
+  const DimensionlessBox& box = *info.calibrated;
+  const double e_star = effective_modulus(sphere, substrate);
+  check.known = true;
+  check.k2 = k2(*substrate.yield_stress, e_star);
+  check.k2_outside = check.k2 < box.k2_min || check.k2 > box.k2_max;
+  check.k1_outside.reserve(velocities.size());
+  for (const double v : velocities) {
+    const double k1_value = k1(e_star, sphere.density, v);
+    check.k1_outside.push_back(k1_value < box.k1_min || k1_value > box.k1_max);
+  }
+  return check;
+}
+
 std::vector<std::string> validity_warnings(const ModelInfo& info,
                                            std::span<const double> velocities,
                                            const Material& sphere,
@@ -20,22 +39,17 @@ std::vector<std::string> validity_warnings(const ModelInfo& info,
         "impact: no equation of state, no quasi-static contact)",
         info.name, v_max, kMaxModelVelocity));
   }
-  if (!info.calibrated || !substrate.yield_stress) return out;
+  const CalibrationCheck check = calibration_check(info, velocities, sphere, substrate);
+  if (!check.known) return out;
   const DimensionlessBox& box = *info.calibrated;
-  const double e_star = effective_modulus(sphere, substrate);
-  std::size_t outside = 0;
-  for (const double v : velocities) {
-    const double k1_value = k1(e_star, sphere.density, v);
-    if (k1_value < box.k1_min || k1_value > box.k1_max) ++outside;
-  }
-  const double k2_value = k2(*substrate.yield_stress, e_star);
-  const bool k2_outside = k2_value < box.k2_min || k2_value > box.k2_max;
-  if (outside == 0 && !k2_outside) return out;
+  const auto outside =
+      static_cast<std::size_t>(std::count(check.k1_outside.begin(), check.k1_outside.end(), true));
+  if (outside == 0 && !check.k2_outside) return out;
   out.push_back(
       fmt::format("model '{}' extrapolates: {} of {} velocities give k1 = E*/(rho v^2) outside its "
                   "calibration [{:.3g}, {:.3g}], k2 = sigma_y/E* = {:.3g} {} [{:.3g}, {:.3g}] ({})",
-                  info.name, outside, velocities.size(), box.k1_min, box.k1_max, k2_value,
-                  k2_outside ? "outside" : "inside", box.k2_min, box.k2_max, info.validity));
+                  info.name, outside, velocities.size(), box.k1_min, box.k1_max, check.k2,
+                  check.k2_outside ? "outside" : "inside", box.k2_min, box.k2_max, info.validity));
   return out;
 }
 

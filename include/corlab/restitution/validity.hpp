@@ -18,6 +18,21 @@ namespace corlab::restitution {
 /// needs an equation of state; the same limit as the FE solver's impact.velocity).
 inline constexpr double kMaxModelVelocity = 1000.0;
 
+/// Where a model's calibration box (ModelInfo::calibrated) holds for a pair at some speeds.
+struct CalibrationCheck {
+  bool known = false;            ///< the model has a numeric box and the substrate a yield stress
+  double k2 = 0.0;               ///< sigma_y,substrate / E* of the pair [-]
+  bool k2_outside = false;       ///< k2 lies outside the box
+  std::vector<bool> k1_outside;  ///< per velocity: k1 = E*/(rho v^2) lies outside the box
+};
+
+/// The box check behind validity_warnings(), per velocity [m/s] (the explorer shades where a
+/// model extrapolates); not `known` (and no flags) when the box or the yield stress is missing.
+CalibrationCheck calibration_check(const ModelInfo& info,
+                                   std::span<const double> velocities,
+                                   const Material& sphere,
+                                   const Material& substrate);
+
 /// One-line warnings for `info` evaluated at `velocities` [m/s] for the pair (the substrate has a
 /// yield stress); empty when every velocity is inside the model's known validity.
 std::vector<std::string> validity_warnings(const ModelInfo& info,

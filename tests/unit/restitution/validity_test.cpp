@@ -1,0 +1,67 @@
+// Validity of the CoR models (validity.cpp): the calibration-box check per velocity and the
+// warnings built on it.
+#include "corlab/restitution/validity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/registry.hpp"
+
+namespace corlab::restitution {
+namespace {
+
+// Steel on steel (E = 210 GPa, nu = 0.3, rho = 7850 kg/m^3): ma2023's box (registry.cpp: the
+// paper's FE runs, rho = 3925-15700 kg/m^3 at v = 0.1-70 m/s) spans k1 = E*/(rho v^2) of this
+// sphere at 0.0707-99.0 m/s, and k2 = sigma_y/E* of 300-1300 MPa.
+Material steel(double yield_stress) {
+  return parse_material_spec("E=210e9,nu=0.3,rho=7850,sy=" + std::to_string(yield_stress),
+                             "substrate");
+}
+
+const std::vector<double> kSpeeds = {0.01, 0.07, 0.072, 1.0, 98.0, 100.0, 500.0};  // [m/s]
+
+TEST(CalibrationCheck, FlagsEachSpeedOutsideTheBoxInK1) {
+  const auto check = calibration_check(model_info("ma2023"), kSpeeds, steel(500e6), steel(500e6));
+  ASSERT_TRUE(check.known);
+  EXPECT_FALSE(check.k2_outside);
+  EXPECT_NEAR(check.k2, 500e6 / (210e9 / (2.0 * (1.0 - 0.09))), 1e-15);
+  const std::vector<bool> expected = {true, true, false, false, false, true, true};
+  EXPECT_EQ(check.k1_outside, expected);
+}
+
+TEST(CalibrationCheck, FlagsK2OutsideTheBox) {
+  const std::vector<double> inside = {1.0};
+  const auto low = calibration_check(model_info("ma2023"), inside, steel(500e6), steel(250e6));
+  const auto high = calibration_check(model_info("ma2023"), inside, steel(500e6), steel(1400e6));
+  EXPECT_TRUE(low.known && low.k2_outside);
+  EXPECT_TRUE(high.known && high.k2_outside);
+  EXPECT_EQ(low.k1_outside, std::vector<bool>{false});
+}
+
+TEST(CalibrationCheck, UnknownWithoutABoxOrAYieldStress) {
+  const auto no_box =
+      calibration_check(model_info("thornton1997"), kSpeeds, steel(5e8), steel(5e8));
+  EXPECT_FALSE(no_box.known);
+  EXPECT_TRUE(no_box.k1_outside.empty());
+  const Material elastic = parse_material_spec("E=210e9,nu=0.3,rho=7850", "substrate");
+  EXPECT_FALSE(calibration_check(model_info("ma2023"), kSpeeds, steel(5e8), elastic).known);
+}
+
+TEST(ValidityWarnings, CountTheSpeedsTheCheckFlags) {
+  const auto warnings = validity_warnings(model_info("ma2023"), kSpeeds, steel(5e8), steel(5e8));
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_NE(warnings[0].find("model 'ma2023' extrapolates: 4 of 7 velocities"), std::string::npos)
+      << warnings[0];
+  EXPECT_NE(warnings[0].find("inside"), std::string::npos) << warnings[0];
+  const std::vector<double> inside = {0.5, 5.0, 50.0};
+  EXPECT_TRUE(validity_warnings(model_info("ma2023"), inside, steel(5e8), steel(5e8)).empty());
+  const std::vector<double> fast = {1500.0};
+  const auto beyond = validity_warnings(model_info("thornton1997"), fast, steel(5e8), steel(5e8));
+  ASSERT_EQ(beyond.size(), 1U);
+  EXPECT_NE(beyond[0].find("beyond 1000 m/s"), std::string::npos) << beyond[0];
+}
+
+}  // namespace
+}  // namespace corlab::restitution
