@@ -9,7 +9,7 @@ import time
 
 import pytest
 
-from test_report import TINY_SPEC
+from conftest import TINY_TABLE2_SPEC as TINY_SPEC
 
 
 @pytest.fixture(scope="module")

@@ -1,7 +1,9 @@
 // Where the shipped data (materials.toml, fe_restitution/, studies/) are: the one rule of
 // data_directory(), installed_data_directory() and studies_directory().
+#if !defined(__EMSCRIPTEN__)
 #include <dlfcn.h>
 #include <link.h>
+#endif
 
 #include <cstdlib>
 #include <filesystem>
@@ -23,8 +25,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The executable or shared object this function was loaded from; empty when unknown.
+/// The executable or shared object this function was loaded from; empty when unknown (always in
+/// the browser explorer's WebAssembly build: it has no installed data).
 fs::path own_object_file() {
+#if defined(__EMSCRIPTEN__)
+  return {};
+#else
   Dl_info info{};
   link_map* map = nullptr;
   if (dladdr1(reinterpret_cast<void*>(&own_object_file), &info, reinterpret_cast<void**>(&map),
@@ -39,6 +45,7 @@ fs::path own_object_file() {
   }
   fs::path file = fs::canonical(map->l_name, ec);
   return ec ? fs::path() : file;
+#endif
 }
 
 }  // namespace
