@@ -14,16 +14,7 @@ int run_models(const std::string& format) {
   const auto& catalog = restitution::model_catalog();
   if (format == "json") {
     nlohmann::json out = nlohmann::json::array();
-    for (const auto& info : catalog) {
-      out.push_back({{"name", info.name},
-                     {"title", info.title},
-                     {"citation", info.citation},
-                     {"equation", info.equation},
-                     {"validity", info.validity},
-                     {"status", restitution::to_string(info.status)},
-                     {"status_note", info.status_note},
-                     {"clamped_by_default", info.clamped_by_default}});
-    }
+    for (const auto& info : catalog) out.push_back(restitution::model_info_json(info));
     fmt::print("{}\n", out.dump(2));
     return 0;
   }

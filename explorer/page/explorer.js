@@ -209,7 +209,7 @@ function tables(r) {
     cell(row, fmt(m.e[m.e.length - 1], 6));
     const text = boxText(m, r.velocity);
     cell(row, text, text === "inside" || text === "no numeric box" ? "" : "outside");
-    const info = state.catalog.models.find((x) => x.model === m.model);
+    const info = state.catalog.models.find((x) => x.name === m.model);
     cell(row, info.validity, "text");
     row.title = `${info.title}. ${info.citation}. ${info.status_note}`;
     body.append(row);
@@ -288,7 +288,7 @@ async function start() {
     buildMaterialInputs("sphere", "alumina_ma2023");
     buildMaterialInputs("substrate", "aluminium_ma2023");
     const demModel = $("dem-model");
-    for (const m of state.catalog.models) demModel.append(el("option", m.model, {value: m.model}));
+    for (const m of state.catalog.models) demModel.append(el("option", m.name, {value: m.name}));
     demModel.value = "corlab2026";
     for (const id of ["v-min", "v-max", "v-count", "v-spacing", "radius", "dem-model"]) {
       $(id).addEventListener("change", update);

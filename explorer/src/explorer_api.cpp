@@ -160,15 +160,7 @@ std::string catalog() {
     for (const auto& name : db.names()) materials.push_back(material_json(db.get(name)));
     json models = json::array();
     for (const auto& info : restitution::model_catalog()) {
-      models.push_back({{"model", info.name},
-                        {"title", info.title},
-                        {"citation", info.citation},
-                        {"equation", info.equation},
-                        {"validity", info.validity},
-                        {"status", restitution::to_string(info.status)},
-                        {"status_note", info.status_note},
-                        {"clamped_by_default", info.clamped_by_default},
-                        {"calibrated", box_json(info.calibrated)}});
+      models.push_back(restitution::model_info_json(info));
     }
     return json{{"version", std::string(kVersion)},
                 {"materials", materials},

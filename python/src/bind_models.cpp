@@ -2,6 +2,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <variant>
@@ -63,27 +64,7 @@ restitution::Model bind_model(const std::string& model,
 }
 
 py::dict info_dict(const restitution::ModelInfo& info) {
-  py::dict d;
-  d["name"] = info.name;
-  d["title"] = info.title;
-  d["citation"] = info.citation;
-  d["equation"] = info.equation;
-  d["validity"] = info.validity;
-  d["status"] = std::string(restitution::to_string(info.status));
-  d["status_note"] = info.status_note;
-  d["clamped_by_default"] = info.clamped_by_default;
-  if (info.calibrated) {
-    const auto& b = *info.calibrated;
-    py::dict box;
-    box["k1_min"] = b.k1_min;
-    box["k1_max"] = b.k1_max;
-    box["k2_min"] = b.k2_min;
-    box["k2_max"] = b.k2_max;
-    d["calibrated"] = box;
-  } else {
-    d["calibrated"] = py::none();
-  }
-  return d;
+  return json_to_python(restitution::model_info_json(info));
 }
 
 // The coefficient struct as a dict and back (names as in corlab2026.hpp).

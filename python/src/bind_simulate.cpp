@@ -104,25 +104,6 @@ py::object field_object(const fem::FieldValue& value) {
       value);
 }
 
-/// A JSON value (the config echo) as Python objects.
-py::object json_object(const nlohmann::json& j) {
-  if (j.is_object()) {
-    py::dict d;
-    for (const auto& [key, value] : j.items()) d[py::str(key)] = json_object(value);
-    return d;
-  }
-  if (j.is_array()) {
-    py::list l;
-    for (const auto& value : j) l.append(json_object(value));
-    return l;
-  }
-  if (j.is_boolean()) return py::bool_(j.get<bool>());
-  if (j.is_number_integer()) return py::int_(j.get<long long>());
-  if (j.is_number()) return py::float_(j.get<double>());
-  if (j.is_string()) return py::str(j.get<std::string>());
-  return py::none();
-}
-
 /// simulate()'s dict: the summary fields of the result-field table, "config" (the echo of every
 /// config key) and "history" (one numpy array per history column).
 py::dict result_dict(const fem::ImpactResult& result, const fem::ImpactConfig& config) {
@@ -132,7 +113,7 @@ py::dict result_dict(const fem::ImpactResult& result, const fem::ImpactConfig& c
     if ((f.outputs & fem::kSummary) != 0)
       out[py::str(std::string(f.name))] = field_object(f.value(in));
   }
-  out["config"] = json_object(fem::config_to_json(config));
+  out["config"] = json_to_python(fem::config_to_json(config));
   py::dict history;
   for (const auto& c : fem::history_columns()) {
     history[py::str(std::string(c.name))] = to_numpy(result.history.*c.series);
@@ -142,6 +123,24 @@ py::dict result_dict(const fem::ImpactResult& result, const fem::ImpactConfig& c
 }
 
 }  // namespace
+
+py::object json_to_python(const nlohmann::json& j) {
+  if (j.is_object()) {
+    py::dict d;
+    for (const auto& [key, value] : j.items()) d[py::str(key)] = json_to_python(value);
+    return d;
+  }
+  if (j.is_array()) {
+    py::list l;
+    for (const auto& value : j) l.append(json_to_python(value));
+    return l;
+  }
+  if (j.is_boolean()) return py::bool_(j.get<bool>());
+  if (j.is_number_integer()) return py::int_(j.get<long long>());
+  if (j.is_number()) return py::float_(j.get<double>());
+  if (j.is_string()) return py::str(j.get<std::string>());
+  return py::none();
+}
 
 void bind_simulate(py::module_& m) {
   m.def("result_fields", &result_fields_list,

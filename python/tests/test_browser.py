@@ -157,7 +157,7 @@ def test_explorer_opens_offline_without_console_errors(browser, artefacts):
     # the plot is drawn: one trace per model at least, the band and the dataset's runs
     traces = browser.execute_script(
         "return document.getElementById('plot').data.map(t => t.name || '')")
-    names = [m["model"] for m in state["catalog"]["models"]]
+    names = [m["name"] for m in state["catalog"]["models"]]
     assert set(names) <= set(traces)
     assert "FE dataset, nearest runs" in traces
     assert "corlab2026 95 % prediction interval" in traces

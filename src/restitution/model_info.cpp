@@ -1,5 +1,7 @@
 #include "corlab/restitution/model_info.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace corlab::restitution {
 
 std::string_view to_string(Status status) {
@@ -14,6 +16,25 @@ std::string_view to_string(Status status) {
       return "unverified";
   }
   return "unverified";
+}
+
+nlohmann::json model_info_json(const ModelInfo& info) {
+  nlohmann::json box = nullptr;
+  if (info.calibrated) {
+    box = {{"k1_min", info.calibrated->k1_min},
+           {"k1_max", info.calibrated->k1_max},
+           {"k2_min", info.calibrated->k2_min},
+           {"k2_max", info.calibrated->k2_max}};
+  }
+  return {{"name", info.name},
+          {"title", info.title},
+          {"citation", info.citation},
+          {"equation", info.equation},
+          {"validity", info.validity},
+          {"status", std::string(to_string(info.status))},
+          {"status_note", info.status_note},
+          {"clamped_by_default", info.clamped_by_default},
+          {"calibrated", box}};
 }
 
 }  // namespace corlab::restitution

@@ -3,6 +3,7 @@
 /// Descriptive metadata of an analytic coefficient-of-restitution (CoR) model: citation,
 /// equation, validity range and verification status.
 
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,5 +50,11 @@ struct ModelInfo {
   /// Where the model was calibrated, when known numerically (`corlab predict` warns outside).
   std::optional<DimensionlessBox> calibrated = std::nullopt;
 };
+
+/// The model's description as JSON: name, title, citation, equation, validity, status,
+/// status_note, clamped_by_default, calibrated ({k1_min, k1_max, k2_min, k2_max} or null). The one
+/// serialisation of a ModelInfo: `corlab models --format json`, the explorer's catalog and
+/// Python's `corlab.models()`.
+nlohmann::json model_info_json(const ModelInfo& info);
 
 }  // namespace corlab::restitution
