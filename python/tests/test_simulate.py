@@ -76,10 +76,18 @@ def test_result_fields_are_the_summary_keys_and_the_csv_columns():
     assert len(names) == len(set(names))
     assert {"e", "F_max", "wall_s", "k1"} <= set(names)
     assert all(f["unit"] and f["description"] for f in fields)
-    assert {f["kind"] for f in fields} <= {"real", "integer", "boolean", "text"}
+    assert {f["kind"] for f in fields} <= {"real", "integer", "boolean", "text", "real_list"}
     r = corlab.simulate({**SMALL, "impact.velocity": 1.0, "substrate.sigma_y": "none"})
     summary = {f["name"] for f in fields if f["in_summary"]}
     assert set(r) - {"config", "history"} == summary
+
+
+def test_repeated_impacts_list_each_impacts_e():
+    r = corlab.simulate({**SMALL, "impact.repeats": 3})
+    assert r["status"] == "separated"
+    assert len(r["e_impacts"]) == 3
+    assert r["e_impacts"][0] == r["e"] and r["e_last"] == r["e_impacts"][-1]
+    assert r["e_impacts"][0] < r["e_impacts"][1] < r["e_impacts"][2] < 1.0  # shakedown
 
 
 def test_history_columns_are_the_history_keys_and_the_csv_header(tmp_path, corlab_bin):

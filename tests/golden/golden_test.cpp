@@ -39,8 +39,8 @@ using nlohmann::json;
 constexpr const char* kBuild = CORLAB_GOLDEN_BUILD;
 
 /// The pinned values of a run: result fields by name (one table: result_fields.hpp).
-constexpr const char* kPinned[] = {
-    "e", "e_energy", "energy_balance_error", "steps", "element_updates", "e_coarse", "e_error"};
+constexpr const char* kPinned[] = {"e",     "e_energy",        "e_last",   "energy_balance_error",
+                                   "steps", "element_updates", "e_coarse", "e_error"};
 
 std::filesystem::path default_file() {
   return std::filesystem::path(CORLAB_SOURCE_DIR) / "tests" / "golden" / "golden.json";

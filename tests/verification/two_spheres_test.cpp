@@ -1,7 +1,7 @@
 // Verification of two deformable spheres (substrate.shape = sphere: a head-on impact on a second,
 // free sphere at rest): Hertz with R*, m*, E* (Johnson 1985, section 11.4); the symmetry
 // identity (two identical spheres approaching at 2v are each a sphere on the rigid flat at v: the
-// symmetry plane is that flat); momentum conservation.
+// symmetry plane is that flat); momentum conservation; the flat as the limit R2 -> infinity.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -27,7 +27,9 @@ TEST(TwoSpheres, ElasticSpheresOfDifferentSizeAndMaterialMatchHertz) {
   c.substrate.material = Material{.name = "aluminium (elastic)",
                                   .youngs_modulus = 70e9,
                                   .poisson_ratio = 0.33,
-                                  .density = 2700.0};
+                                  .density = 2700.0,
+                                  .yield_stress = std::nullopt,
+                                  .source = "test values"};
   const HertzReference hertz = hertz_reference(c);
   const ImpactResult r = simulate(c);
   std::printf("F_max %+.2f %%, delta_max %+.2f %%, t_c %+.2f %%, e = %.6f, balance %.2e\n",
@@ -72,6 +74,35 @@ TEST(TwoSpheres, TwoIdenticalSpheresAreEachASphereOnTheRigidFlat) {
   // (measured 1.8e-14 m/s); bound 1e-10 of v0.
   EXPECT_NEAR(p.sphere_velocity_final + p.target_velocity_final, -10.0, 1e-9);
   EXPECT_LT(p.energy_balance_error, 2e-5);
+}
+
+TEST(TwoSpheres, ALargeSecondSphereTendsToTheFlat) {
+  // The paper's pair (elastic sphere, elastic-perfectly plastic target, 5 m/s) with the target a
+  // sphere of R2 = 10 and 30 R1, against the flat, on the coarse mesh. A rate-independent impact
+  // has no length scale of its own, so e depends on the geometry only through R1/R2: linear
+  // extrapolation of e in R1/R2 to 0 must give the flat's e.
+  auto with_target_radius = [](double r2) {
+    ImpactConfig c = two_spheres(r2, 5.0);
+    c.mesh.h_min = 0.5e-3;
+    return simulate(c);
+  };
+  ImpactConfig flat_case;
+  flat_case.mesh.h_min = 0.5e-3;
+  const ImpactResult flat = simulate(flat_case);
+  const ImpactResult r10 = with_target_radius(0.35);
+  const ImpactResult r30 = with_target_radius(1.05);
+  ASSERT_TRUE(flat.separated && r10.separated && r30.separated) << r30.status_detail;
+  const double x10 = 1.0 / 10.0, x30 = 1.0 / 30.0;
+  const double extrapolated = r30.e + (r30.e - r10.e) * x30 / (x10 - x30);
+  std::printf("flat e = %.6f; R2 = 10 R1: %+.3f %%, 30 R1: %+.3f %%, extrapolated %+.3f %%\n",
+              flat.e, 100 * (r10.e / flat.e - 1), 100 * (r30.e / flat.e - 1),
+              100 * (extrapolated / flat.e - 1));
+  // Measured 2026-11-27 (AMD EPYC): -2.39 %, -0.80 %, extrapolated -0.007 % (and R2 = 3 R1
+  // -8.2 %, 100 R1 -0.17 %: first order in R1/R2 throughout). Bounds: the approach monotone, the
+  // extrapolation within 0.2 % (30 x the measurement; e scatters by ~0.5 % with h, issue 28).
+  EXPECT_LT(r10.e, r30.e);
+  EXPECT_LT(r30.e, flat.e);
+  EXPECT_NEAR(extrapolated, flat.e, 2e-3 * flat.e);
 }
 
 }  // namespace

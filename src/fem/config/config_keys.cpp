@@ -117,6 +117,11 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       "initial gap, crossed in exact free flight (also <= sphere.radius)",
       +[](ImpactConfig& c) { return &c.impact.gap; }));
   t.push_back(entry(
+      "impact.repeats", "[-]", closed(1.0, 100.0, "each impact costs a single run"),
+      "impacts of the pair on the same spot (> 1: repeated impacts carrying residual stress, "
+      "plastic strain and shape; e of each in e_impacts)",
+      +[](ImpactConfig& c) { return &c.impact.repeats; }));
+  t.push_back(entry(
       "mesh.h_min", "[m]", open_closed(0.0, 1.0), "element size at the contact",
       +[](ImpactConfig& c) { return &c.mesh.h_min; }));
   t.push_back(entry(

@@ -134,6 +134,7 @@ RunEstimate estimate_run(const ImpactConfig& c) {
   // Default t_max: 20 Hertz contact times after contact (explicit_solver.cpp).
   e.simulated_time = c.solver.t_max > 0.0 ? c.solver.t_max - c.impact.gap / c.impact.velocity
                                           : 20.0 * hertz_reference(c).contact_time;
+  e.simulated_time *= c.impact.repeats;
   e.steps = e.simulated_time / e.time_step;
   return e;
 }

@@ -135,7 +135,8 @@ std::string status_detail(RunStatus status,
                           const ImpactModel& m,
                           const ImpactState& s,
                           const ForceReport& rep,
-                          double v_com) {
+                          double v_com,
+                          double t_limit) {
   switch (status) {
     case RunStatus::kElementInverted:
       return fmt::format("element {} inverted at t = {:.6g} s (step {})", rep.inverted_element, s.t,
@@ -151,12 +152,12 @@ std::string status_detail(RunStatus status,
     case RunStatus::kMaxCompression:
       return fmt::format("stopped at maximum compression, t = {:.6g} s", s.t);
     case RunStatus::kNotSeparated:
-      return v_com <= 0.0 && s.t < m.t_max
+      return v_com <= 0.0 && s.t < t_limit
                  ? fmt::format(
                        "contact ended with the sphere moving into the substrate "
                        "(v = {:.4g} m/s)",
                        v_com)
-                 : fmt::format("no clean rebound by t_max = {:.6g} s", m.t_max);
+                 : fmt::format("no clean rebound by t_max = {:.6g} s", t_limit);
     case RunStatus::kSeparated:
       break;
   }
@@ -181,7 +182,8 @@ class TimeLoop {
         book_(m, control.stop_at_max_compression, history),
         field_times_(config.output.field_times),
         every_(config.output.history_every),
-        t_boundary_(s.t) {
+        t_boundary_(s.t),
+        t_limit_(m.t_max) {
     std::sort(field_times_.begin(), field_times_.end());
   }
 
@@ -192,8 +194,19 @@ class TimeLoop {
     return m_.levels.max_level > 0 ? run_subcycled() : run_plain();
   }
 
+  /// Another impact after a rebound (impact.repeats): the bodies sent back at the approach speed,
+  /// a fresh stop rule, the time limit one impact's length on; the next run() continues the step
+  /// the rebound was found in.
+  void relaunch() {
+    book_.relaunch(solver::relaunch_bodies(m_, s_), s_);
+    t_limit_ = s_.t + (m_.t_max - m_.t_start);
+    s_.cycle_penetrating = false;
+    resume_forces_ = m_.levels.max_level > 0;
+  }
+
   const RunBookkeeping& bookkeeping() const { return book_; }
   const ForceReport& last_forces() const { return rep_; }
+  double time_limit() const { return t_limit_; }
 
  private:
   bool cancelled() const {
@@ -225,17 +238,21 @@ class TimeLoop {
     const long long cycle = 1LL << m_.levels.max_level;
     const long long rows_every = std::max<long long>(1, every_ / cycle);
     while (true) {
-      const bool boundary = s_.step % cycle == 0;
-      const NodeSums ns = solver::move_nodes_subcycled(m_, s_);
-      if (boundary) {
-        if (auto end = cycle_boundary(ns, (s_.step / cycle) % rows_every == 0)) return *end;
+      // A relaunch comes back for the force half of the step whose boundary found the rebound.
+      if (!resume_forces_) {
+        const bool boundary = s_.step % cycle == 0;
+        const NodeSums ns = solver::move_nodes_subcycled(m_, s_);
+        if (boundary) {
+          if (auto end = cycle_boundary(ns, (s_.step / cycle) % rows_every == 0)) return *end;
+        }
       }
+      resume_forces_ = false;
       rep_ = solver::compute_forces_subcycled(m_, s_);
       if (auto end = step_failed()) return *end;
       if (s_.step % cycle == 0) {
         if (auto end = after_step()) return *end;
-      } else if (s_.t >= m_.t_max || s_.step >= m_.max_steps) {
-        return s_.t >= m_.t_max ? RunStatus::kNotSeparated : RunStatus::kStepBudgetExceeded;
+      } else if (s_.t >= t_limit_ || s_.step >= m_.max_steps) {
+        return s_.t >= t_limit_ ? RunStatus::kNotSeparated : RunStatus::kStepBudgetExceeded;
       }
     }
   }
@@ -266,7 +283,7 @@ class TimeLoop {
       if (control_.on_fields) control_.on_fields(s_.t, snapshot(m_, mesh_, s_, s_.t));
       ++next_field_;
     }
-    if (s_.t >= m_.t_max) return RunStatus::kNotSeparated;
+    if (s_.t >= t_limit_) return RunStatus::kNotSeparated;
     if (s_.step >= m_.max_steps) return RunStatus::kStepBudgetExceeded;
     if ((s_.step & (kPollEvery - 1)) == 0) {
       if (cancelled()) return RunStatus::kCancelled;
@@ -286,7 +303,9 @@ class TimeLoop {
   std::vector<double> field_times_;
   std::size_t next_field_ = 0;
   int every_;
-  double t_boundary_ = 0.0;  ///< time of the last major-cycle boundary (subcycling) [s]
+  double t_boundary_ = 0.0;     ///< time of the last major-cycle boundary (subcycling) [s]
+  double t_limit_;              ///< hard stop of the present impact [s]
+  bool resume_forces_ = false;  ///< the next subcycled step starts at its force half
   ForceReport rep_;
 };
 
@@ -311,13 +330,34 @@ ImpactResult run_impact(const ImpactConfig& config,
   res.energy_initial = m.energy_initial;
 
   TimeLoop loop(config, mesh, control, m, s, res.history);
-  const RunStatus status = loop.run();
+  RunStatus status = loop.run();
   const RunBookkeeping& book = loop.bookkeeping();
   res = finish(m, s, book.rule(), status, book.balance_max(), z_axis_surface, std::move(res));
   if (res.status != RunStatus::kSeparated && res.status_detail.empty()) {
-    res.status_detail =
-        status_detail(res.status, m, s, loop.last_forces(), solver::relative_velocity(s));
+    res.status_detail = status_detail(res.status, m, s, loop.last_forces(),
+                                      solver::relative_velocity(s), loop.time_limit());
   }
+  if (res.separated) res.e_impacts = {res.e};
+  for (int k = 2; k <= config.impact.repeats && status == RunStatus::kSeparated; ++k) {
+    loop.relaunch();
+    status = loop.run();
+    if (status == RunStatus::kSeparated) {
+      res.e_impacts.push_back(solver::relative_velocity(s) / m.velocity);
+    } else {
+      // The run's status is its last impact's; the first impact's fields stay as they were.
+      res.status = status;
+      res.separated = false;
+      res.status_detail =
+          fmt::format("impact {}: {}", k,
+                      status_detail(status, m, s, loop.last_forces(), solver::relative_velocity(s),
+                                    loop.time_limit()));
+    }
+    res.energy_balance_error = book.balance_max();
+    res.steps = s.step;
+    res.element_updates = s.element_updates;
+    res.end_time = s.t;
+  }
+  res.e_last = res.e_impacts.empty() ? kNaN : res.e_impacts.back();
   res.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   res.element_steps_per_s = static_cast<double>(s.element_updates) / res.wall_s;
   if (control.progress) control.progress(1.0);

@@ -156,6 +156,31 @@ double rebound_kinetic_energy(const ImpactModel& m, const ImpactState& s, const 
   return ns.ke - 0.5 * p * p / (m.sphere_mass + m.target_mass);
 }
 
+double relaunch_bodies(const ImpactModel& m, ImpactState& s) {
+  const double dv_sphere = -m.velocity - s.sphere_velocity;
+  const double dv_target = -s.target_velocity;
+  // The subcycled loop relaunches at a major-cycle boundary after the drift, which moved each node
+  // a step of its own level (2^L dt) ahead: that drift is redone with the new velocity, or the
+  // levels' positions would disagree by dt dv (a spurious strain). The plain loop relaunches after
+  // the force half, every node at t^{n+1}: nothing to redo.
+  const bool redo_drift = m.levels.max_level > 0;
+  double added = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i) {
+    const double dv =
+        (m.is_sphere[i] != 0.0 ? dv_sphere : (m.free_target ? dv_target : 0.0)) * m.free_z[i];
+    const double v = s.vz[i] + dv;
+    added += 0.5 * m.mass[i] * (v * v - s.vz[i] * s.vz[i]);
+    s.vz[i] = v;
+    if (redo_drift) s.z[i] += s.dt * m.levels.node_scale[i] * dv;
+  }
+  s.sphere_velocity = -m.velocity;
+  s.target_velocity = 0.0;
+  // The subcycling's open windows hold their first drift's velocities: the shifted ones now.
+  for (int k = 0; k < m.levels.max_level; ++k)
+    s.transit.open_windows(m.levels, k, s.vr.data(), s.vz.data());
+  return added;
+}
+
 void sample_hysteresis(const ImpactModel& m, ImpactState& s) {
   s.hysteresis.sample(s.force, indentation(m, s));
 }

@@ -27,6 +27,11 @@ double rebound_kinetic_energy(const ImpactModel& model,
                               const ImpactState& state,
                               const NodeSums& sums);
 
+/// Sends the bodies back at the approach speed for another impact (impact.repeats): each node's
+/// velocity shifted so that the sphere's c.o.m. moves at -v0 and a free target's is at rest again,
+/// their vibrations, stresses, plastic strain and shape kept. Returns the kinetic energy added [J].
+double relaunch_bodies(const ImpactModel& model, ImpactState& state);
+
 /// One sample of the force-indentation loop: the contact force now and the sphere's indentation
 /// at its newest c.o.m. height. The plain step samples after each force half, the subcycled one
 /// at each major-cycle boundary.

@@ -23,8 +23,8 @@ FieldValue result_member(const FieldInput& in) {
   if (in.result == nullptr) return {};
   const auto& v = in.result->*Member;
   using T = std::remove_cvref_t<decltype(v)>;
-  if constexpr (std::is_same_v<T, bool>) {
-    return v;
+  if constexpr (std::is_same_v<T, bool> || std::is_same_v<T, std::vector<double>>) {
+    return v;  // a flag or a list of reals as it is
   } else if constexpr (std::is_integral_v<T>) {
     return static_cast<long long>(v);
   } else if constexpr (std::is_floating_point_v<T>) {
@@ -42,6 +42,7 @@ constexpr FieldKind member_kind() {
   if constexpr (std::is_same_v<T, bool>) return FieldKind::boolean;
   if constexpr (std::is_integral_v<T>) return FieldKind::integer;
   if constexpr (std::is_floating_point_v<T>) return FieldKind::real;
+  if constexpr (std::is_same_v<T, std::vector<double>>) return FieldKind::real_list;
   return FieldKind::text;
 }
 
@@ -111,6 +112,12 @@ using R = ImpactResult;
 const std::array kFields{
     CORLAB_RESULT_MEMBER(e, "-", "CoR from momentum: rebound / impact c.o.m. velocity", kBoth),
     CORLAB_RESULT_MEMBER(e_energy, "-", "CoR from the sphere's rebound kinetic energy", kBoth),
+    CORLAB_RESULT_MEMBER(e_impacts,
+                         "-",
+                         "e of each impact that rebounded (impact.repeats; the first is e)",
+                         kSummary),
+    CORLAB_RESULT_MEMBER(
+        e_last, "-", "e of the last impact (= e unless impact.repeats > 1)", kBoth),
     CORLAB_RESULT_MEMBER(F_max, "N", "largest contact force", kBoth),
     CORLAB_RESULT_MEMBER(delta_max, "m", "largest indentation", kBoth),
     CORLAB_RESULT_MEMBER(t_contact, "s", "duration of contact", kBoth),
@@ -205,6 +212,8 @@ std::string_view to_string(FieldKind kind) {
       return "boolean";
     case FieldKind::text:
       return "text";
+    case FieldKind::real_list:
+      return "real_list";
   }
   return "text";
 }
@@ -220,6 +229,14 @@ std::string field_text(const FieldValue& value) {
     std::string operator()(long long v) const { return fmt::format("{}", v); }
     std::string operator()(bool v) const { return v ? "true" : "false"; }
     std::string operator()(const std::string& v) const { return v; }
+    std::string operator()(const std::vector<double>& v) const {
+      std::string out;
+      for (const double x : v) {
+        if (!out.empty()) out += ';';  // (not "literal" + string: GCC 12's -Wrestrict)
+        out += (*this)(x);
+      }
+      return out;
+    }
   };
   return std::visit(Text{}, value);
 }

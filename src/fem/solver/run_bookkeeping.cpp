@@ -16,7 +16,14 @@ RunBookkeeping::RunBookkeeping(const ImpactModel& model,
       stop_at_max_compression_(stop_at_max_compression),
       history_(history),
       rule_(model.t_wave, model.velocity),
-      v_com_prev_(-model.velocity) {}
+      v_com_prev_(-model.velocity),
+      energy_reference_(model.energy_initial) {}
+
+void RunBookkeeping::relaunch(double added_energy, const ImpactState& s) {
+  rule_ = SeparationRule(m_.t_wave, m_.velocity);
+  energy_reference_ += added_energy;
+  v_com_prev_ = relative_velocity(s);
+}
 
 std::optional<RunStatus> RunBookkeeping::sample(const ImpactState& s, double kinetic, bool row) {
   // The sphere's velocity at the sampled time: the mean of the half steps around it.
@@ -24,7 +31,7 @@ std::optional<RunStatus> RunBookkeeping::sample(const ImpactState& s, double kin
   v_com_prev_ = relative_velocity(s);
   const EnergySums& w = s.energy;
   const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact;
-  const double balance = (total - m_.energy_initial) / m_.energy_initial;
+  const double balance = (total - energy_reference_) / m_.energy_initial;
   if (!std::isfinite(balance)) {
     balance_max_ = std::numeric_limits<double>::quiet_NaN();
     return RunStatus::kNonFinite;

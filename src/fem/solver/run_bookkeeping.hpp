@@ -33,6 +33,10 @@ class RunBookkeeping {
   std::optional<RunStatus> stop(
       const ImpactState& state, double ke_sphere, double window, double since, bool penetrating);
 
+  /// A new impact (impact.repeats): the bodies were just sent back at the approach speed, adding
+  /// `added_energy` [J] of kinetic energy; a fresh stop rule, the balance against the energy now.
+  void relaunch(double added_energy, const ImpactState& state);
+
   const SeparationRule& rule() const { return rule_; }
   /// Largest |energy balance| / initial energy so far (NaN once non-finite) [-].
   double balance_max() const { return balance_max_; }
@@ -43,6 +47,9 @@ class RunBookkeeping {
   ImpactHistory& history_;
   SeparationRule rule_;
   double v_com_prev_;  ///< relative velocity at the last sample [m/s]
+  /// The total energy the balance compares with [J]: the initial kinetic energy, plus what each
+  /// relaunch added.
+  double energy_reference_;
   double balance_max_ = 0.0;
 };
 

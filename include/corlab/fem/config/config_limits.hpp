@@ -31,7 +31,7 @@ struct RunEstimate {
   double element_size = 0.0;    ///< h at the contact [m]
   double wave_speed = 0.0;      ///< largest dilatational wave speed of the two bodies [m/s]
   double time_step = 0.0;       ///< safety_factor x (h / sqrt 2) / c x damping reduction [s]
-  double simulated_time = 0.0;  ///< t_max - gap/velocity [s]
+  double simulated_time = 0.0;  ///< (t_max - gap/velocity) x impact.repeats [s]
   double steps = 0.0;           ///< simulated_time / time_step [-]
 };
 

@@ -55,6 +55,10 @@ struct SubstrateConfig {
 struct ImpactConditions {
   double velocity = 5.0;  ///< impact speed v > 0 [m/s], sphere moving towards the substrate
   double gap = 0.1e-3;    ///< initial gap [m]; crossed exactly (free flight), no steps spent
+  /// Impacts of the pair on the same spot [-]: after each rebound the bodies are sent back at
+  /// the same approach speed, carrying their residual stress, plastic strain, shape and
+  /// vibration (solver.md section 8).
+  int repeats = 1;
 };
 
 struct MeshConfig {

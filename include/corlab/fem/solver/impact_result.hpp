@@ -43,6 +43,10 @@ struct ImpactResult {
       0.0;  ///< CoR from momentum: rebound / impact c.o.m. velocity [-]; NaN unless separated
   double e_energy =
       0.0;  ///< CoR from the sphere's rebound kinetic energy [-]; NaN unless separated
+  /// e of each impact that rebounded (impact.repeats; [e] for one; the list stops at the first
+  /// impact that did not rebound, whose status is the run's) [-]
+  std::vector<double> e_impacts;
+  double e_last = 0.0;  ///< the last entry of e_impacts [-] (NaN unless the first impact rebounded)
   /// e on the mesh twice as coarse everywhere (discretisation_error.hpp) [-] (NaN unless estimated)
   double e_coarse = std::numeric_limits<double>::quiet_NaN();
   /// discretisation-error estimate of e: e +/- e_error [-] (discretisation_error.hpp; NaN unless

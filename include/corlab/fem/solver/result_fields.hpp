@@ -12,14 +12,17 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/solver/impact_result.hpp"
 
 namespace corlab::fem {
 
-/// A field's value: empty (no value, e.g. a failed run), a real number, an integer, a flag or text.
-using FieldValue = std::variant<std::monostate, double, long long, bool, std::string>;
+/// A field's value: empty (no value, e.g. a failed run), a real number, an integer, a flag, text
+/// or a list of reals (summary.json only).
+using FieldValue =
+    std::variant<std::monostate, double, long long, bool, std::string, std::vector<double>>;
 
 /// What an accessor reads. `result` is null for a run that failed before it produced a result;
 /// `wall_s` is the caller's wall-clock time of the run [s] (used where the result has none).
@@ -37,9 +40,9 @@ enum FieldOutput : std::uint8_t {
 };
 
 /// The type of a field's value (for readers: text columns are never parsed as numbers).
-enum class FieldKind : std::uint8_t { real, integer, boolean, text };
+enum class FieldKind : std::uint8_t { real, integer, boolean, text, real_list };
 
-/// "real", "integer", "boolean" or "text".
+/// "real", "integer", "boolean", "text" or "real_list".
 std::string_view to_string(FieldKind kind);
 
 struct ResultField {
