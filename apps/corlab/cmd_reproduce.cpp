@@ -184,7 +184,7 @@ const CommandRegistration kRegistration{Command{
                      "demo and test fixture, not the reproduction)")
           ->check(CLI::IsMember({"paper", "coarse"}));
       sub.add_flag("!--no-error-estimate", args->error_estimate,
-                   "skip the companion runs at 2h that give each e its error bar");
+                   "skip the companion runs on coarser meshes that give each e its error bar");
       sub.add_option("--out", args->out, "output directory (resumable)")->required();
       sub.add_option("--jobs", args->jobs, "runs at the same time (0 = all cores)");
       sub.add_option("--only", args->only,

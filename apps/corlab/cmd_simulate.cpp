@@ -115,7 +115,8 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--out", opt->out_dir, "output directory")->required();
       sub.add_flag("--quiet", opt->quiet, "no progress on stderr");
       sub.add_flag("--error-estimate", opt->error_estimate,
-                   "also run at 2h for the error bar of e (e_error in summary.json)");
+                   "also run on coarser meshes (sqrt 2, 2, 2 sqrt 2 h) for the error bar of e "
+                   "(e_error in summary.json)");
       sub.footer(fem::config_keys_help());
       return [opt] { return run_simulate(*opt); };
     },

@@ -164,8 +164,9 @@ const CommandRegistration kRegistration{Command{
       sub.add_flag("--estimate", args->estimate,
                    "with --dry-run: each case's estimated cost (elements x expected steps, "
                    "before subcycling and mass scaling)");
-      sub.add_flag("--error-estimate", args->error_estimate,
-                   "also run each case at 2h for its error bar (e_error, e_coarse columns)");
+      sub.add_flag(
+          "--error-estimate", args->error_estimate,
+          "also run each case on coarser meshes for its error bar (e_error, e_coarse columns)");
       return [args] { return run(*args); };
     },
     40}};

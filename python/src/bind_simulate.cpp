@@ -2,6 +2,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -13,6 +14,8 @@
 #include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/output/impact_output.hpp"
+#include "corlab/fem/solver/discretisation_error.hpp"
+#include "corlab/fem/solver/error_bar.hpp"
 #include "corlab/fem/solver/history_columns.hpp"
 #include "corlab/fem/solver/result_fields.hpp"
 #include "corlab/fem/solver/simulate.hpp"
@@ -143,6 +146,10 @@ py::object json_to_python(const nlohmann::json& j) {
 }
 
 void bind_simulate(py::module_& m) {
+  // pybind11 keeps its NumPy API in a function-local static that imports numpy on first use: two
+  // threads calling simulate() first at once deadlocked (one inside the static's guard, waiting
+  // for the GIL the other holds while it waits for the guard). Made here, at import, under the GIL.
+  (void)py::array_t<double>(0);
   m.def("result_fields", &result_fields_list,
         "The result fields (one table in C++, src/fem/solver/result_fields.cpp): a list of dicts "
         "with name, unit (SI; '-' dimensionless), description, kind (real | integer | boolean | "
@@ -155,8 +162,27 @@ void bind_simulate(py::module_& m) {
         "description and csv_header (history.csv's column).");
 
   m.def(
+      "error_bar",
+      [](const std::string& name, const std::vector<double>& e, const std::vector<double>& ratios) {
+        return fem::error_bar(name, e, ratios);
+      },
+      py::arg("name"), py::arg("e"), py::arg("ratios"),
+      "The error bar U [-] of e[0] (e[0] +/- U) from the same case's e on meshes `ratios` times "
+      "coarser (ratios[0] = 1), by the estimator `name` (error_bar_estimators(); "
+      "corlab/fem/solver/error_bar.hpp). NaN where a value is not finite.");
+  m.def(
+      "error_bar_estimators",
+      [] {
+        std::vector<std::string> names;
+        for (const auto n : fem::error_bar_estimators()) names.emplace_back(n);
+        return names;
+      },
+      "The error-bar estimators' names (corlab/fem/solver/error_bar.hpp).");
+
+  m.def(
       "simulate",
-      [](const py::dict& settings, std::optional<std::string> config_file) {
+      [](const py::dict& settings, std::optional<std::string> config_file, double mesh_ratio,
+         bool error_estimate) {
         fem::ImpactConfig config;
         if (config_file) config = fem::load_impact_config(*config_file);
         std::vector<std::string> items;
@@ -165,11 +191,16 @@ void bind_simulate(py::module_& m) {
           items.push_back(name + "=" + setting_text(name, value));
         }
         fem::apply_settings(config, items, "settings");
+        if (!(mesh_ratio > 0.0) || !std::isfinite(mesh_ratio)) {
+          throw_invalid("mesh_ratio", mesh_ratio, "a finite number > 0");
+        }
+        if (mesh_ratio != 1.0) config = fem::coarsened(config, mesh_ratio);
         fem::validate(config);
         fem::ImpactResult result;
         {
           py::gil_scoped_release release;
-          result = fem::simulate(config);
+          result =
+              error_estimate ? fem::simulate_with_error_estimate(config) : fem::simulate(config);
         }
         if (const std::string late = fem::unreached_output_times(config, result); !late.empty()) {
           py::module_::import("warnings").attr("warn")(late);
@@ -177,11 +208,16 @@ void bind_simulate(py::module_& m) {
         return result_dict(result, config);
       },
       py::arg("settings") = py::dict(), py::arg("config_file") = py::none(),
+      py::arg("mesh_ratio") = 1.0, py::arg("error_estimate") = false,
       R"(Runs one explicit FE impact (elastic sphere on an elastic-plastic substrate).
 
 settings: {key: value} with the keys of `corlab simulate --set` (SI units), e.g.
   {"impact.velocity": 2.0, "substrate.material": "steel_ma2023,sy=700e6"}.
 config_file: optional TOML case file applied before `settings`.
+mesh_ratio: the built-in mesh that many times coarser everywhere (0.5: twice as fine), as the
+  error estimate's companions are (corlab::fem::coarsened); 1 = as configured.
+error_estimate: also run the companions and set e_error, e_coarse (corlab simulate
+  --error-estimate).
 Returns a dict: e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], ...,
 "config" (the case), "history" (numpy arrays: time [s], contact_force [N], indentation [m], ...).
 The GIL is released during the run. Bad input raises ValueError.)");

@@ -82,6 +82,23 @@ def test_result_fields_are_the_summary_keys_and_the_csv_columns():
     assert set(r) - {"config", "history"} == summary
 
 
+def test_simulate_runs_in_two_threads_from_a_fresh_interpreter():
+    """The GIL is released during a run; the first two calls at once used to deadlock in
+    pybind11's NumPy API set-up (a fresh interpreter: in this one it is set up already)."""
+    import subprocess
+    import sys
+    code = (
+        "import threading, corlab\n"
+        f"s = {SMALL!r}\n"
+        "out = []\n"
+        "ts = [threading.Thread(target=lambda: out.append(corlab.simulate(s)['e']), daemon=True)"
+        " for _ in range(2)]\n"
+        "[t.start() for t in ts]\n"
+        "[t.join(60) for t in ts]\n"
+        "assert len(out) == 2 and out[0] == out[1], out\n")
+    subprocess.run([sys.executable, "-c", code], check=True, timeout=150)
+
+
 def test_repeated_impacts_list_each_impacts_e():
     r = corlab.simulate({**SMALL, "impact.repeats": 3})
     assert r["status"] == "separated"

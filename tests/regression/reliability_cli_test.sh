@@ -98,9 +98,9 @@ tiny=(--set sphere.radius=2.5e-3 --set substrate.radius=2.5e-3 --set substrate.d
       --set mesh.h_min=0.125e-3 --set mesh.h_max=1e-3 --set mesh.contact_elements=0)
 limited "$corlab" simulate "${tiny[@]}" --error-estimate --quiet \
   --out "$work/ee" > "$work/out" 2> "$work/err" || fail "error estimate run: $(cat "$work/err")"
-grep -q "^corlab simulate: warning: no error bar: no companion mesh at 2h: " "$work/err" ||
+grep -q "^corlab simulate: warning: no error bar: no companion mesh at 1.41h: " "$work/err" ||
   fail "no reason for the missing error bar: $(cat "$work/err")"
-grep -q '"e_error_reason": "no companion mesh at 2h: ' "$work/ee/summary.json" ||
+grep -q '"e_error_reason": "no companion mesh at 1.41h: ' "$work/ee/summary.json" ||
   fail "summary.json has no e_error_reason"
 if limited "$corlab" simulate --set mesh.file="$src/data/meshes/example_impact.msh" --error-estimate \
     --quiet --out "$work/ef" > "$work/out" 2> "$work/err"; then
@@ -118,7 +118,7 @@ printf '[grid]\n"impact.velocity" = [2.0]\n' >> "$work/ee.toml"
 limited "$corlab" sweep "$work/ee.toml" --out "$work/ee_sweep" --error-estimate --quiet \
   > "$work/out" 2> "$work/err" || fail "error-estimate sweep: $(cat "$work/err")"
 head -1 "$work/ee_sweep/results.csv" | grep -q ",e_error_reason," || fail "no e_error_reason column"
-grep -q ",no companion mesh at 2h: " "$work/ee_sweep/results.csv" || fail "no reason in the row"
+grep -q ",no companion mesh at 1.41h: " "$work/ee_sweep/results.csv" || fail "no reason in the row"
 
 # 10. The elastic particle pair of the README's old dem example is refused with the ways out.
 refused "pair 1-1 (alumina_ma2023-alumina_ma2023) = .*--pair alumina_ma2023/alumina_ma2023=E.*--wall-only" \

@@ -26,7 +26,7 @@ struct ReproduceOptions {
   /// "paper" (the reproduction: the paper's mesh and grids) or "coarse" (a demo and test
   /// fixture, not the reproduction); the subfolder of studies_dir
   std::string preset = "paper";
-  /// Every sweep run also runs on a mesh twice as coarse everywhere for its error bar
+  /// Every sweep run also runs on meshes sqrt 2, 2 and 2 sqrt 2 times as coarse for its error bar
   /// (e_error, discretisation_error.hpp; +11-12 % CPU time per run).
   bool error_estimate = true;
   std::filesystem::path out_dir;              ///< output directory (created)

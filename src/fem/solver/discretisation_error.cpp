@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/solver/error_bar.hpp"
 
 namespace corlab::fem {
 
@@ -25,13 +27,6 @@ ImpactConfig coarsened(const ImpactConfig& config, double ratio) {
   return c;
 }
 
-double grid_convergence_index(double e_fine, double e_coarse, double ratio) {
-  if (!std::isfinite(e_fine) || !std::isfinite(e_coarse)) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  return kGciSafetyFactor * std::abs(e_fine - e_coarse) / (std::pow(ratio, kGciOrder) - 1.0);
-}
-
 ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
                                           const SimulationControl& control) {
   ImpactResult fine = simulate(config, control);
@@ -42,29 +37,46 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   }
   SimulationControl quiet;
   quiet.cancel = control.cancel;
-  ImpactResult coarse;
-  try {
-    coarse = simulate(coarsened(config), quiet);
-  } catch (const InputError& err) {
-    // no coarser mesh is allowed (e.g. beyond R / 20): no error bar, e_error NaN, said why
-    fine.e_error_reason = std::string("no companion mesh at 2h: ") + err.what();
-    return fine;
+  // The grids the estimator reads: the run's own (ratio 1) and its coarser companions.
+  std::vector<double> e{fine.e};
+  std::vector<double> ratios{1.0};
+  std::string reason;
+  for (const double ratio : kErrorBarRatios) {
+    ImpactResult coarse;
+    try {
+      coarse = simulate(coarsened(config, ratio), quiet);
+    } catch (const InputError& err) {
+      // no coarser mesh allowed (e.g. beyond R / 20): the estimate uses the grids it has
+      if (reason.empty())
+        reason = fmt::format("no companion mesh at {:.3g}h: {}", ratio, err.what());
+      continue;
+    }
+    fine.wall_s += coarse.wall_s;
+    if (coarse.status == RunStatus::kCancelled) {
+      fine.status = RunStatus::kCancelled;
+      fine.status_detail = "interrupted";
+      return fine;
+    }
+    if (ratio == kErrorRefinementRatio) fine.e_coarse = coarse.e;
+    if (coarse.status != RunStatus::kSeparated) {
+      if (reason.empty()) {
+        reason = fmt::format("the companion run at {:.3g}h ended as {}{}", ratio,
+                             to_string(coarse.status),
+                             coarse.status_detail.empty() ? "" : " (" + coarse.status_detail + ")");
+      }
+      continue;
+    }
+    e.push_back(coarse.e);
+    ratios.push_back(ratio);
   }
-  if (coarse.status == RunStatus::kCancelled) {
-    fine.status = RunStatus::kCancelled;
-    fine.status_detail = "interrupted";
-    return fine;
-  }
-  fine.e_coarse = coarse.e;
-  fine.e_error = grid_convergence_index(fine.e, coarse.e);
-  if (!std::isfinite(fine.e_error)) {
-    const ImpactResult& failed = fine.status != RunStatus::kSeparated ? fine : coarse;
+  if (fine.status != RunStatus::kSeparated) {
     fine.e_error_reason =
-        fmt::format("{} ended as {}{}", &failed == &fine ? "the run" : "the companion run at 2h",
-                    to_string(failed.status),
-                    failed.status_detail.empty() ? "" : " (" + failed.status_detail + ")");
+        fmt::format("the run ended as {}{}", to_string(fine.status),
+                    fine.status_detail.empty() ? "" : " (" + fine.status_detail + ")");
+    return fine;
   }
-  fine.wall_s += coarse.wall_s;
+  fine.e_error = error_bar(kDefaultErrorBar, e, ratios);
+  if (!std::isfinite(fine.e_error)) fine.e_error_reason = reason;
   return fine;
 }
 

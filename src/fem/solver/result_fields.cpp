@@ -150,7 +150,11 @@ const std::array kFields{
     ResultField{"wall_s", "s", "wall-clock time of the run", FieldKind::real, &wall_time, kBoth,
                 true},
     CORLAB_MACHINE_MEMBER(element_steps_per_s, "1/s", "throughput", kBoth),
-    CORLAB_RESULT_MEMBER(e_error, "-", "discretisation-error estimate of e (two-grid GCI)", kBoth),
+    CORLAB_RESULT_MEMBER(
+        e_error,
+        "-",
+        "discretisation-error bar of e: e +/- e_error (scatter estimator, error_bar.hpp)",
+        kBoth),
     CORLAB_RESULT_MEMBER(
         e_coarse, "-", "e on the mesh twice as coarse (error-bar companion)", kBoth),
     CORLAB_RESULT_MEMBER(suspect, "-", "why the run is suspect (empty: it is not)", kBoth),

@@ -52,7 +52,7 @@ struct ImpactResult {
   /// discretisation-error estimate of e: e +/- e_error [-] (discretisation_error.hpp; NaN unless
   /// estimated)
   double e_error = std::numeric_limits<double>::quiet_NaN();
-  /// why an error estimate that was asked for has no e_error (no companion mesh at 2h, mesh.file,
+  /// why an error estimate that was asked for has no e_error (no companion mesh, mesh.file,
   /// a companion or run without a clean rebound); empty when it has one or was not asked for
   std::string e_error_reason;
   double F_max = 0.0;               ///< largest contact force [N]

@@ -1,23 +1,17 @@
-// Two-grid GCI and the coarsened companion config (discretisation_error.hpp).
+// The coarsened companion configs and the run with its error estimate (discretisation_error.hpp).
 #include "corlab/fem/solver/discretisation_error.hpp"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <string>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/solver/error_bar.hpp"
 
 namespace corlab::fem {
 namespace {
-
-TEST(DiscretisationError, GciIsThreeTimesTheChangeOverThree) {
-  // Fs = 3, p = 2, r = 2: GCI = 3 |de| / 3 = |de|; the paper case's (0.5, 0.25) mm pair.
-  EXPECT_NEAR(grid_convergence_index(0.5354, 0.5374), 0.0020, 1e-12);
-  EXPECT_NEAR(grid_convergence_index(0.5374, 0.5354), 0.0020, 1e-12);
-  // ratio 1.5: 3 |de| / (2.25 - 1)
-  EXPECT_NEAR(grid_convergence_index(0.5, 0.51, 1.5), 3.0 * 0.01 / 1.25, 1e-12);
-  EXPECT_TRUE(std::isnan(grid_convergence_index(0.5, std::nan(""))));
-}
 
 TEST(DiscretisationError, CoarsenedDoublesEveryElement) {
   ImpactConfig c;
@@ -43,13 +37,20 @@ TEST(DiscretisationError, CoarsenedDoublesEveryElement) {
 
 TEST(DiscretisationError, EstimateOnACoarseRun) {
   ImpactConfig c;
-  c.mesh.h_min = 0.8e-3;  // fast: a few thousand steps; the companion at 1.6 mm < R / 20
+  c.mesh.h_min = 0.8e-3;  // fast: a few thousand steps; companions up to 1.6 mm < R / 20
   c.mesh.contact_elements = 0.0;
   const ImpactResult r = simulate_with_error_estimate(c);
   ASSERT_EQ(r.status, RunStatus::kSeparated);
   EXPECT_TRUE(std::isfinite(r.e_coarse));
   EXPECT_NE(r.e_coarse, r.e);
-  EXPECT_DOUBLE_EQ(r.e_error, std::abs(r.e - r.e_coarse));
+  // The companions at sqrt 2 h and 2h (2 sqrt 2 h = 2.26 mm is beyond R / 20 and left out).
+  const double e_sqrt2 = simulate(coarsened(c, std::sqrt(2.0))).e;
+  EXPECT_EQ(r.e_coarse, simulate(coarsened(c, 2.0)).e);
+  const std::array<double, 3> e{r.e, e_sqrt2, r.e_coarse};
+  const std::array<double, 3> ratios{1.0, std::sqrt(2.0), 2.0};
+  EXPECT_EQ(r.e_error, error_bar(kDefaultErrorBar, e, ratios));
+  EXPECT_GT(r.e_error, 0.0);
+  EXPECT_TRUE(r.e_error_reason.empty()) << r.e_error_reason;
   const ImpactResult plain = simulate(c);
   EXPECT_EQ(plain.e, r.e);  // the estimate does not change the run itself
   EXPECT_TRUE(std::isnan(plain.e_error));
@@ -63,13 +64,15 @@ namespace {
 
 TEST(DiscretisationError, NoValidCompanionMeansNoErrorBar) {
   ImpactConfig c;
-  c.mesh.h_min = 1.5e-3;  // 2h = 3 mm > R / 20: the companion mesh is refused
+  c.mesh.h_min = 1.5e-3;  // sqrt 2 h = 2.1 mm > R / 20: every companion mesh is refused
   c.mesh.contact_elements = 0.0;
   const ImpactResult r = simulate_with_error_estimate(c);
   EXPECT_EQ(r.status, RunStatus::kSeparated);
   EXPECT_TRUE(std::isfinite(r.e));
   EXPECT_TRUE(std::isnan(r.e_error));
   EXPECT_TRUE(std::isnan(r.e_coarse));
+  EXPECT_NE(r.e_error_reason.find("no companion mesh at 1.41h"), std::string::npos)
+      << r.e_error_reason;
 }
 
 }  // namespace

@@ -1,0 +1,105 @@
+// Error-bar estimators over several grids (error_bar.hpp): the least-squares fits recover exact
+// power laws, the estimators' limits, bad input.
+#include "corlab/fem/solver/error_bar.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "corlab/core/error.hpp"
+
+namespace corlab::fem {
+namespace {
+
+const std::array<double, 4> kRatios{1.0, std::sqrt(2.0), 2.0, 2.0 * std::sqrt(2.0)};
+const std::array<double, 4> kUniform{0.25, 0.25, 0.25, 0.25};
+
+std::vector<double> power_law(double e0, double a, double p) {
+  std::vector<double> e;
+  for (const double h : kRatios) e.push_back(e0 + a * std::pow(h, p));
+  return e;
+}
+
+TEST(ErrorBar, FreeOrderFitRecoversAnExactPowerLaw) {
+  const std::vector<double> e = power_law(0.53, 0.004, 1.5);
+  const ConvergenceFit f = fit_free_order(e, kRatios, kUniform);
+  ASSERT_TRUE(f.valid);
+  EXPECT_NEAR(f.order, 1.5, 1e-6);
+  EXPECT_NEAR(f.e0, 0.53, 1e-9);
+  EXPECT_NEAR(f.fit_1, 0.534, 1e-9);
+  EXPECT_NEAR(f.sigma, 0.0, 1e-9);
+}
+
+TEST(ErrorBar, FixedOrdersFitTwoTerms) {
+  std::vector<double> e;
+  for (const double h : kRatios) e.push_back(0.4 - 0.01 * h + 0.003 * h * h);
+  const std::array<double, 2> orders{1.0, 2.0};
+  const ConvergenceFit f = fit_fixed_orders(e, kRatios, kUniform, orders);
+  ASSERT_TRUE(f.valid);
+  EXPECT_NEAR(f.e0, 0.4, 1e-12);
+  EXPECT_NEAR(f.fit_1, 0.393, 1e-12);
+  EXPECT_NEAR(f.sigma, 0.0, 1e-12);
+}
+
+TEST(ErrorBar, LeastSquaresOnATrustedOrderIsOneAndAQuarterTimesTheError) {
+  // p = 1.5 lies in [0.5, 2.1) and the fit is exact: U = 1.25 |e_1 - e_0|.
+  const std::vector<double> e = power_law(0.53, 0.004, 1.5);
+  EXPECT_NEAR(error_bar("least_squares", e, kRatios), 1.25 * 0.004, 1e-8);
+}
+
+TEST(ErrorBar, LeastSquaresOutsideTheTrustedOrdersUsesTheSafetyFactorThree) {
+  // p = 3 (too fast to trust): the best of the p = 1, 2, (1, 2) fits, Fs = 3, plus its residuals.
+  // Those fits miss the curvature (0.534 ... 0.62 over the grids), so the bar is wide: it covers
+  // three times the true error and stays below the values' whole spread.
+  const std::vector<double> e = power_law(0.53, 0.004, 3.0);
+  const double u = error_bar("least_squares", e, kRatios);
+  EXPECT_GT(u, 3.0 * 0.004);
+  EXPECT_LT(u, e.back() - e.front());
+}
+
+TEST(ErrorBar, ScatterWiderThanTheDataRangeWidensTheBar) {
+  // Non-monotone values (as e(h) of the paper case): the bar is not smaller than the values'
+  // own spread around e_1.
+  const std::vector<double> e{0.5349, 0.5421, 0.5367, 0.5384};
+  const double u = error_bar("least_squares", e, kRatios);
+  EXPECT_GT(u, 0.5384 - 0.5349);
+  EXPECT_TRUE(std::isfinite(u));
+}
+
+TEST(ErrorBar, ScatterIsTwoAndAHalfDeviationsOfTheFinerValue) {
+  // sigma^2 = mean of (e_i - e_1)^2 / (1 + h_i^2) over the three coarser grids.
+  const double d = 0.003;
+  const std::vector<double> e{0.5, 0.5 + d, 0.5 - d, 0.5};
+  const double sigma = std::sqrt((d * d / 3.0 + d * d / 5.0) / 3.0);
+  EXPECT_NEAR(error_bar("scatter", e, kRatios), 2.5 * sigma * std::sqrt(1.25), 1e-15);
+  // A single coarser grid is enough for a value; the default estimator is the first listed.
+  const std::array<double, 2> two{0.5, 0.51};
+  const std::array<double, 2> ratios{1.0, 2.0};
+  EXPECT_NEAR(error_bar("scatter", two, ratios), 2.5 * 0.01 / std::sqrt(5.0) * std::sqrt(1.25),
+              1e-15);
+  EXPECT_EQ(error_bar_estimators().front(), "scatter");
+}
+
+TEST(ErrorBar, TwoGridIsTheGci) {
+  const std::vector<double> e{0.5349, 0.5367, 0.5384, 0.5421};
+  EXPECT_NEAR(error_bar("two_grid", e, kRatios), 0.5384 - 0.5349, 1e-15);
+}
+
+TEST(ErrorBar, EqualValuesHaveNoBarAndNonFiniteOnesNoValue) {
+  const std::vector<double> same(4, 0.5);
+  EXPECT_EQ(error_bar("least_squares", same, kRatios), 0.0);
+  std::vector<double> failed{0.5, 0.51, std::nan(""), 0.52};
+  EXPECT_TRUE(std::isnan(error_bar("least_squares", failed, kRatios)));
+  EXPECT_TRUE(std::isnan(error_bar("two_grid", failed, kRatios)));
+}
+
+TEST(ErrorBar, BadInputNamesItsField) {
+  const std::vector<double> e{0.5, 0.51};
+  EXPECT_THROW(error_bar("gci3", power_law(0.5, 0.01, 1.0), kRatios), InputError);
+  EXPECT_THROW(error_bar("least_squares", e, kRatios), InputError);
+}
+
+}  // namespace
+}  // namespace corlab::fem
