@@ -142,3 +142,18 @@ def test_cli_predict_takes_a_velocity_list(corlab_bin):
         done = subprocess.run(args + [bad], capture_output=True, text=True)
         assert done.returncode == 2 and done.stderr.count("\n") == 1, (bad, done.stderr)
         assert "velocity" in done.stderr
+
+
+def test_oblique_rebound_slides_by_the_coulomb_identity():
+    """corlab.oblique_rebound is the C++ rigid-body theory (oblique_impact.hpp)."""
+    theta = math.radians(60.0)
+    vn, vt = 3.9 * math.cos(theta), 3.9 * math.sin(theta)
+    r = corlab.oblique_rebound(vn, vt, 2.5e-3, normal_restitution=0.8, friction=0.092)
+    assert r["slides"]
+    e_t = 1 - 0.092 * 1.8 / math.tan(theta)
+    assert r["tangential_restitution"] == pytest.approx(e_t, rel=1e-12)
+    assert r["spin"] * 2.5e-3 == pytest.approx(2.5 * 0.092 * 1.8 * vn, rel=1e-12)
+    rolling = corlab.oblique_rebound(vn, 0.1 * vn, 2.5e-3, normal_restitution=0.8, friction=0.5)
+    assert not rolling["slides"] and rolling["tangential_restitution"] == pytest.approx(5 / 7)
+    with pytest.raises(ValueError, match="friction"):
+        corlab.oblique_rebound(1.0, 0.0, 1e-3, friction=-1.0)
