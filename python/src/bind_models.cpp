@@ -142,6 +142,36 @@ void bind_corlab2026(py::module_& m) {
       "The shipped coefficients of corlab's model (data/fe_restitution/model_fit.json).");
 }
 
+/// corlab.oblique_rebound: the rigid-body theory of an oblique impact (oblique_impact.hpp).
+void bind_oblique_rebound(py::module_& m) {
+  m.def(
+      "oblique_rebound",
+      [](double normal_velocity, double tangential_velocity, double radius, double spin,
+         double normal_restitution, double friction, double tangential_restitution,
+         double gyration) {
+        const restitution::ObliqueRebound r = restitution::rigid_body_rebound(
+            {normal_velocity, tangential_velocity, spin, radius},
+            {normal_restitution, friction, tangential_restitution, gyration});
+        py::dict d;
+        d["normal_velocity"] = r.normal_velocity;
+        d["tangential_velocity"] = r.tangential_velocity;
+        d["spin"] = r.spin;
+        d["tangential_restitution"] = r.tangential_restitution;
+        d["rebound_angle"] = r.rebound_angle;
+        d["slides"] = r.slides;
+        return d;
+      },
+      py::arg("normal_velocity"), py::arg("tangential_velocity"), py::arg("radius"),
+      py::arg("spin") = 0.0, py::arg("normal_restitution") = 1.0, py::arg("friction") = 0.0,
+      py::arg("tangential_restitution") = 0.0, py::arg("gyration") = 0.4,
+      "Rigid-body rebound of a sphere from a fixed flat with Coulomb friction "
+      "(corlab/restitution/oblique_impact.hpp): velocities [m/s] (normal > 0 towards the flat), "
+      "radius [m], spin [rad/s] (positive in the rolling sense), e_n, mu, the sticking contact "
+      "point's tangential restitution beta and I/(m R^2). Returns a dict: normal_velocity, "
+      "tangential_velocity, spin, tangential_restitution (e_t), rebound_angle [deg from the "
+      "normal], slides. Bad input raises ValueError.");
+}
+
 }  // namespace
 
 void bind_models(py::module_& m) {
@@ -200,32 +230,7 @@ void bind_models(py::module_& m) {
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"),
       "The model's yield velocity [m/s] (e = 1 below it); warns for an unverified model.");
-  m.def(
-      "oblique_rebound",
-      [](double normal_velocity, double tangential_velocity, double radius, double spin,
-         double normal_restitution, double friction, double tangential_restitution,
-         double gyration) {
-        const restitution::ObliqueRebound r = restitution::rigid_body_rebound(
-            {normal_velocity, tangential_velocity, spin, radius},
-            {normal_restitution, friction, tangential_restitution, gyration});
-        py::dict d;
-        d["normal_velocity"] = r.normal_velocity;
-        d["tangential_velocity"] = r.tangential_velocity;
-        d["spin"] = r.spin;
-        d["tangential_restitution"] = r.tangential_restitution;
-        d["rebound_angle"] = r.rebound_angle;
-        d["slides"] = r.slides;
-        return d;
-      },
-      py::arg("normal_velocity"), py::arg("tangential_velocity"), py::arg("radius"),
-      py::arg("spin") = 0.0, py::arg("normal_restitution") = 1.0, py::arg("friction") = 0.0,
-      py::arg("tangential_restitution") = 0.0, py::arg("gyration") = 0.4,
-      "Rigid-body rebound of a sphere from a fixed flat with Coulomb friction "
-      "(corlab/restitution/oblique_impact.hpp): velocities [m/s] (normal > 0 towards the flat), "
-      "radius [m], spin [rad/s] (positive in the rolling sense), e_n, mu, the sticking contact "
-      "point's tangential restitution beta and I/(m R^2). Returns a dict: normal_velocity, "
-      "tangential_velocity, spin, tangential_restitution (e_t), rebound_angle [deg from the "
-      "normal], slides. Bad input raises ValueError.");
+  bind_oblique_rebound(m);
 }
 
 }  // namespace corlab::python
