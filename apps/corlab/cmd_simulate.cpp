@@ -1,5 +1,6 @@
 // `corlab simulate`: one explicit FE impact; writes summary.json, history.csv, fields_<t>.vtu.
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
@@ -74,6 +75,9 @@ int run_simulate(const SimulateOptions& opt) {
   if (clean && std::isfinite(result.e_error)) {
     fmt::print("e = {:.4f} +/- {:.4f} (discretisation error; e at 2h = {:.4f})\n", result.e,
                result.e_error, result.e_coarse);
+  }
+  if (result.e_impacts.size() > 1) {
+    fmt::print("e of each impact (impact.repeats): {:.4f}\n", fmt::join(result.e_impacts, ", "));
   }
   if (clean) {
     fmt::print(

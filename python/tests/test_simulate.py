@@ -107,6 +107,19 @@ def test_repeated_impacts_list_each_impacts_e():
     assert r["e_impacts"][0] < r["e_impacts"][1] < r["e_impacts"][2] < 1.0  # shakedown
 
 
+def test_cli_prints_each_impacts_e(tmp_path, corlab_bin):
+    import json
+    import subprocess
+    cmd = [corlab_bin, "simulate", "--quiet", "--out", str(tmp_path), "--set", "impact.repeats=3"]
+    for key, value in SMALL.items():
+        cmd += ["--set", f"{key}={value}"]
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    listed = ", ".join(f"{e:.4f}" for e in summary["e_impacts"])
+    assert len(summary["e_impacts"]) == 3
+    assert f"e of each impact (impact.repeats): {listed}\n" in out
+
+
 def test_history_columns_are_the_history_keys_and_the_csv_header(tmp_path, corlab_bin):
     """One table (history_columns.cpp): simulate()'s history arrays and history.csv's header."""
     import csv
