@@ -4,6 +4,7 @@
 // Sample runs:
 //   corlab dataset design --out studies/dataset/fe_restitution.toml
 //   corlab dataset design --points 64            # the spec on stdout
+//   corlab dataset design --box pairs --out studies/dataset/fe_restitution_pairs.toml
 //   corlab sweep studies/dataset/fe_restitution.toml --out out/dataset --error-estimate
 //   corlab dataset export out/dataset --out data/fe_restitution
 #include <fmt/core.h>
@@ -22,14 +23,18 @@ namespace {
 
 struct DesignArgs {
   std::size_t points = 2048;
+  std::string box = "flat";
   std::string out;
 };
 
 int run_design(const DesignArgs& args) {
   if (args.points < 1) throw_invalid("--points", static_cast<double>(args.points), ">= 1");
-  dataset::DatasetDesign design;
+  if (args.box != "flat" && args.box != "pairs") throw_invalid("--box", args.box, "flat | pairs");
+  dataset::DatasetDesign design =
+      args.box == "pairs" ? dataset::pair_design() : dataset::DatasetDesign{};
   design.points = args.points;
   std::string command = "corlab dataset design";
+  if (args.box != "flat") command += fmt::format(" --box {}", args.box);
   if (args.points != dataset::DatasetDesign{}.points) {
     command += fmt::format(" --points {}", args.points);
   }
@@ -69,6 +74,12 @@ const CommandRegistration kRegistration{Command{
           "design", "Write the Sobol design of the dimensionless box as a `corlab sweep` spec");
       auto a = std::make_shared<DesignArgs>();
       design->add_option("--points", a->points, "Sobol points 0 .. N-1 (2^m: stratified)")
+          ->capture_default_str();
+      design
+          ->add_option("--box", a->box,
+                       "flat: sphere on a flat, equal densities (fe_restitution); pairs: "
+                       "particle-particle and particle-wall, E ratio 0.05-20, density ratio "
+                       "0.1-10, R1/R2 0-1 (fe_restitution_pairs)")
           ->capture_default_str();
       design->add_option("--out", a->out, "spec file to write (default: stdout)");
       auto* exporter = sub.add_subcommand(

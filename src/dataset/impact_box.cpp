@@ -23,20 +23,51 @@ double point_effective_modulus(const ImpactBox& box, const DimensionlessImpact& 
                            box.substrate_modulus, p.nu_substrate);
 }
 
+// rho* of the point's pair [kg/m^3].
+double point_effective_density(const ImpactBox& box, const DimensionlessImpact& p) {
+  return restitution::pair_effective_density(p.radius_ratio, p.density_ratio * box.density,
+                                             p.density_ratio);
+}
+
 // Largest impact speed of the point: velocity_max, or less where the damage number
-// rho v^2 / sigma_y would pass its bound [m/s].
-double speed_limit(const ImpactBox& box, double substrate_yield) {
-  return std::min(box.velocity_max,
-                  std::sqrt(box.damage_number_max * substrate_yield / box.density));
+// rho* v^2 / sigma_y would pass its bound [m/s].
+double speed_limit(const ImpactBox& box, const DimensionlessImpact& p, double substrate_yield) {
+  return std::min(box.velocity_max, std::sqrt(box.damage_number_max * substrate_yield /
+                                              point_effective_density(box, p)));
+}
+
+// The pair's first yield (v_y with rho*).
+restitution::FirstYield point_first_yield(const ImpactBox& box, const DimensionlessImpact& p) {
+  const PointMaterials m = point_materials(box, p);
+  return restitution::first_yield(m.sphere, m.substrate, point_effective_density(box, p));
 }
 
 std::string text(double v) { return fmt::format("{}", v); }
 
 }  // namespace
 
+ImpactBox pair_box() {
+  ImpactBox box;
+  box.modulus_ratio = {0.05, 20.0};
+  box.density_ratio = {0.1, 10.0};
+  box.flat_fraction = 0.25;
+  box.radius_ratio = {0.1, 1.0};
+  return box;
+}
+
+bool is_pair_box(const ImpactBox& box) {
+  return box.density_ratio.min != 1.0 || box.density_ratio.max != 1.0 || box.flat_fraction < 1.0;
+}
+
+int box_dimension(const ImpactBox& box) {
+  return is_pair_box(box) ? kPairBoxDimension : kBoxDimension;
+}
+
 DimensionlessImpact box_point(const ImpactBox& box, std::span<const double> u) {
-  if (u.size() != static_cast<std::size_t>(kBoxDimension)) {
-    throw_invalid("design point dimension", static_cast<double>(u.size()), "7");
+  const int dimension = box_dimension(box);
+  if (u.size() != static_cast<std::size_t>(dimension)) {
+    throw_invalid("design point dimension", static_cast<double>(u.size()),
+                  fmt::format("{}", dimension));
   }
   DimensionlessImpact p;
   p.k2 = logarithmic(box.k2, u[0]);
@@ -48,11 +79,18 @@ DimensionlessImpact box_point(const ImpactBox& box, std::span<const double> u) {
   p.nu_substrate = linear(box.nu, u[4]);
   p.hardening_ratio = linear(box.hardening_ratio, u[5]);
   p.nu_sphere = linear(box.nu, u[6]);
+  if (dimension == kPairBoxDimension) {
+    p.density_ratio = logarithmic(box.density_ratio, u[7]);
+    if (u[8] >= box.flat_fraction) {
+      const double w = (u[8] - box.flat_fraction) / (1.0 - box.flat_fraction);
+      p.radius_ratio = linear(box.radius_ratio, w);
+    }
+  }
   // The velocity range depends on the first-yield speed of this pair.
   p.velocity_ratio = 1.0;
   const PointMaterials m = point_materials(box, p);
-  const double v_y = restitution::first_yield(m.sphere, m.substrate).velocity;
-  const double ratio_max = speed_limit(box, *m.substrate.yield_stress) / v_y;
+  const double v_y = point_first_yield(box, p).velocity;
+  const double ratio_max = speed_limit(box, p, *m.substrate.yield_stress) / v_y;
   p.velocity_ratio = logarithmic({box.velocity_ratio_min, ratio_max}, u[1]);
   return p;
 }
@@ -71,7 +109,7 @@ PointMaterials point_materials(const ImpactBox& box, const DimensionlessImpact& 
   m.sphere = Material{.name = "inline",
                       .youngs_modulus = sphere_modulus,
                       .poisson_ratio = p.nu_sphere,
-                      .density = box.density,
+                      .density = p.density_ratio * box.density,
                       .yield_stress = std::nullopt,
                       .hardening_modulus = 0.0,
                       .source = "corlab dataset box"};
@@ -83,13 +121,12 @@ PointMaterials point_materials(const ImpactBox& box, const DimensionlessImpact& 
 }
 
 double point_velocity(const ImpactBox& box, const DimensionlessImpact& p) {
-  const PointMaterials m = point_materials(box, p);
-  return p.velocity_ratio * restitution::first_yield(m.sphere, m.substrate).velocity;
+  return p.velocity_ratio * point_first_yield(box, p).velocity;
 }
 
 study::Settings point_settings(const ImpactBox& box, const DimensionlessImpact& p) {
   const PointMaterials m = point_materials(box, p);
-  return {
+  study::Settings settings{
       {"sphere.E", text(m.sphere.youngs_modulus)},
       {"sphere.nu", text(m.sphere.poisson_ratio)},
       {"sphere.sigma_y", m.sphere.yield_stress ? text(*m.sphere.yield_stress) : "none"},
@@ -99,6 +136,14 @@ study::Settings point_settings(const ImpactBox& box, const DimensionlessImpact& 
       {"substrate.hardening", text(m.substrate.hardening_modulus)},
       {"impact.velocity", text(point_velocity(box, p))},
   };
+  if (is_pair_box(box)) {
+    settings.emplace_back("sphere.rho", text(m.sphere.density));
+    const bool flat = p.radius_ratio == 0.0;
+    settings.emplace_back("substrate.shape", flat ? "flat" : "sphere");
+    if (!flat)
+      settings.emplace_back("substrate.radius", text(fem::SphereConfig{}.radius / p.radius_ratio));
+  }
+  return settings;
 }
 
 DimensionlessInputs dimensionless_inputs(const fem::ImpactConfig& config) {
@@ -107,14 +152,18 @@ DimensionlessInputs dimensionless_inputs(const fem::ImpactConfig& config) {
   const Material& s = config.sphere.material;
   const Material& b = config.substrate.material;
   const double v = config.impact.velocity;
-  const double e_star = effective_modulus(s, b);
+  const double e_star = fem::contact_effective_modulus(config);
   DimensionlessInputs d;
-  d.k1 = k1(e_star, s.density, v);
+  d.radius_ratio =
+      fem::sphere_target(config) ? config.sphere.radius / config.substrate.radius : 0.0;
+  d.effective_density =
+      restitution::pair_effective_density(d.radius_ratio, s.density, s.density / b.density);
+  d.k1 = k1(e_star, d.effective_density, v);
   d.k2 = b.yield_stress ? k2(*b.yield_stress, e_star) : kNan;
   d.velocity_ratio = kNan;
   d.first_yield_velocity = kNan;
   if (s.yield_stress || b.yield_stress) {
-    const restitution::FirstYield y = restitution::first_yield(s, b);
+    const restitution::FirstYield y = restitution::first_yield(s, b, d.effective_density);
     d.first_yield_velocity = y.velocity;
     d.velocity_ratio = v / y.velocity;
     d.sphere_yields_first = y.sphere_first;
@@ -127,7 +176,7 @@ DimensionlessInputs dimensionless_inputs(const fem::ImpactConfig& config) {
   d.hardening_ratio_sphere = s.hardening_modulus / s.youngs_modulus;
   d.hardening_ratio_substrate = b.hardening_modulus / b.youngs_modulus;
   d.density_ratio = s.density / b.density;
-  d.damage_number = b.yield_stress ? s.density * v * v / *b.yield_stress : kNan;
+  d.damage_number = b.yield_stress ? d.effective_density * v * v / *b.yield_stress : kNan;
   return d;
 }
 

@@ -1,5 +1,6 @@
 #include "corlab/restitution/first_yield.hpp"
 
+#include <cmath>
 #include <limits>
 
 #include "corlab/restitution/jackson_green2005.hpp"
@@ -12,14 +13,25 @@ double first_yield_pressure(const Material& body) {
 }
 
 FirstYield first_yield(const Material& sphere, const Material& substrate) {
+  return first_yield(sphere, substrate, sphere.density);
+}
+
+FirstYield first_yield(const Material& sphere,
+                       const Material& substrate,
+                       double effective_density) {
   const double p_sphere = first_yield_pressure(sphere);
   const double p_substrate = first_yield_pressure(substrate);
   FirstYield y;
   y.sphere_first = p_sphere < p_substrate;
   y.pressure = y.sphere_first ? p_sphere : p_substrate;
   y.velocity =
-      thornton_yield_velocity(y.pressure, effective_modulus(sphere, substrate), sphere.density);
+      thornton_yield_velocity(y.pressure, effective_modulus(sphere, substrate), effective_density);
   return y;
+}
+
+double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio) {
+  const double r3 = radius_ratio * radius_ratio * radius_ratio;
+  return sphere_density * std::pow(1.0 + radius_ratio, 3) / (1.0 + density_ratio * r3);
 }
 
 }  // namespace corlab::restitution

@@ -3,7 +3,8 @@
 /// The dataset's design written as a `corlab sweep` spec: Sobol points of the box
 /// (impact_box.hpp), one [[cases]] table each, over a [base] at the paper's resolution. The spec
 /// is what `corlab sweep` runs (resumable, MPI); `corlab dataset design` writes it and a test
-/// checks that the committed studies/dataset/fe_restitution.toml is what it writes.
+/// checks that the committed studies/dataset/fe_restitution.toml and fe_restitution_pairs.toml
+/// are what it writes.
 
 #include <cstddef>
 #include <string>
@@ -22,10 +23,14 @@ struct DatasetDesign {
   ImpactBox box;
 };
 
+/// The particle-particle and particle-wall design (issue 26): pair_box(), named
+/// fe_restitution_pairs (studies/dataset/fe_restitution_pairs.toml).
+DatasetDesign pair_design();
+
 /// One design point: its Sobol index and coordinates, the box point and its sweep settings.
 struct DesignPoint {
   std::size_t index = 0;
-  std::vector<double> u;  ///< design coordinates in [0, 1)^7
+  std::vector<double> u;  ///< design coordinates in [0, 1)^box_dimension(box)
   DimensionlessImpact point;
   study::Settings settings;
 };
@@ -33,7 +38,8 @@ struct DesignPoint {
 /// The points of the design, in Sobol order.
 std::vector<DesignPoint> design_points(const DatasetDesign& design);
 
-/// Settings every run shares: the box's E_substrate and densities, the paper's contact mesh
+/// Settings every run shares: the box's E_substrate and densities (rho_substrate only for a
+/// pair box, whose cases set rho_sphere), the paper's contact mesh
 /// (0.25 mm, finer where the contact is small: h <= a / 12) and a step budget for the
 /// quasi-static runs just above first yield at the smallest k2.
 study::Settings dataset_base_settings(const ImpactBox& box);

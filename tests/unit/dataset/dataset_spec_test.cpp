@@ -13,17 +13,28 @@
 namespace corlab::dataset {
 namespace {
 
-TEST(DatasetSpec, CommittedSpecIsWhatTheDesignWrites) {
-  std::ifstream in(CORLAB_SOURCE_DIR "/studies/dataset/fe_restitution.toml", std::ios::binary);
-  ASSERT_TRUE(in) << "studies/dataset/fe_restitution.toml missing";
+// Checks that studies/dataset/<name>.toml is what `command` writes, and that it parses.
+void expect_committed_spec(const DatasetDesign& design, const std::string& command) {
+  const std::string path = "studies/dataset/" + design.name + ".toml";
+  std::ifstream in(std::string(CORLAB_SOURCE_DIR) + "/" + path, std::ios::binary);
+  ASSERT_TRUE(in) << path << " missing";
   std::ostringstream text;
   text << in.rdbuf();
-  const std::string expected = dataset_spec_toml(
-      DatasetDesign{}, "corlab dataset design --out studies/dataset/fe_restitution.toml");
-  EXPECT_TRUE(text.str() == expected)
-      << "regenerate: corlab dataset design --out studies/dataset/fe_restitution.toml";
-  const study::SweepSpec spec = study::parse_sweep_spec(expected, "fe_restitution.toml");
-  EXPECT_EQ(spec.run_count(), DatasetDesign{}.points);
+  const std::string expected = dataset_spec_toml(design, command);
+  EXPECT_TRUE(text.str() == expected) << "regenerate: " << command;
+  const study::SweepSpec spec = study::parse_sweep_spec(expected, path);
+  EXPECT_EQ(spec.run_count(), design.points);
+}
+
+TEST(DatasetSpec, CommittedSpecIsWhatTheDesignWrites) {
+  expect_committed_spec(DatasetDesign{},
+                        "corlab dataset design --out studies/dataset/fe_restitution.toml");
+}
+
+TEST(DatasetSpec, CommittedPairSpecIsWhatTheDesignWrites) {
+  expect_committed_spec(
+      pair_design(),
+      "corlab dataset design --box pairs --out studies/dataset/fe_restitution_pairs.toml");
 }
 
 }  // namespace

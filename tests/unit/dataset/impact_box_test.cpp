@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "corlab/core/error.hpp"
 #include "corlab/dataset/dataset_spec.hpp"
 #include "corlab/study/sweep_spec.hpp"
 
@@ -63,6 +66,52 @@ TEST(ImpactBox, EveryPointIsInsideTheBoxAndItsSpeedBounds) {
     elastic += p.sphere_yield_ratio ? 0 : 1;
   }
   EXPECT_EQ(elastic, 256);  // elastic_sphere_fraction 0.5 of a stratified design
+}
+
+// The pair box: each point's settings give back its nine coordinates (rho* in v_y, k1 and the
+// damage number), a quarter of a stratified design is on a flat, and the rest spans R1/R2.
+TEST(ImpactBox, PairPointsGiveBackTheirRatiosAndSpanTheBox) {
+  const DatasetDesign design{.name = "t", .points = 256, .box = pair_box()};
+  const ImpactBox& box = design.box;
+  int flats = 0;
+  double smallest_ratio = 1.0;
+  for (const DesignPoint& dp : design_points(design)) {
+    const DimensionlessImpact& p = dp.point;
+    const fem::ImpactConfig config = point_config(box, p);
+    const DimensionlessInputs d = dimensionless_inputs(config);
+    const double tol = 1e-12;
+    EXPECT_NEAR(d.k2 / p.k2, 1.0, tol) << dp.index;
+    EXPECT_NEAR(d.velocity_ratio / p.velocity_ratio, 1.0, tol) << dp.index;
+    EXPECT_NEAR(d.modulus_ratio / p.modulus_ratio, 1.0, tol) << dp.index;
+    EXPECT_NEAR(d.density_ratio / p.density_ratio, 1.0, tol) << dp.index;
+    EXPECT_NEAR(d.radius_ratio, p.radius_ratio, tol) << dp.index;
+    EXPECT_GE(p.density_ratio, box.density_ratio.min * (1 - tol));
+    EXPECT_LE(p.density_ratio, box.density_ratio.max * (1 + tol));
+    EXPECT_GE(p.modulus_ratio, box.modulus_ratio.min * (1 - tol));
+    EXPECT_LE(p.modulus_ratio, box.modulus_ratio.max * (1 + tol));
+    EXPECT_LE(d.damage_number, box.damage_number_max * (1 + tol)) << dp.index;
+    EXPECT_LE(config.impact.velocity, box.velocity_max * (1 + tol)) << dp.index;
+    if (p.radius_ratio == 0.0) {
+      ++flats;
+      EXPECT_FALSE(fem::sphere_target(config));
+      EXPECT_DOUBLE_EQ(d.effective_density, config.sphere.material.density);
+    } else {
+      EXPECT_TRUE(fem::sphere_target(config));
+      EXPECT_LE(p.radius_ratio, box.radius_ratio.max);
+      smallest_ratio = std::min(smallest_ratio, p.radius_ratio);
+      EXPECT_GT(d.effective_density, config.sphere.material.density);
+    }
+  }
+  EXPECT_EQ(flats, 64);  // flat_fraction 0.25 of a stratified design
+  EXPECT_LT(smallest_ratio, box.radius_ratio.min + 0.01);
+}
+
+TEST(ImpactBox, TheFlatBoxKeepsItsSevenCoordinates) {
+  EXPECT_FALSE(is_pair_box(ImpactBox{}));
+  EXPECT_EQ(box_dimension(ImpactBox{}), kBoxDimension);
+  EXPECT_EQ(box_dimension(pair_box()), kPairBoxDimension);
+  const std::vector<double> u(kBoxDimension, 0.5);
+  EXPECT_THROW((void)box_point(pair_box(), u), InputError);
 }
 
 }  // namespace

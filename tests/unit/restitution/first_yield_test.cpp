@@ -43,5 +43,51 @@ TEST(FirstYield, WeakerBodyYieldsFirstAtThorntonsVelocity) {
   EXPECT_DOUBLE_EQ(y.pressure, 1.295 * std::exp(0.736 * 0.25) * 300e6);
 }
 
+// rho* = 3 m* / (4 pi R*^3): rho1 on a flat, 4 rho of two identical spheres, the same whichever
+// body is called 1.
+TEST(FirstYield, PairEffectiveDensityLimitsAndSymmetry) {
+  EXPECT_DOUBLE_EQ(pair_effective_density(0.0, 7850.0, 3.0), 7850.0);
+  EXPECT_DOUBLE_EQ(pair_effective_density(1.0, 7850.0, 1.0), 4.0 * 7850.0);
+  const double r = 0.37;
+  const double rho1 = 2700.0;
+  const double rho2 = 15000.0;
+  EXPECT_NEAR(pair_effective_density(r, rho1, rho1 / rho2),
+              pair_effective_density(1.0 / r, rho2, rho2 / rho1), 1e-12 * rho1);
+}
+
+// Two spheres of different radii and densities first yield at the approach speed whose Hertz
+// peak pressure, from R* and m* directly (Johnson 1985 section 11.4), is C(nu) sigma_y.
+TEST(FirstYield, PairYieldsWhereItsHertzPressureReachesTheLimit) {
+  const Material sphere{.name = "s",
+                        .youngs_modulus = 600e9,
+                        .poisson_ratio = 0.24,
+                        .density = 15000.0,
+                        .yield_stress = std::nullopt,
+                        .hardening_modulus = 0.0,
+                        .source = ""};
+  const Material other{.name = "b",
+                       .youngs_modulus = 70e9,
+                       .poisson_ratio = 0.33,
+                       .density = 2700.0,
+                       .yield_stress = 100e6,
+                       .hardening_modulus = 0.0,
+                       .source = ""};
+  const double r1 = 2e-3;
+  const double r2 = 5e-3;
+  const double m1 = 4.0 / 3.0 * M_PI * r1 * r1 * r1 * sphere.density;
+  const double m2 = 4.0 / 3.0 * M_PI * r2 * r2 * r2 * other.density;
+  const double m = m1 * m2 / (m1 + m2);
+  const double radius = r1 * r2 / (r1 + r2);
+  const double rho =
+      pair_effective_density(r1 / r2, sphere.density, sphere.density / other.density);
+  EXPECT_NEAR(rho, 3.0 * m / (4.0 * M_PI * std::pow(radius, 3)), 1e-12 * rho);
+  const FirstYield y = first_yield(sphere, other, rho);
+  const double e_star = effective_modulus(sphere, other);
+  const double v = y.velocity;
+  const double delta = std::pow(15.0 * m * v * v / (16.0 * e_star * std::sqrt(radius)), 0.4);
+  const double p0 = 2.0 * e_star / M_PI * std::sqrt(delta / radius);
+  EXPECT_NEAR(p0 / y.pressure, 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace corlab::restitution
