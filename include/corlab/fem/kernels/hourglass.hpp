@@ -9,8 +9,14 @@
 ///   f_iI -= Q_i gamma_I  (force on the nodes; as an internal force f_int,iI += Q_i gamma_I),
 /// with V = 2 pi Omega the element volume. kappa = 0.05 gives about 2 % of the hourglass-mode
 /// stiffness of a fully integrated square element (docs/theory/solver.md).
+///
+/// The hexahedron (hex8.hpp) has four base vectors per direction, h_a = xi eta, eta zeta,
+/// zeta xi, xi eta zeta at the nodes (Flanagan & Belytschko 1981, eq. 66), and
+/// gamma_aI = 1/8 (h_aI - (h_a.x) b_xI - (h_a.y) b_yI - (h_a.z) b_zI): the same stiffness form
+/// with Q_ia, q_ia = sum_I gamma_aI v_iI, f_iI += sum_a Q_ia gamma_aI and the same k.
 
 #include "corlab/fem/kernels/axisym_quad4.hpp"
+#include "corlab/fem/kernels/hex8.hpp"
 
 namespace corlab::fem {
 
@@ -60,6 +66,66 @@ inline double hourglass_update(const double* gamma,
   for (int i = 0; i < 4; ++i) {
     fr[i] += q_r * gamma[i];
     fz[i] += q_z * gamma[i];
+  }
+  return work;
+}
+
+/// The hexahedron's hourglass base vectors h_a at its nodes (xi eta, eta zeta, zeta xi,
+/// xi eta zeta).
+inline constexpr double kHex8HourglassBase[4][8] = {{1, -1, 1, -1, 1, -1, 1, -1},
+                                                    {1, 1, -1, -1, -1, -1, 1, 1},
+                                                    {1, -1, -1, 1, -1, 1, 1, -1},
+                                                    {-1, 1, -1, 1, 1, -1, 1, -1}};
+
+/// Hourglass shape vectors gamma[a][I] [-] of a hexahedron (gradients g, coordinates x, y, z).
+inline void hex8_hourglass_shape(
+    const Hex8Geometry& g, const double* x, const double* y, const double* z, double (*gamma)[8]) {
+  for (int a = 0; a < 4; ++a) {
+    const double* h = kHex8HourglassBase[a];
+    double hx = 0.0;
+    double hy = 0.0;
+    double hz = 0.0;
+    for (int i = 0; i < 8; ++i) {
+      hx += h[i] * x[i];
+      hy += h[i] * y[i];
+      hz += h[i] * z[i];
+    }
+    for (int i = 0; i < 8; ++i)
+      gamma[a][i] = 0.125 * (h[i] - hx * g.bx[i] - hy * g.by[i] - hz * g.bz[i]);
+  }
+}
+
+/// Generalised hourglass forces of a hexahedron, q[i][a] [N] for direction i = x, y, z and mode a.
+struct Hex8HourglassForce {
+  double q[3][4] = {};
+};
+
+/// Advances the hexahedron's hourglass forces by one step (nodal velocities vx, vy, vz [m/s],
+/// stiffness [N/m], dt [s]) and adds sum_a Q_ia gamma_aI to the internal force fx, fy, fz.
+/// Returns the work done against them in the step (trapezoid in Q) [J].
+inline double hex8_hourglass_update(const double (*gamma)[8],
+                                    const double* vx,
+                                    const double* vy,
+                                    const double* vz,
+                                    double stiffness,
+                                    double dt,
+                                    Hex8HourglassForce& force,
+                                    double* fx,
+                                    double* fy,
+                                    double* fz) {
+  const double* v[3] = {vx, vy, vz};
+  double* f[3] = {fx, fy, fz};
+  double work = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    for (int a = 0; a < 4; ++a) {
+      double rate = 0.0;
+      for (int i = 0; i < 8; ++i) rate += gamma[a][i] * v[d][i];
+      const double old_q = force.q[d][a];
+      const double new_q = old_q + stiffness * rate * dt;
+      work += 0.5 * dt * (old_q + new_q) * rate;
+      force.q[d][a] = new_q;
+      for (int i = 0; i < 8; ++i) f[d][i] += new_q * gamma[a][i];
+    }
   }
   return work;
 }

@@ -4,13 +4,15 @@
 /// integrated with the radial return of Wilkins (1964) / Simo & Hughes (1998, Computational
 /// Inelasticity, Box 3.1): sigma_y(eps_p) = sigma_y0 + H eps_p. H = 0 is perfectly plastic (Ma
 /// et al. 2023 eq. 1); no yield stress is purely elastic. Equivalent stress sqrt(3 J2),
-/// J2 = 1/2 (s_rr^2 + s_zz^2 + s_tt^2) + s_rz^2.
+/// J2 = 1/2 s:s. One material point for every geometry: the axisymmetric element passes an
+/// AxisymTensor, the 3-D hexahedron a SymTensor3.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "corlab/fem/kernels/axisym_tensor.hpp"
+#include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/materials/material.hpp"
 
 namespace corlab::fem {
@@ -56,31 +58,24 @@ struct J2Plasticity {
   }
 
   /// Adds the elastic trial increment C : d_eps to `stress` and returns it to the yield surface.
-  /// d_eps is the strain increment [-] (tensor shear component).
-  Increment update(AxisymTensor& stress, State& state, const AxisymTensor& d_eps) const {
-    const double dvol = trace(d_eps);
+  /// d_eps is the strain increment [-] (tensor shear components). Tensor is AxisymTensor or
+  /// SymTensor3: the return is written once over their primitives (deviator,
+  /// deviatoric_equivalent, with_deviator, add_isotropic, trace).
+  template <class Tensor>
+  Increment update(Tensor& stress, State& state, const Tensor& d_eps) const {
     const double two_g = 2.0 * shear_modulus;
     const double lam = bulk_modulus - two_g / 3.0;
-    stress.rr += two_g * d_eps.rr + lam * dvol;
-    stress.zz += two_g * d_eps.zz + lam * dvol;
-    stress.tt += two_g * d_eps.tt + lam * dvol;
-    stress.rz += two_g * d_eps.rz;
+    add_isotropic(stress, d_eps, two_g, lam);
     const double p = trace(stress) * (1.0 / 3.0);
-    const double srr = stress.rr - p;
-    const double szz = stress.zz - p;
-    const double stt = stress.tt - p;
-    const double q =
-        std::sqrt(1.5 * (srr * srr + szz * szz + stt * stt) + 3.0 * stress.rz * stress.rz);
+    const Tensor s = deviator(stress, p);
+    const double q = deviatoric_equivalent(s);
     const double sy = flow_stress(state);
     // Branch-free (vectorisable) radial return: d_eps_p = <q - sigma_y>_+ / (3G + H), deviator
     // scaled by 1 - 3G d_eps_p / q (= 1 when elastic).
     const double inv_stiffness = 1.0 / (3.0 * shear_modulus + hardening_modulus);  // hoisted
     const double dep = std::max(q - sy, 0.0) * inv_stiffness;
     const double scale = 1.0 - 3.0 * shear_modulus * dep / std::max(q, kTiny);
-    stress.rr = p + scale * srr;
-    stress.zz = p + scale * szz;
-    stress.tt = p + scale * stt;
-    stress.rz *= scale;
+    stress = with_deviator(p, scale, s);
     state.eps_p += dep;
     Increment inc;
     inc.d_eps_p = dep;
@@ -89,13 +84,11 @@ struct J2Plasticity {
   }
 
   /// Elastic strain energy density of a stress: s:s/(4G) + p^2/(2K) [J/m^3].
-  double strain_energy_density(const AxisymTensor& stress) const {
+  template <class Tensor>
+  double strain_energy_density(const Tensor& stress) const {
     const double p = trace(stress) * (1.0 / 3.0);
-    const double srr = stress.rr - p;
-    const double szz = stress.zz - p;
-    const double stt = stress.tt - p;
-    const double ss = srr * srr + szz * szz + stt * stt + 2.0 * stress.rz * stress.rz;
-    return ss / (4.0 * shear_modulus) + p * p / (2.0 * bulk_modulus);
+    const Tensor s = deviator(stress, p);
+    return contract(s, s) / (4.0 * shear_modulus) + p * p / (2.0 * bulk_modulus);
   }
 };
 

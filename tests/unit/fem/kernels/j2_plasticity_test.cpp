@@ -143,5 +143,35 @@ TEST(J2Plasticity, StrainEnergyFromWorkMatchesTheStress) {
   EXPECT_NEAR(d.internal_work - d.plastic_work, direct, 1e-4 * direct);
 }
 
+// One material point for both geometries: a 3-D state whose y-y component plays the hoop and
+// z-x the r-z shear (x = r, z = z, y = theta) returns exactly as the axisymmetric one, and the
+// extra 3-D shears enter J2 as the axisymmetric one does.
+TEST(J2Plasticity, ThreeDimensionalReturnIsTheAxisymmetricOne) {
+  const J2Plasticity mat = steel(3e9);
+  AxisymTensor a;
+  SymTensor3 b;
+  J2Plasticity::State sa;
+  J2Plasticity::State sb;
+  const double steps[3][4] = {
+      {0.002, -0.001, 0.0005, 0.0015}, {0.001, 0.002, -0.002, -0.001}, {-0.003, 0.001, 0.0, 0.0}};
+  for (const auto& d : steps) {
+    const auto ia = mat.update(a, sa, AxisymTensor{d[0], d[1], d[2], d[3]});
+    const auto ib = mat.update(b, sb, SymTensor3{d[0], d[2], d[1], 0.0, 0.0, d[3]});
+    EXPECT_NEAR(ib.d_eps_p, ia.d_eps_p, 1e-15);
+    EXPECT_NEAR(ib.plastic_work, ia.plastic_work, 1e-9 * std::abs(ia.plastic_work) + 1e-12);
+    EXPECT_NEAR(b.xx, a.rr, 1e-6);
+    EXPECT_NEAR(b.yy, a.tt, 1e-6);
+    EXPECT_NEAR(b.zz, a.zz, 1e-6);
+    EXPECT_NEAR(b.zx, a.rz, 1e-6);
+  }
+  EXPECT_GT(sb.eps_p, 0.0);
+  // A pure xy shear beyond yield lands on the surface with sqrt(3) |s_xy| = sigma_y.
+  SymTensor3 s;
+  J2Plasticity::State st;
+  (void)mat.update(s, st, SymTensor3{0.0, 0.0, 0.0, 0.01, 0.0, 0.0});
+  EXPECT_NEAR(std::sqrt(3.0) * std::abs(s.xy), mat.flow_stress(st), 1e-9 * kSy);
+  EXPECT_NEAR(von_mises(s), mat.flow_stress(st), 1e-9 * kSy);
+}
+
 }  // namespace
 }  // namespace corlab::fem
