@@ -91,6 +91,11 @@ int run_simulate(const SimulateOptions& opt) {
         "rebound\n",
         fem::to_string(result.status), result.status_detail);
   }
+  if (clean && fem::uses_3d_model(config)) {
+    fmt::print("3-D model: e_n = {:.4f}  e_t = {:.4f}  omega = {:.5g} rad/s  rebound_angle = {:.3f} "
+               "deg  energy_friction = {:.4g} J\n",
+               result.e_n, result.e_t, result.omega, result.rebound_angle, result.energy_friction);
+  }
   if (!result.suspect.empty()) {
     fmt::print(stderr, "corlab simulate: warning: suspect run: {}\n", result.suspect);
   }

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <span>
+#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -32,22 +34,32 @@ using Accessor = std::variant<double* (*)(ImpactConfig&),
                               std::vector<double>* (*)(ImpactConfig&),
                               Material* (*)(ImpactConfig&),
                               std::filesystem::path* (*)(ImpactConfig&),
-                              SubstrateShape* (*)(ImpactConfig&)>;
+                              SubstrateShape* (*)(ImpactConfig&),
+                              SolverModel* (*)(ImpactConfig&)>;
 
 constexpr KeyKind kKindOf[] = {KeyKind::number,       KeyKind::integer,     KeyKind::integer,
                                KeyKind::yield_stress, KeyKind::number_list, KeyKind::material,
-                               KeyKind::path,         KeyKind::choice};
+                               KeyKind::path,         KeyKind::choice,      KeyKind::choice};
 
-// The names of a choice key's values (to_string of each), in order.
+// The values of each choice key's enum (named by to_string), in order.
 constexpr std::array kShapes{SubstrateShape::kFlat, SubstrateShape::kRigid,
                              SubstrateShape::kSphere};
+constexpr std::array kModels{SolverModel::kAxisymmetric, SolverModel::kThreeD};
+constexpr std::span<const SubstrateShape> choices(SubstrateShape /*tag*/) { return kShapes; }
+constexpr std::span<const SolverModel> choices(SolverModel /*tag*/) { return kModels; }
 
-SubstrateShape parse_shape(std::string_view key, std::string_view text) {
+template <class T>
+constexpr bool kIsChoice = std::is_same_v<T, SubstrateShape> || std::is_same_v<T, SolverModel>;
+
+template <class Enum>
+Enum parse_choice(std::string_view key, std::string_view text) {
   text = trim(text);
-  for (const SubstrateShape s : kShapes) {
+  std::string names;
+  for (const Enum s : choices(Enum{})) {
     if (to_string(s) == text) return s;
+    names += fmt::format("{}{}", names.empty() ? "" : ", ", to_string(s));
   }
-  throw_invalid(key, text, "one of flat, rigid, sphere");
+  throw_invalid(key, text, fmt::format("one of {}", names));
 }
 
 struct KeyEntry {
@@ -71,6 +83,9 @@ KeyRange open_closed(double lo, double hi, std::string_view why = {}) {
   return {lo, hi, true, false, why};
 }
 KeyRange open(double lo, double hi, std::string_view why = {}) { return {lo, hi, true, true, why}; }
+KeyRange closed_open(double lo, double hi, std::string_view why = {}) {
+  return {lo, hi, false, true, why};
+}
 
 template <bool kSphere>
 Material& body(ImpactConfig& c) {
@@ -122,6 +137,14 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       "plastic strain and shape; e of each in e_impacts)",
       +[](ImpactConfig& c) { return &c.impact.repeats; }));
   t.push_back(entry(
+      "impact.angle", "[deg]", closed_open(0.0, 90.0, "from the contact normal; 90 never touches"),
+      "angle of the impact velocity from the contact normal (> 0: the 3-D model; the normal "
+      "speed is impact.velocity cos(angle))",
+      +[](ImpactConfig& c) { return &c.impact.angle; }));
+  t.push_back(entry(
+      "contact.friction", "[-]", closed(0.0, 10.0), "Coulomb friction coefficient mu (3-D model)",
+      +[](ImpactConfig& c) { return &c.contact.friction; }));
+  t.push_back(entry(
       "mesh.h_min", "[m]", open_closed(0.0, 1.0), "element size at the contact",
       +[](ImpactConfig& c) { return &c.mesh.h_min; }));
   t.push_back(entry(
@@ -155,6 +178,11 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
 }
 
 void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
+  t.push_back(entry(
+      "solver.model", "", std::nullopt,
+      "axisymmetric (normal impacts) | 3d (the 3-D half model: hexahedra, friction, oblique "
+      "impacts; chosen whenever impact.angle > 0)",
+      +[](ImpactConfig& c) { return &c.solver.model; }));
   t.push_back(entry(
       "solver.safety_factor", "[-]",
       open_closed(0.0, 1.0, "and <= 1/sqrt(1 + solver.penalty_scale)"),
@@ -312,8 +340,8 @@ void set_value(const KeyEntry& e, ImpactConfig& c, std::string_view text) {
             if (err.field() != body) throw;
             throw InputError(std::string(key), err.value(), err.constraint(), true);
           }
-        } else if constexpr (std::is_same_v<T, SubstrateShape>) {
-          *target = parse_shape(key, text);
+        } else if constexpr (kIsChoice<T>) {
+          *target = parse_choice<T>(key, text);
         } else {
           *target = std::string(trim(text));
         }
@@ -353,7 +381,7 @@ std::string text_of(const KeyEntry& e, ImpactConfig& c) {
           return fmt::format("[{}]", fmt::join(*v, ", "));
         } else if constexpr (std::is_same_v<T, Material>) {
           return v->name;
-        } else if constexpr (std::is_same_v<T, SubstrateShape>) {
+        } else if constexpr (kIsChoice<T>) {
           return std::string(to_string(*v));
         } else {
           return v->string();
@@ -383,7 +411,7 @@ nlohmann::json json_of(const KeyEntry& e, ImpactConfig& c) {
           return material_json(*v);
         } else if constexpr (std::is_same_v<T, std::filesystem::path>) {
           return v->string();
-        } else if constexpr (std::is_same_v<T, SubstrateShape>) {
+        } else if constexpr (kIsChoice<T>) {
           return std::string(to_string(*v));
         } else {
           return *v;

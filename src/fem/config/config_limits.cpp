@@ -10,6 +10,7 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 
 namespace corlab::fem {
@@ -105,6 +106,32 @@ void check_solver(const ImpactConfig& c) {
   }
 }
 
+// What the 3-D model supports so far, and friction only where a model has it.
+void check_model(const ImpactConfig& c) {
+  if (!uses_3d_model(c)) {
+    if (c.contact.friction != 0.0)
+      throw_invalid("contact.friction", c.contact.friction,
+                    "0 with the axisymmetric model (friction needs solver.model = 3d or "
+                    "impact.angle > 0)");
+    return;
+  }
+  if (!rigid_target(c))
+    throw_invalid("substrate.shape", to_string(c.substrate.shape),
+                  "rigid with the 3-D model (solver.model = 3d or impact.angle > 0): its "
+                  "deformable flat is not built yet");
+  if (c.impact.repeats != 1)
+    throw_invalid("impact.repeats", c.impact.repeats, "1 with the 3-D model");
+  if (!c.mesh.file.empty())
+    throw_invalid("mesh.file", c.mesh.file.string(), "empty with the 3-D model (its own mesh)");
+  try {
+    validate(hex_mesh_options_for(c));
+  } catch (const InputError& err) {
+    throw InputError(fmt::format(
+        "invalid mesh.h_min = {}: the 3-D mesh it gives is refused ({})", c.mesh.h_min,
+        err.what()));
+  }
+}
+
 void check_step_budget(const ImpactConfig& c) {
   if (!c.mesh.file.empty()) return;  // element sizes unknown before reading the file
   const RunEstimate e = estimate_run(c);
@@ -127,9 +154,12 @@ RunEstimate estimate_run(const ImpactConfig& c) {
                                  : std::max(c.sphere.material.dilatational_wave_speed(),
                                             c.substrate.material.dilatational_wave_speed());
   const double b1 = c.solver.bulk_viscosity_linear;
-  // Square element: L_e = h / sqrt 2 (stable_time_step.hpp); the hoop term next to the axis only
-  // shortens it, so this is a lower bound on the step count.
-  e.time_step = c.solver.safety_factor * e.element_size / std::sqrt(2.0) / e.wave_speed *
+  // Square element: L_e = h / sqrt 2 (stable_time_step.hpp), a cube's h / sqrt 3 (hex8.hpp);
+  // the hoop term next to the axis only shortens it, so this is a lower bound on the step count.
+  const double lattice = uses_3d_model(c) ? std::sqrt(3.0) : std::sqrt(2.0);
+  const double h = uses_3d_model(c) ? hex_mesh_options_for(c).h_contact : e.element_size;
+  e.element_size = h;
+  e.time_step = c.solver.safety_factor * h / lattice / e.wave_speed *
                 (std::sqrt(1.0 + b1 * b1) - b1);
   // Default t_max: 20 Hertz contact times after contact (explicit_solver.cpp).
   e.simulated_time = c.solver.t_max > 0.0 ? c.solver.t_max - c.impact.gap / c.impact.velocity
@@ -142,7 +172,8 @@ RunEstimate estimate_run(const ImpactConfig& c) {
 void validate_limits(const ImpactConfig& config) {
   check_plastic_body(config.sphere.material, "sphere");
   if (!rigid_target(config)) check_plastic_body(config.substrate.material, "substrate");
-  check_geometry(config);
+  check_model(config);
+  if (!uses_3d_model(config)) check_geometry(config);
   check_solver(config);
   check_step_budget(config);
 }

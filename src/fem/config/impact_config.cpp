@@ -62,6 +62,10 @@ std::string_view to_string(SubstrateShape shape) {
   return "flat";
 }
 
+std::string_view to_string(SolverModel model) {
+  return model == SolverModel::kThreeD ? "3d" : "axisymmetric";
+}
+
 double contact_effective_modulus(const ImpactConfig& config) {
   const Material& s = config.sphere.material;
   if (rigid_target(config)) return s.youngs_modulus / (1.0 - s.poisson_ratio * s.poisson_ratio);

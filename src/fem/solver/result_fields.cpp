@@ -175,6 +175,13 @@ const std::array kFields{
                          "-",
                          "why an error estimate asked for has no e_error (empty: it has)",
                          kBoth),
+    CORLAB_RESULT_MEMBER(e_n, "-", "normal restitution of the c.o.m. (= e for a normal impact)",
+                         kBoth),
+    CORLAB_RESULT_MEMBER(
+        e_t, "-", "tangential c.o.m. velocity ratio v_x'/v_x (3-D model, oblique)", kBoth),
+    CORLAB_RESULT_MEMBER(omega, "rad/s", "rebound spin about the symmetry plane's normal", kBoth),
+    CORLAB_RESULT_MEMBER(rebound_angle, "deg", "rebound angle from the normal", kBoth),
+    CORLAB_RESULT_MEMBER(energy_friction, "J", "frictional dissipation (3-D model)", kBoth),
     derived("E_star",
             "Pa",
             "effective modulus (Ma et al. 2023 eq. 3)",

@@ -59,6 +59,14 @@ struct ImpactConditions {
   /// the same approach speed, carrying their residual stress, plastic strain, shape and
   /// vibration (solver.md section 8).
   int repeats = 1;
+  /// Angle of the impact velocity from the contact normal [deg], in [0, 90): the normal speed
+  /// is velocity cos(angle). Above 0 the 3-D model runs (solver.model).
+  double angle = 0.0;
+};
+
+/// The contact law beyond the normal penalty.
+struct ContactConfig {
+  double friction = 0.0;  ///< Coulomb coefficient mu >= 0 (3-D model only) [-]
 };
 
 struct MeshConfig {
@@ -81,7 +89,18 @@ struct MeshConfig {
   std::filesystem::path file;  ///< Gmsh .msh file; empty = built-in generator
 };
 
+/// Which solver runs the impact.
+enum class SolverModel : std::uint8_t {
+  kAxisymmetric,  ///< the axisymmetric solver (normal impacts; the default)
+  kThreeD,        ///< the 3-D half model (hex_impact.hpp): oblique impacts, friction
+};
+
+/// "axisymmetric" or "3d".
+std::string_view to_string(SolverModel model);
+
 struct SolverConfig {
+  /// The model; an impact.angle above 0 runs the 3-D one whatever this says (uses_3d_model).
+  SolverModel model = SolverModel::kAxisymmetric;
   double safety_factor = 0.8;  ///< dt = safety_factor x stable step estimate [-]
   double hourglass = 0.05;     ///< stiffness hourglass coefficient (Flanagan-Belytschko) [-]
   double bulk_viscosity_linear = 0.06;    ///< b1 [-] (ABAQUS/Explicit default)
@@ -115,6 +134,7 @@ struct ImpactConfig {
   SphereConfig sphere;
   SubstrateConfig substrate;
   ImpactConditions impact;
+  ContactConfig contact;
   MeshConfig mesh;
   SolverConfig solver;
   OutputConfig output;
@@ -123,6 +143,11 @@ struct ImpactConfig {
 /// Whether the sphere hits the rigid flat (no substrate body).
 inline bool rigid_target(const ImpactConfig& config) {
   return config.substrate.shape == SubstrateShape::kRigid;
+}
+
+/// Whether the 3-D model runs: solver.model = 3d or an oblique impact.
+inline bool uses_3d_model(const ImpactConfig& config) {
+  return config.solver.model == SolverModel::kThreeD || config.impact.angle > 0.0;
 }
 
 /// Whether the sphere hits a second, free sphere.

@@ -55,6 +55,16 @@ struct ImpactResult {
   /// why an error estimate that was asked for has no e_error (no companion mesh, mesh.file,
   /// a companion or run without a clean rebound); empty when it has one or was not asked for
   std::string e_error_reason;
+  /// Normal restitution -v_z' / v_z of the c.o.m. [-]: e itself on the axisymmetric model, the
+  /// normal part of an oblique impact on the 3-D one; NaN unless separated
+  double e_n = std::numeric_limits<double>::quiet_NaN();
+  /// Tangential c.o.m. velocity ratio v_x' / v_x [-] (3-D model, impact.angle > 0; else NaN)
+  double e_t = std::numeric_limits<double>::quiet_NaN();
+  /// Rebound spin about the axis normal to the symmetry plane [rad/s] (> 0 rolls forward; 0 on
+  /// the axisymmetric model)
+  double omega = 0.0;
+  double rebound_angle = 0.0;    ///< atan(v_x' / v_z') [deg from the normal] (normal impact: 0)
+  double energy_friction = 0.0;  ///< frictional dissipation [J] (3-D model with friction)
   double F_max = 0.0;               ///< largest contact force [N]
   double delta_max = 0.0;           ///< largest indentation (sphere c.o.m. displacement) [m]
   double t_contact = 0.0;           ///< duration of contact [s]

@@ -75,6 +75,16 @@ TEST(ConfigLimits, IssueReproducersAreRefusedWithOneLineNamingTheField) {
       {{"substrate.hardening=3e11"}, "invalid substrate.hardening = 300000000000: must be < "},
       {{"substrate.nu=0.4999999"}, "invalid solver.max_steps = 20000000: must be >= the estimated"},
       {{"impact.velocity"}, "invalid --set = 'impact.velocity': must be key=value"},
+      {{"impact.angle=90"}, "invalid impact.angle = 90: must be in [0, 90) [deg]"},
+      {{"impact.angle=-1"}, "invalid impact.angle = -1: must be in [0, 90) [deg]"},
+      {{"contact.friction=-0.1"}, "invalid contact.friction = -0.1: must be in [0, 10]"},
+      {{"contact.friction=0.3"}, "invalid contact.friction = 0.3: must be 0 with the axisymmetric"},
+      {{"solver.model=2d"}, "invalid solver.model = '2d': must be one of axisymmetric, 3d"},
+      {{"impact.angle=30"}, "invalid substrate.shape = 'flat': must be rigid with the 3-D model"},
+      {{"solver.model=3d", "substrate.shape=rigid", "impact.repeats=2"},
+       "invalid impact.repeats = 2: must be 1 with the 3-D model"},
+      {{"solver.model=3d", "substrate.shape=rigid", "mesh.h_min=1e-5", "mesh.contact_elements=0"},
+       "invalid mesh.h_min = 1e-05: the 3-D mesh it gives is refused"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.settings.front());

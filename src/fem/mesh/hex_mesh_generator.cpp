@@ -1,0 +1,204 @@
+// The half sphere's cube-sphere O-grid (hex_mesh_generator.hpp).
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
+#include "corlab/fem/kernels/hex8.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/mesh_generator.hpp"
+
+namespace corlab::fem {
+namespace {
+
+using Point = std::array<double, 3>;
+
+// E(c) = tan(pi c / 4), odd and exact at 0 and +-1 (shared block edges evaluate it alike).
+double equiangular(double c) {
+  const double a = std::abs(c);
+  const double e = a == 1.0 ? 1.0 : std::tan(0.25 * units::kPi * a);
+  return c < 0.0 ? -e : e;
+}
+
+// 0 = c_0 < ... < c_n = 1 from graded positions over `length` [m].
+std::vector<double> unit_fractions(const std::vector<double>& positions) {
+  std::vector<double> f(positions.size());
+  for (std::size_t i = 0; i < f.size(); ++i) f[i] = positions[i] / positions.back();
+  f.front() = 0.0;
+  f.back() = 1.0;
+  return f;
+}
+
+// The lattice values of each direction.
+struct Lattice {
+  std::vector<double> x;  // [-1, 1], fine at 0
+  std::vector<double> y;  // [0, 1], fine at 0
+  std::vector<double> z;  // [-1, 1], uniform (sides and core)
+  std::vector<double> t;  // [0, 1], fine at 1 (the surface)
+};
+
+Lattice make_lattice(const HexMeshOptions& o) {
+  const double r = o.sphere_radius;
+  const double arc = 0.25 * units::kPi * r;
+  Lattice l;
+  l.y = unit_fractions(graded_positions(arc, o.h_contact, o.zone_radius, o.growth, o.h_max));
+  for (std::size_t i = l.y.size(); i-- > 1;) l.x.push_back(-l.y[i]);
+  l.x.insert(l.x.end(), l.y.begin(), l.y.end());
+  const double shell = r * (1.0 - o.core_fraction);
+  const std::vector<double> depth =
+      unit_fractions(graded_positions(shell, o.h_contact, o.zone_depth, o.growth, o.h_max));
+  for (std::size_t i = depth.size(); i-- > 0;) l.t.push_back(1.0 - depth[i]);
+  l.t.front() = 0.0;
+  const double edge = l.y[l.y.size() - 1] - l.y[l.y.size() - 2];
+  const int nz = std::max(2, static_cast<int>(std::lround(2.0 / edge)));
+  for (int k = 0; k <= nz; ++k) l.z.push_back(k == nz ? 1.0 : -1.0 + 2.0 * k / nz);
+  return l;
+}
+
+class SphereBuilder {
+ public:
+  SphereBuilder(const HexMeshOptions& o, HexMesh& mesh)
+      : radius_(o.sphere_radius),
+        core_(o.core_fraction * o.sphere_radius),
+        centre_z_(o.gap + o.sphere_radius),
+        mesh_(mesh) {}
+
+  // Node at cube coordinates (X, Y, Z) and shell parameter t (merged by position).
+  int node(double cx, double cy, double cz, double t) {
+    const double ex = equiangular(cx);
+    const double ey = equiangular(cy);
+    const double ez = equiangular(cz);
+    const double inv = radius_ / std::sqrt(ex * ex + ey * ey + ez * ez);
+    const Point core{core_ * cx, core_ * cy, core_ * cz};
+    const Point surface{ex * inv, ey * inv, ez * inv};
+    const Point p{core[0] + t * (surface[0] - core[0]), core[1] + t * (surface[1] - core[1]),
+                  core[2] + t * (surface[2] - core[2])};
+    const auto [it, added] = index_.try_emplace(p, mesh_.num_nodes());
+    if (added) {
+      mesh_.x.push_back(p[0]);
+      mesh_.y.push_back(p[1]);
+      mesh_.z.push_back(p[2] + centre_z_);
+      mesh_.node_body.push_back(Body::kSphere);
+      if (t == 1.0 && p[2] < 0.0) mesh_.sphere_surface_nodes.push_back(it->second);
+      if (p[1] == 0.0) mesh_.symmetry_nodes.push_back(it->second);
+    }
+    return it->second;
+  }
+
+  // Hexahedra of a block whose nodes are at(i, j, k) on an (ni+1) x (nj+1) x (nk+1) lattice.
+  template <class At>
+  void block(std::size_t ni, std::size_t nj, std::size_t nk, At at) {
+    constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                   {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    for (std::size_t i = 0; i < ni; ++i)
+      for (std::size_t j = 0; j < nj; ++j)
+        for (std::size_t k = 0; k < nk; ++k) {
+          std::array<int, 8> hex{};
+          for (int c = 0; c < 8; ++c)
+            hex[c] = at(i + kCorner[c][0], j + kCorner[c][1], k + kCorner[c][2]);
+          add_hex(hex);
+        }
+  }
+
+ private:
+  void add_hex(std::array<int, 8> hex) {
+    if (volume(hex) < 0.0) hex = {hex[4], hex[5], hex[6], hex[7], hex[0], hex[1], hex[2], hex[3]};
+    if (!(volume(hex) > 0.0))
+      throw_invalid("mesh.h_min", 0.0, "a 3-D mesh without tangled elements");
+    mesh_.hexes.push_back(hex);
+    mesh_.element_body.push_back(Body::kSphere);
+  }
+
+  double volume(const std::array<int, 8>& hex) const {
+    double x[8];
+    double y[8];
+    double z[8];
+    for (int c = 0; c < 8; ++c) {
+      const auto n = static_cast<std::size_t>(hex[c]);
+      x[c] = mesh_.x[n];
+      y[c] = mesh_.y[n];
+      z[c] = mesh_.z[n];
+    }
+    return hex8_geometry(x, y, z).volume;
+  }
+
+  double radius_;
+  double core_;
+  double centre_z_;
+  HexMesh& mesh_;
+  std::map<Point, int> index_;
+};
+
+}  // namespace
+
+void validate(const HexMeshOptions& o) {
+  require_positive("mesh.sphere_radius", o.sphere_radius, "[m]");
+  require_non_negative("mesh.gap", o.gap, "[m]");
+  require_positive("mesh.h_contact", o.h_contact, "[m]");
+  if (o.h_contact > 0.05 * o.sphere_radius)
+    throw_invalid("mesh.h_contact", o.h_contact, "<= R / 20 (too coarse for the sphere)");
+  if (o.sphere_radius / o.h_contact > 2e3)
+    throw_invalid("mesh.h_contact", o.h_contact, ">= R / 2000 (a 3-D mesh of that is too large)");
+  require_non_negative("mesh.zone_radius", o.zone_radius, "[m]");
+  require_non_negative("mesh.zone_depth", o.zone_depth, "[m]");
+  if (!(o.growth >= 1.0 && o.growth <= 2.0)) throw_invalid("mesh.growth", o.growth, "in [1, 2]");
+  if (!(o.h_max >= o.h_contact)) throw_invalid("mesh.h_max", o.h_max, ">= mesh.h_contact");
+  if (!(o.core_fraction > 0.1 && o.core_fraction < 0.8))
+    throw_invalid("mesh.core_fraction", o.core_fraction, "in (0.1, 0.8)");
+}
+
+HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
+  ImpactConfig normal = config;
+  normal.impact.velocity =
+      config.impact.velocity * std::cos(config.impact.angle * units::kPi / 180.0);
+  const double a = predicted_contact_radius(normal);
+  HexMeshOptions o;
+  o.sphere_radius = config.sphere.radius;
+  o.gap = 0.0;
+  o.h_contact = config.mesh.h_min;
+  if (config.mesh.contact_elements > 0.0)
+    o.h_contact = std::min(o.h_contact, a / config.mesh.contact_elements);
+  o.zone_radius = config.mesh.refine_factor * a;
+  o.zone_depth = std::max(config.mesh.refine_depth * a, 2.0 * o.h_contact);
+  o.growth = config.mesh.growth;
+  o.h_max = std::max(config.mesh.h_max, o.h_contact);
+  return o;
+}
+
+HexMesh generate_hex_sphere(const HexMeshOptions& o) {
+  validate(o);
+  const Lattice l = make_lattice(o);
+  HexMesh mesh;
+  SphereBuilder b(o, mesh);
+  const std::size_t nx = l.x.size() - 1;
+  const std::size_t ny = l.y.size() - 1;
+  const std::size_t nz = l.z.size() - 1;
+  const std::size_t nt = l.t.size() - 1;
+  for (const double face : {-1.0, 1.0}) {
+    // Bottom (Z = -1) and top (Z = +1) shells.
+    b.block(nx, ny, nt, [&](std::size_t i, std::size_t j, std::size_t k) {
+      return b.node(l.x[i], l.y[j], face, l.t[k]);
+    });
+    // The -x and +x shells.
+    b.block(ny, nz, nt, [&](std::size_t j, std::size_t m, std::size_t k) {
+      return b.node(face, l.y[j], l.z[m], l.t[k]);
+    });
+  }
+  // The +y shell (the -y half is cut away by the symmetry plane).
+  b.block(nx, nz, nt, [&](std::size_t i, std::size_t m, std::size_t k) {
+    return b.node(l.x[i], 1.0, l.z[m], l.t[k]);
+  });
+  // The core cube.
+  b.block(nx, ny, nz, [&](std::size_t i, std::size_t j, std::size_t m) {
+    return b.node(l.x[i], l.y[j], l.z[m], 0.0);
+  });
+  std::sort(mesh.symmetry_nodes.begin(), mesh.symmetry_nodes.end());
+  return mesh;
+}
+
+}  // namespace corlab::fem

@@ -1,0 +1,394 @@
+// The 3-D explicit impact solver on the rigid flat (hex_impact.hpp).
+#include "corlab/fem/solver/hex_impact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
+#include "corlab/fem/kernels/bulk_viscosity.hpp"
+#include "corlab/fem/kernels/coulomb_friction.hpp"
+#include "corlab/fem/kernels/hex8.hpp"
+#include "corlab/fem/kernels/hourglass.hpp"
+#include "corlab/fem/kernels/j2_plasticity.hpp"
+#include "corlab/fem/kernels/objective_rate.hpp"
+#include "corlab/fem/kernels/penalty_contact.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
+#include "corlab/fem/kernels/sym_tensor3.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
+#include "corlab/fem/solver/separation_rule.hpp"
+
+namespace corlab::fem {
+namespace {
+
+using Vec = std::vector<double>;
+
+// The constant part of a run (half model).
+struct HexModel {
+  HexMesh mesh;
+  J2Plasticity material;
+  double density = 0.0;     // [kg/m^3]
+  double wave_speed = 0.0;  // c_d [m/s]
+  Vec mass, inv_mass;       // lumped [kg], [1/kg]
+  Vec free_y;               // 0 on the symmetry plane, else 1 [-]
+  Vec penalty;              // per slave [N/m]
+  double total_mass = 0.0;  // half sphere [kg]
+  double v_normal = 0.0;    // [m/s] (> 0, towards the flat)
+  double v_tangent = 0.0;   // [m/s] (towards +x)
+  double friction = 0.0;    // mu [-]
+  double dt_initial = 0.0;  // [s]
+  double t_max = 0.0;       // [s]
+  double t_wave = 0.0;      // 4 R / c_d [s]
+  double t_expected = 0.0;  // expected end: 1.5 Hertz contact times [s]
+  double h_contact = 0.0;   // [m]
+  const SolverConfig* solver = nullptr;
+};
+
+// The mutable part.
+struct HexState {
+  Vec x, y, z, vx, vy, vz, fx, fy, fz;
+  std::vector<SymTensor3> stress;
+  Vec eps_p;
+  std::vector<Hex8HourglassForce> hourglass;
+  std::vector<std::array<double, 3>> traction;  // friction force of each slave [N]
+  double t = 0.0;
+  double dt = 0.0;
+  long long steps = 0;
+  double w_internal = 0.0;  // [J], half model
+  double w_plastic = 0.0;
+  double w_hourglass = 0.0;
+  double w_viscous = 0.0;
+  double w_friction = 0.0;
+  double e_contact = 0.0;     // penalty energy stored now
+  double normal_force = 0.0;  // on the half sphere, + up [N]
+  double penetration_max = 0.0;
+  double eps_p_max = 0.0;
+};
+
+struct Corners {
+  double x[8];
+  double y[8];
+  double z[8];
+};
+
+Corners corners(const std::array<int, 8>& hex, const Vec& x, const Vec& y, const Vec& z) {
+  Corners c;
+  for (int i = 0; i < 8; ++i) {
+    const auto n = static_cast<std::size_t>(hex[static_cast<std::size_t>(i)]);
+    c.x[i] = x[n];
+    c.y[i] = y[n];
+    c.z[i] = z[n];
+  }
+  return c;
+}
+
+HexModel make_model(const ImpactConfig& config) {
+  HexModel m;
+  const double theta = config.impact.angle * units::kPi / 180.0;
+  m.v_normal = config.impact.velocity * std::cos(theta);
+  m.v_tangent = config.impact.velocity * std::sin(theta);
+  m.friction = config.contact.friction;
+  const HexMeshOptions options = hex_mesh_options_for(config);
+  m.h_contact = options.h_contact;
+  m.mesh = generate_hex_sphere(options);
+  const Material& mat = config.sphere.material;
+  m.material = J2Plasticity::from(mat);
+  m.density = mat.density;
+  m.wave_speed = mat.dilatational_wave_speed();
+  const auto nn = static_cast<std::size_t>(m.mesh.num_nodes());
+  m.mass.assign(nn, 0.0);
+  double dt_critical = std::numeric_limits<double>::infinity();
+  for (const auto& hex : m.mesh.hexes) {
+    const Corners c = corners(hex, m.mesh.x, m.mesh.y, m.mesh.z);
+    const Hex8Geometry g = hex8_geometry(c.x, c.y, c.z);
+    for (const int n : hex) m.mass[static_cast<std::size_t>(n)] += 0.125 * m.density * g.volume;
+    dt_critical = std::min(
+        dt_critical, element_stable_time_step(hex8_characteristic_length(g), m.wave_speed, 0.0));
+  }
+  m.inv_mass.resize(nn);
+  for (std::size_t n = 0; n < nn; ++n) {
+    m.inv_mass[n] = 1.0 / m.mass[n];
+    m.total_mass += m.mass[n];
+  }
+  m.free_y.assign(nn, 1.0);
+  for (const int n : m.mesh.symmetry_nodes) m.free_y[static_cast<std::size_t>(n)] = 0.0;
+  const double infinite = std::numeric_limits<double>::infinity();
+  for (const int s : m.mesh.sphere_surface_nodes)
+    m.penalty.push_back(penalty_stiffness(
+        config.solver.penalty_scale, m.mass[static_cast<std::size_t>(s)], infinite, dt_critical));
+  m.dt_initial = config.solver.safety_factor * dt_critical;
+  m.t_wave = 4.0 * config.sphere.radius / m.wave_speed;
+  const HertzReference hertz = hertz_reference(
+      config.sphere.radius, contact_effective_modulus(config), m.density, m.v_normal);
+  m.t_max = config.solver.t_max > 0.0 ? config.solver.t_max : 20.0 * hertz.contact_time;
+  m.t_expected = 1.5 * hertz.contact_time;
+  m.solver = &config.solver;
+  return m;
+}
+
+HexState initial_state(const HexModel& m) {
+  HexState s;
+  s.x = m.mesh.x;
+  s.y = m.mesh.y;
+  s.z = m.mesh.z;
+  const std::size_t nn = s.x.size();
+  s.vx.assign(nn, m.v_tangent);
+  s.vy.assign(nn, 0.0);
+  s.vz.assign(nn, -m.v_normal);
+  s.fx.assign(nn, 0.0);
+  s.fy.assign(nn, 0.0);
+  s.fz.assign(nn, 0.0);
+  const std::size_t ne = m.mesh.hexes.size();
+  s.stress.assign(ne, SymTensor3{});
+  s.eps_p.assign(ne, 0.0);
+  s.hourglass.assign(ne, Hex8HourglassForce{});
+  s.traction.assign(m.mesh.sphere_surface_nodes.size(), {0.0, 0.0, 0.0});
+  s.dt = m.dt_initial;
+  return s;
+}
+
+// One element: rates at the mid-step configuration, stress update, internal and hourglass
+// forces at the new configuration. Returns the element's stable step [s] (0: inverted).
+double update_element(const HexModel& m, HexState& s, std::size_t e, double dt) {
+  const auto& hex = m.mesh.hexes[e];
+  const Corners now = corners(hex, s.x, s.y, s.z);
+  const Corners vel = corners(hex, s.vx, s.vy, s.vz);
+  Corners mid;
+  for (int i = 0; i < 8; ++i) {
+    mid.x[i] = now.x[i] - 0.5 * dt * vel.x[i];
+    mid.y[i] = now.y[i] - 0.5 * dt * vel.y[i];
+    mid.z[i] = now.z[i] - 0.5 * dt * vel.z[i];
+  }
+  const Hex8Geometry gm = hex8_geometry(mid.x, mid.y, mid.z);
+  const Hex8Geometry g = hex8_geometry(now.x, now.y, now.z);
+  if (!(g.volume > 0.0) || !(gm.volume > 0.0)) return 0.0;
+  const StrainRate3 rate = hex8_strain_rate(gm, vel.x, vel.y, vel.z);
+  const SymTensor3 de{rate.d.xx * dt, rate.d.yy * dt, rate.d.zz * dt,
+                      rate.d.xy * dt, rate.d.yz * dt, rate.d.zx * dt};
+  SymTensor3& sigma = s.stress[e];
+  rotate_hughes_winget(sigma, Spin3{rate.spin.x * dt, rate.spin.y * dt, rate.spin.z * dt});
+  const SymTensor3 old = sigma;
+  J2Plasticity::State state{s.eps_p[e]};
+  const J2Plasticity::Increment inc = m.material.update(sigma, state, de);
+  s.eps_p[e] = state.eps_p;
+  s.eps_p_max = std::max(s.eps_p_max, state.eps_p);
+  s.w_internal += 0.5 * gm.volume * (contract(old, de) + contract(sigma, de));
+  s.w_plastic += inc.plastic_work * gm.volume;
+  const double length = hex8_characteristic_length(g);
+  const double vol_rate = trace(rate.d);
+  const SolverConfig& sc = *m.solver;
+  const double b1 = sc.bulk_viscosity_linear;
+  const double b2 = sc.bulk_viscosity_quadratic;
+  const double viscous = bulk_viscous_stress(vol_rate, m.density, m.wave_speed, length, b1, b2);
+  s.w_viscous += viscous * vol_rate * dt * gm.volume;
+  SymTensor3 total = sigma;
+  total.xx += viscous;
+  total.yy += viscous;
+  total.zz += viscous;
+  double fx[8] = {};
+  double fy[8] = {};
+  double fz[8] = {};
+  hex8_add_internal_force(g, total, fx, fy, fz);
+  double gamma[4][8];
+  hex8_hourglass_shape(g, now.x, now.y, now.z, gamma);
+  const double k_hg =
+      hourglass_stiffness(sc.hourglass, m.material.shear_modulus, g.volume, hex8_gradient_norm2(g));
+  s.w_hourglass +=
+      hex8_hourglass_update(gamma, vel.x, vel.y, vel.z, k_hg, dt, s.hourglass[e], fx, fy, fz);
+  for (int i = 0; i < 8; ++i) {
+    const auto n = static_cast<std::size_t>(hex[static_cast<std::size_t>(i)]);
+    s.fx[n] -= fx[i];
+    s.fy[n] -= fy[i];
+    s.fz[n] -= fz[i];
+  }
+  const double xi = bulk_viscous_damping_ratio(vol_rate, m.wave_speed, length, b1, b2);
+  return element_stable_time_step(length, m.wave_speed, xi);
+}
+
+// Penalty contact with the rigid flat z = 0 and Coulomb friction. Returns whether any slave
+// penetrates.
+bool contact_forces(const HexModel& m, HexState& s, double dt) {
+  bool penetrating = false;
+  s.e_contact = 0.0;
+  s.normal_force = 0.0;
+  const double normal[3] = {0.0, 0.0, 1.0};
+  const auto& slaves = m.mesh.sphere_surface_nodes;
+  for (std::size_t k = 0; k < slaves.size(); ++k) {
+    const auto n = static_cast<std::size_t>(slaves[k]);
+    const double gap = s.z[n];
+    const double stiffness = m.penalty[k];
+    const double fn = gap < 0.0 ? -stiffness * gap : 0.0;
+    const double du[3] = {s.vx[n] * dt, s.vy[n] * dt, 0.0};
+    const FrictionUpdate f =
+        coulomb_friction(s.traction[k].data(), normal, du, fn, stiffness, m.friction);
+    s.traction[k] = {f.t[0], f.t[1], f.t[2]};
+    s.w_friction += f.dissipation;
+    if (fn > 0.0) {
+      penetrating = true;
+      s.penetration_max = std::max(s.penetration_max, -gap);
+      s.fx[n] += f.t[0];
+      s.fy[n] += f.t[1];
+      s.fz[n] += fn;
+      s.normal_force += fn;
+      s.e_contact += 0.5 * stiffness * gap * gap + friction_stored_energy(f.t, stiffness);
+    }
+  }
+  return penetrating;
+}
+
+struct Motion {
+  double vx = 0.0;  // c.o.m. [m/s]
+  double vz = 0.0;
+  double omega = 0.0;    // spin about +y [rad/s]
+  double kinetic = 0.0;  // [J], half model
+};
+
+Motion sphere_motion(const HexModel& m, const HexState& s) {
+  Motion mo;
+  double px = 0.0;
+  double pz = 0.0;
+  double cx = 0.0;
+  double cz = 0.0;
+  for (std::size_t n = 0; n < s.x.size(); ++n) {
+    const double mass = m.mass[n];
+    px += mass * s.vx[n];
+    pz += mass * s.vz[n];
+    cx += mass * s.x[n];
+    cz += mass * s.z[n];
+    mo.kinetic += 0.5 * mass * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]);
+  }
+  mo.vx = px / m.total_mass;
+  mo.vz = pz / m.total_mass;
+  cx /= m.total_mass;
+  cz /= m.total_mass;
+  double momentum = 0.0;
+  double inertia = 0.0;
+  for (std::size_t n = 0; n < s.x.size(); ++n) {
+    const double dx = s.x[n] - cx;
+    const double dz = s.z[n] - cz;
+    momentum += m.mass[n] * (dz * (s.vx[n] - mo.vx) - dx * (s.vz[n] - mo.vz));
+    inertia += m.mass[n] * (dx * dx + dz * dz);
+  }
+  mo.omega = momentum / inertia;
+  return mo;
+}
+
+// Advances positions by dt with the current velocities and assembles the forces there. Returns
+// the next stable step (0: an element inverted).
+double step_forces(const HexModel& m, HexState& s, double dt, bool& penetrating) {
+  for (std::size_t n = 0; n < s.x.size(); ++n) {
+    s.x[n] += dt * s.vx[n];
+    s.y[n] += dt * s.vy[n];
+    s.z[n] += dt * s.vz[n];
+  }
+  std::fill(s.fx.begin(), s.fx.end(), 0.0);
+  std::fill(s.fy.begin(), s.fy.end(), 0.0);
+  std::fill(s.fz.begin(), s.fz.end(), 0.0);
+  double dt_next = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < m.mesh.hexes.size(); ++e) {
+    const double dt_e = update_element(m, s, e, dt);
+    if (!(dt_e > 0.0)) return 0.0;
+    dt_next = std::min(dt_next, dt_e);
+  }
+  penetrating = contact_forces(m, s, dt);
+  return m.solver->safety_factor * dt_next;
+}
+
+// v^{n+1/2} = v^{n-1/2} + dt_avg f / m, the symmetry plane's v_y held at zero.
+void update_velocities(const HexModel& m, HexState& s, double dt_avg) {
+  for (std::size_t n = 0; n < s.x.size(); ++n) {
+    s.vx[n] += dt_avg * s.fx[n] * m.inv_mass[n];
+    s.vy[n] = m.free_y[n] * (s.vy[n] + dt_avg * s.fy[n] * m.inv_mass[n]);
+    s.vz[n] += dt_avg * s.fz[n] * m.inv_mass[n];
+  }
+}
+
+void finish(const HexModel& m, const HexState& s, HexImpactResult& r) {
+  const Motion mo = sphere_motion(m, s);
+  r.vx_final = mo.vx;
+  r.vz_final = mo.vz;
+  r.omega = mo.omega;
+  r.e_n = mo.vz / m.v_normal;
+  r.e_t = m.v_tangent > 0.0 ? mo.vx / m.v_tangent : std::numeric_limits<double>::quiet_NaN();
+  r.rebound_angle = std::atan2(mo.vx, mo.vz) * 180.0 / units::kPi;
+  r.energy_friction = 2.0 * s.w_friction;
+  r.energy_dissipated_plastic = 2.0 * s.w_plastic;
+  r.energy_hourglass = 2.0 * s.w_hourglass;
+  r.plastic_strain_max = s.eps_p_max;
+  r.penetration_max = s.penetration_max;
+  r.steps = s.steps;
+}
+
+}  // namespace
+
+HexImpactResult simulate_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
+  const auto start = std::chrono::steady_clock::now();
+  const HexModel m = make_model(config);
+  HexState s = initial_state(m);
+  HexImpactResult r;
+  r.elements = m.mesh.num_elements();
+  r.nodes = m.mesh.num_nodes();
+  r.h_contact = m.h_contact;
+  r.time_step = m.dt_initial;
+  const double v0 = config.impact.velocity;
+  const double energy0 = 0.5 * m.total_mass * v0 * v0;
+  r.energy_initial = 2.0 * energy0;
+  SeparationRule rule(m.t_wave, m.v_normal);
+  double dt_prev = 0.0;
+  while (true) {
+    const double dt = s.dt;
+    bool penetrating = false;
+    const double dt_next = step_forces(m, s, dt, penetrating);
+    s.t += dt;
+    ++s.steps;
+    if (!(dt_next > 0.0)) {
+      r.status = RunStatus::kElementInverted;
+      break;
+    }
+    update_velocities(m, s, 0.5 * (dt + dt_next));
+    s.dt = dt_next;
+    r.F_max = std::max(r.F_max, 2.0 * s.normal_force);
+    const Motion mo = sphere_motion(m, s);
+    const double balance = mo.kinetic + s.w_internal + s.w_hourglass + s.w_viscous + s.e_contact +
+                           s.w_friction - energy0;
+    if (!std::isfinite(balance)) {
+      r.status = RunStatus::kNonFinite;
+      break;
+    }
+    r.energy_balance_error = std::max(r.energy_balance_error, std::abs(balance) / energy0);
+    rule.accumulate(mo.kinetic, dt);
+    const auto decision = rule.update(s.t, dt_prev, penetrating, mo.vz);
+    dt_prev = dt;
+    if (decision == SeparationRule::Decision::kRebound) {
+      r.status = RunStatus::kSeparated;
+      break;
+    }
+    if (decision == SeparationRule::Decision::kNoRebound || s.t > m.t_max) {
+      r.status = RunStatus::kNotSeparated;
+      break;
+    }
+    if (s.steps >= config.solver.max_steps) {
+      r.status = RunStatus::kStepBudgetExceeded;
+      break;
+    }
+    if ((s.steps & 255) == 0) {
+      if (control.cancel != nullptr && control.cancel->load()) {
+        r.status = RunStatus::kCancelled;
+        break;
+      }
+      if (control.progress) control.progress(std::min(0.99, s.t / m.t_expected));
+    }
+  }
+  r.t_contact = rule.contact_time();
+  finish(m, s, r);
+  if (control.progress) control.progress(1.0);
+  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace corlab::fem

@@ -1,0 +1,85 @@
+// The 3-D half sphere (hex_mesh_generator.hpp): valid elements that fill the half ball, a
+// surface on the sphere, the symmetry plane, and h_contact at the lowest point.
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "corlab/core/error.hpp"
+#include "corlab/fem/kernels/hex8.hpp"
+
+namespace corlab::fem {
+namespace {
+
+Hex8Geometry geometry(const HexMesh& m, int e) {
+  double x[8];
+  double y[8];
+  double z[8];
+  for (int c = 0; c < 8; ++c) {
+    const auto n = static_cast<std::size_t>(m.hexes[static_cast<std::size_t>(e)][c]);
+    x[c] = m.x[n];
+    y[c] = m.y[n];
+    z[c] = m.z[n];
+  }
+  return hex8_geometry(x, y, z);
+}
+
+TEST(HexSphere, FillsTheHalfBallWithValidElements) {
+  const HexMeshOptions o{.sphere_radius = 35e-3,
+                         .gap = 1e-4,
+                         .h_contact = 0.7e-3,
+                         .zone_radius = 3e-3,
+                         .zone_depth = 2e-3,
+                         .growth = 1.2,
+                         .h_max = 5e-3,
+                         .core_fraction = 0.45};
+  const HexMesh m = generate_hex_sphere(o);
+  double volume = 0.0;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    const double v = geometry(m, e).volume;
+    ASSERT_GT(v, 0.0) << "element " << e;
+    volume += v;
+  }
+  const double r = o.sphere_radius;
+  const double exact = 2.0 / 3.0 * M_PI * r * r * r;
+  // Bilinear facets inscribed in the sphere: a little less than the ball, by O((h/R)^2).
+  EXPECT_LT(volume, exact);
+  EXPECT_GT(volume, exact * (1.0 - 5e-3));
+  const double cz = o.gap + r;
+  for (const int n : m.sphere_surface_nodes) {
+    const auto i = static_cast<std::size_t>(n);
+    EXPECT_NEAR(std::hypot(m.x[i], m.y[i], m.z[i] - cz), r, 1e-12 * r);
+    EXPECT_LT(m.z[i], cz);
+    EXPECT_GE(m.y[i], 0.0);
+  }
+  for (const int n : m.symmetry_nodes) EXPECT_EQ(m.y[static_cast<std::size_t>(n)], 0.0);
+  for (double y : m.y) EXPECT_GE(y, 0.0);
+  // The lowest node is at z = gap, and the surface elements around it are h_contact wide.
+  const double z_min = *std::min_element(m.z.begin(), m.z.end());
+  EXPECT_NEAR(z_min, o.gap, 1e-12);
+  double h_near = 0.0;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    const auto& hex = m.hexes[static_cast<std::size_t>(e)];
+    const bool touches = std::any_of(
+        hex.begin(), hex.end(), [&](int n) { return m.z[static_cast<std::size_t>(n)] == z_min; });
+    if (touches) h_near = std::max(h_near, std::cbrt(geometry(m, e).volume));
+  }
+  EXPECT_GT(h_near, 0.8 * o.h_contact);
+  EXPECT_LT(h_near, 1.2 * o.h_contact);
+  EXPECT_EQ(m.node_body.size(), m.x.size());
+  EXPECT_EQ(m.element_body.size(), m.hexes.size());
+}
+
+TEST(HexSphere, RefusesMeshesItCannotBuild) {
+  HexMeshOptions o;
+  o.h_contact = 3e-3;  // > R / 20
+  EXPECT_THROW(generate_hex_sphere(o), InputError);
+  o.h_contact = 1e-3;
+  o.growth = 3.0;
+  EXPECT_THROW(generate_hex_sphere(o), InputError);
+}
+
+}  // namespace
+}  // namespace corlab::fem
