@@ -14,6 +14,7 @@
 #include "corlab/dem/lammps_mapping.hpp"
 #include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/first_yield.hpp"
 #include "corlab/restitution/registry.hpp"
 
 namespace corlab::dem {
@@ -100,8 +101,13 @@ std::optional<double> pair_override(const ExportSpec& spec, int i, int j) {
   return e;
 }
 
-// e(v) of sphere material `a` hitting `b`: the registered model needs the yielding body as the
-// substrate, so the body with a yield stress (the softer if both) is taken as the flat.
+// e(v) of the pair (material `a` of type_i against `b`). A registered model is written for a
+// sphere of density rho on a yielding flat; the Hertz impact of any pair (R*, m*, E*) is exactly
+// that of a sphere of density rho* = 3 m*/(4 pi R*^3) on a flat of the same E*, and every model
+// depends on the sphere only through E* and its density (k1 = E*/(rho v^2), Thornton's v_y), not
+// its radius. So the body with a yield stress (the softer if both) is the model's flat, the other
+// its sphere, and the sphere gets the pair's rho* (c.effective_density): 4 rho for two identical
+// spheres, the particle's own density against the rigid wall.
 RestitutionCurve model_curve(const ExportSpec& spec,
                              const PairCalibration& c,
                              const Material& a,
@@ -124,7 +130,7 @@ RestitutionCurve model_curve(const ExportSpec& spec,
                     spec.model, first, second));
   }
   const bool b_is_flat = b_yields && (!a_yields || *b.yield_stress <= *a.yield_stress);
-  const Material& sphere = b_is_flat ? a : b;
+  Material sphere = b_is_flat ? a : b;
   const Material& flat = b_is_flat ? b : a;
   const std::string sphere_label = b_is_flat       ? type_label(spec, c.type_i)
                                    : c.type_j == 0 ? wall_label(spec)
@@ -132,7 +138,12 @@ RestitutionCurve model_curve(const ExportSpec& spec,
   const std::string flat_label = !b_is_flat      ? type_label(spec, c.type_i)
                                  : c.type_j == 0 ? wall_label(spec)
                                                  : type_label(spec, c.type_j);
-  description = spec.model + " (" + sphere_label + " on " + flat_label + ")";
+  description = spec.model + " (" + sphere_label + " on " + flat_label;
+  if (sphere.density != c.effective_density) {
+    description += fmt::format(", sphere density rho* = {:.6g} kg/m^3", c.effective_density);
+  }
+  description += ")";
+  sphere.density = c.effective_density;
   auto model = restitution::make_model(spec.model, sphere, flat);
   return [model](double v) { return model.cor(v); };
 }
@@ -166,11 +177,14 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
     other = &*spec.wall;
     c.effective_radius = ti.radius;
     c.effective_mass = sphere_mass(ti);
+    c.effective_density = ti.material.density;
   } else {
     const ParticleType& tj = spec.types[static_cast<std::size_t>(j - 1)];
     other = &tj.material;
     c.effective_radius = ti.radius * tj.radius / (ti.radius + tj.radius);
     c.effective_mass = sphere_mass(ti) * sphere_mass(tj) / (sphere_mass(ti) + sphere_mass(tj));
+    c.effective_density = restitution::pair_effective_density(
+        ti.radius / tj.radius, ti.material.density, ti.material.density / tj.material.density);
   }
   c.effective_modulus = corlab::effective_modulus(ti.material, *other);
   c.hertz_stiffness = hertz_stiffness(c.effective_modulus, c.effective_radius);

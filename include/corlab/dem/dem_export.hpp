@@ -68,6 +68,9 @@ struct PairCalibration {
   double effective_modulus = 0.0;  ///< E* [Pa]
   double effective_radius = 0.0;   ///< R* [m]
   double effective_mass = 0.0;     ///< m* [kg] (wall: sphere mass)
+  /// rho* = 3 m*/(4 pi R*^3) [kg/m^3]: the density of the sphere whose impact on a flat is this
+  /// pair's (wall: the particle's; two identical spheres: 4 rho); a model's e(v) is taken at it.
+  double effective_density = 0.0;
   double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
   std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
   std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
