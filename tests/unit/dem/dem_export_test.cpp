@@ -168,6 +168,62 @@ TEST(DemExport, UnequalPairsAndWallPairsDensities) {
   EXPECT_DOUBLE_EQ(pairs[4].curve(1.0), swapped.cor(1.0));
 }
 
+// --pair-table: one pair's own e(v) (an FE run of those two spheres); the other pairs keep the
+// export's target, and the 1-2 pair's hooks carry the table, not the 1-1 or 2-2 e(v).
+TEST(DemExport, PairTableReplacesOnePairsTarget) {
+  const auto glass = parse_labelled_material("glass=E=63e9,nu=0.22,rho=2500", "type");
+  const auto copper = parse_labelled_material("copper=E=120e9,nu=0.34,rho=8900,sy=200e6", "type");
+  ExportSpec spec;
+  spec.types = {{glass.material, 0.002, glass.label}, {copper.material, 0.005, copper.label}};
+  spec.model = "corlab2026";
+  spec.v_min = 0.5;
+  spec.v_max = 4.0;
+  spec.pair_restitution = {parse_pair_restitution("glass/glass=1")};
+  PairTable table = parse_pair_table("copper/glass=fe pair.csv");
+  EXPECT_EQ(table.first, "copper");
+  EXPECT_EQ(table.second, "glass");
+  EXPECT_EQ(table.source, "fe pair.csv");
+  table.curve = tabulated_curve({0.5, 4.0}, {0.9, 0.6});
+  spec.pair_tables = {table};
+  const auto pairs = calibrate_pairs(spec);
+  ASSERT_EQ(pairs.size(), 3u);  // 1-1, 1-2, 2-2
+  EXPECT_EQ(pairs[1].target, "table fe pair.csv (--pair-table)");
+  EXPECT_DOUBLE_EQ(pairs[1].curve(2.25), 0.75);
+  EXPECT_NE(pairs[2].target.find("corlab2026 (copper on copper"), std::string::npos);
+  const std::string yade = write_yade(spec, pairs);
+  const auto row = yade.find("(1, 2): ([0.5, ");
+  ASSERT_NE(row, std::string::npos);
+  EXPECT_NE(yade.find("], [0.9, ", row), std::string::npos);
+  EXPECT_LT(yade.find("], [0.9, ", row), yade.find("(2, 2):", row));
+  // No export-wide target: fine while every pair has its own, else the uncovered pair is named.
+  spec.model.clear();
+  spec.pair_restitution.push_back(parse_pair_restitution("copper/copper=0.7"));
+  EXPECT_EQ(calibrate_pairs(spec).size(), 3u);
+  spec.pair_restitution.pop_back();
+  try {
+    calibrate_pairs(spec);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "target of pair 2-2 (copper-copper)") << e.what();
+  }
+  // A pair given a table and a constant, or two tables, is refused; so is a bad spec.
+  spec.model = "corlab2026";
+  spec.pair_restitution.push_back(parse_pair_restitution("1/2=0.5"));
+  EXPECT_THROW(calibrate_pairs(spec), InputError);
+  spec.pair_restitution.pop_back();
+  spec.pair_tables.push_back(table);
+  EXPECT_THROW(calibrate_pairs(spec), InputError);
+  for (const char* bad : {"glass=fe.csv", "glass/copper", "glass/copper=", "/copper=fe.csv"}) {
+    try {
+      parse_pair_table(bad);
+      FAIL() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "pair-table") << bad;
+      EXPECT_EQ(std::string(e.what()).rfind("invalid pair-table = ", 0), 0u) << e.what();
+    }
+  }
+}
+
 TEST(DemExport, LabelsAndAnElasticPairByOverride) {
   const auto glass = parse_labelled_material("glass=E=63e9,nu=0.22,rho=2500", "type");
   EXPECT_EQ(glass.label, "glass");
