@@ -9,6 +9,8 @@ import subprocess
 
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "dem")
 FE_TABLE = os.path.join(DATA, "fe_alumina_aluminium.csv")
+# corlab's FE e(v) of the 2 mm glass sphere on a free 5 mm copper sphere (its .toml says how)
+FE_PAIR_TABLE = os.path.join(DATA, "fe_glass_copper_spheres.csv")
 GLASS = "glass=E=63e9,nu=0.22,rho=2500"
 COPPER = "copper=E=120e9,nu=0.34,rho=8900,sy=200e6"
 
@@ -16,7 +18,8 @@ COPPER = "copper=E=120e9,nu=0.34,rho=8900,sy=200e6"
 #   glass on copper, corlab2026 (and the elastic glass-glass pair, e = 1 by --pair);
 #   alumina on aluminium alloy, thornton1997 (and corlab's FE e(v) of it);
 #   aluminium spheres head-on, thornton1997 (a plastic particle-particle pair);
-# and a pair of unequal types (issue 26): a 2 mm glass and a 5 mm copper sphere head-on.
+# and a pair of unequal types (issue 26): a 2 mm glass and a 5 mm copper sphere head-on, with
+#   corlab2026 and with corlab's FE e(v) of that pair.
 EV_CASES = (
     ("glass_copper", ["--type", GLASS + ":0.002", "--wall", COPPER, "--model", "corlab2026",
                       "--pair", "glass/glass=1", "--v-min", "0.5", "--v-max", "4"],
@@ -32,6 +35,11 @@ EV_CASES = (
     # two types of another radius, material and density: the 1-2 pair must run its own law
     ("glass_copper_spheres", ["--type", GLASS + ":0.002", "--type", COPPER + ":0.005",
                               "--model", "corlab2026", "--pair", "glass/glass=1",
+                              "--v-min", "0.5", "--v-max", "4"], (("1-2", "pair"),)),
+    # the same two types with corlab's FE e(v) of that pair (--pair-table) for the 1-2 pair
+    ("glass_copper_fe_pair", ["--type", GLASS + ":0.002", "--type", COPPER + ":0.005",
+                              "--model", "corlab2026", "--pair", "glass/glass=1",
+                              "--pair-table", "glass/copper=" + FE_PAIR_TABLE,
                               "--v-min", "0.5", "--v-max", "4"], (("1-2", "pair"),)),
 )
 CONSTANT_TARGETS = (0.3, 0.9)
