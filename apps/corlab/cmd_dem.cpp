@@ -20,9 +20,10 @@ namespace corlab::cli {
 namespace {
 
 struct DemArgs {
-  std::vector<std::string> types;  // [LABEL=]MATERIAL:RADIUS
-  std::string wall;                // [LABEL=]MATERIAL
-  std::vector<std::string> pairs;  // A/B=E
+  std::vector<std::string> types;        // [LABEL=]MATERIAL:RADIUS
+  std::string wall;                      // [LABEL=]MATERIAL
+  std::vector<std::string> pairs;        // A/B=E
+  std::vector<std::string> pair_tables;  // A/B=FILE
   std::optional<double> restitution;
   std::string model;
   std::string table;
@@ -81,6 +82,11 @@ int run_dem(const DemArgs& args) {
     spec.wall_label = std::move(wall.label);
   }
   for (const auto& p : args.pairs) spec.pair_restitution.push_back(dem::parse_pair_restitution(p));
+  for (const auto& p : args.pair_tables) {
+    auto table = dem::parse_pair_table(p);
+    table.curve = read_table(table.source);
+    spec.pair_tables.push_back(std::move(table));
+  }
   spec.restitution = args.restitution;
   spec.model = args.model;
   if (!args.table.empty()) {
@@ -137,6 +143,9 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--pair", a->pairs,
                      "A/B=E: constant e of one pair (type labels or ids, wall), e.g. an elastic "
                      "glass/glass=1 (repeat)");
+      sub.add_option("--pair-table", a->pair_tables,
+                     "A/B=FILE: e(v) of one pair from an FE results.csv (columns velocity, e), "
+                     "e.g. of two spheres of those types (repeat)");
       auto* e = sub.add_option("--restitution", a->restitution, "constant target e in (0, 1)");
       auto* m =
           sub.add_option("--model", a->model, "registered CoR model for e(v), e.g. thornton1997");

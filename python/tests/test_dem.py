@@ -105,6 +105,33 @@ def test_cli_writes_all_files_and_reads_an_fe_table(tmp_path, corlab_bin):
     assert fit["parameter"] > 0 and fit["max_abs_error"] < 0.1
 
 
+def test_cli_pair_table_sets_one_pair(tmp_path, corlab_bin):
+    # Two types: the FE e(v) of the glass-copper pair (--pair-table) for 1-2 only; 2-2 keeps the
+    # model; bad input is one line naming pair-table, exit 2.
+    table = tmp_path / "pair.csv"
+    table.write_text("case_id,status,velocity,e\nb,ok,4,0.6\na,ok,0.5,0.8\n")
+    types = ["--type", "glass=E=63e9,nu=0.22,rho=2500:0.002",
+             "--type", "copper=E=120e9,nu=0.34,rho=8900,sy=200e6:0.005"]
+    common = [corlab_bin, "dem", *types, "--model", "corlab2026", "--pair", "glass/glass=1",
+              "--v-min", "0.5", "--v-max", "4", "--fit-points", "4", "--out", str(tmp_path / "x")]
+    done = subprocess.run(common + ["--pair-table", "glass/copper=%s" % table],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    pairs = {p["pair"]: p for p in
+             json.loads((tmp_path / "x" / "dem_export.json").read_text())["pairs"]}
+    assert pairs["1-2"]["target"] == "table %s (--pair-table)" % table
+    assert pairs["1-2"]["table"][0]["e"] == pytest.approx(0.8)
+    assert pairs["1-2"]["table"][-1]["e"] == pytest.approx(0.6)
+    assert pairs["2-2"]["target"].startswith("corlab2026 (copper on copper")
+    for bad, field in (("glass=%s" % table, "pair-table"), ("glass/lead=%s" % table, "pair-table"),
+                       ("glass/copper=%s" % (tmp_path / "none.csv"), "results file")):
+        done = subprocess.run(common + ["--pair-table", bad], capture_output=True, text=True,
+                              timeout=60)
+        assert done.returncode == 2, done.stderr
+        lines = done.stderr.strip().splitlines()
+        assert len(lines) == 1 and lines[0].startswith("corlab: error: invalid %s = " % field)
+
+
 def test_cli_bad_input_is_one_line_and_nonzero(tmp_path, corlab_bin):
     done = subprocess.run([corlab_bin, "dem", "--type", "steel_ma2023:0.004",
                            "--restitution", "1.5", "--out", str(tmp_path)],

@@ -14,6 +14,7 @@
 #include "corlab/dem/lammps_mapping.hpp"
 #include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/first_yield.hpp"
 #include "corlab/restitution/registry.hpp"
 
 namespace corlab::dem {
@@ -54,9 +55,11 @@ void validate_spec(const ExportSpec& spec) {
   const int targets = static_cast<int>(spec.restitution.has_value()) +
                       static_cast<int>(!spec.model.empty()) +
                       static_cast<int>(spec.table.has_value());
-  if (targets != 1) {
+  const bool own_targets = !spec.pair_restitution.empty() || !spec.pair_tables.empty();
+  if (targets > 1 || (targets == 0 && !own_targets)) {
     throw_invalid("target", static_cast<double>(targets),
-                  "exactly one of --restitution, --model, --table");
+                  "exactly one of --restitution, --model, --table (none: --pair or --pair-table "
+                  "for every pair)");
   }
   if (spec.restitution) require_open_range("restitution", *spec.restitution, 0.0, 1.0);
   require_positive("v_min", spec.v_min, "[m/s]");
@@ -73,10 +76,13 @@ void validate_spec(const ExportSpec& spec) {
   }
 }
 
-// The type id (0 = wall) a pair override names, by label or id.
-int resolve_type(const ExportSpec& spec, const std::string& name, const std::string& text) {
+// The type id (0 = wall) a pair override (`field`: pair or pair-table) names, by label or id.
+int resolve_type(const ExportSpec& spec,
+                 const std::string& name,
+                 std::string_view field,
+                 const std::string& text) {
   if (name == "wall" || (spec.wall && name == wall_label(spec))) {
-    if (!spec.wall) throw_invalid("pair", text, "a pair of existing types (no --wall given)");
+    if (!spec.wall) throw_invalid(field, text, "a pair of existing types (no --wall given)");
     return 0;
   }
   const int n = static_cast<int>(spec.types.size());
@@ -85,32 +91,81 @@ int resolve_type(const ExportSpec& spec, const std::string& name, const std::str
   }
   std::string known;
   for (int i = 1; i <= n; ++i) known += type_label(spec, i) + ", ";
-  throw_invalid("pair", text, "two of [" + known + "wall] (labels or type ids) and =E");
+  throw_invalid(field, text,
+                fmt::format("two of [{}wall] (labels or type ids) and ={}", known,
+                            field == "pair" ? "E" : "FILE"));
+}
+
+// Whether `first`/`second` (labels or ids) name the pair (i, j) (j = 0: the wall).
+bool names_pair(
+    const ExportSpec& spec, const std::string& first, const std::string& second, int i, int j) {
+  const std::string text = first + "/" + second;
+  const int a = resolve_type(spec, first, "pair", text);
+  const int b = resolve_type(spec, second, "pair", text);
+  return (a == i && b == j) || (a == j && b == i);
 }
 
 // The pair's own constant e, if the spec sets one for (i, j) (j = 0: the wall).
 std::optional<double> pair_override(const ExportSpec& spec, int i, int j) {
   std::optional<double> e;
   for (const auto& p : spec.pair_restitution) {
-    const std::string text = p.first + "/" + p.second;
-    const int a = resolve_type(spec, p.first, text);
-    const int b = resolve_type(spec, p.second, text);
-    if ((a == i && b == j) || (a == j && b == i)) e = p.restitution;
+    if (names_pair(spec, p.first, p.second, i, j)) e = p.restitution;
   }
   return e;
 }
 
-// e(v) of sphere material `a` hitting `b`: the registered model needs the yielding body as the
-// substrate, so the body with a yield stress (the softer if both) is taken as the flat.
+// The pair's own e(v) table, if the spec gives one for (i, j).
+const PairTable* pair_table(const ExportSpec& spec, int i, int j) {
+  for (const auto& t : spec.pair_tables) {
+    if (names_pair(spec, t.first, t.second, i, j)) return &t;
+  }
+  return nullptr;
+}
+
+// The pair (lower id first, 0 = wall) that `first`/`second` name; with --wall-only it must be a
+// type-wall pair.
+std::pair<int, int> named_pair(const ExportSpec& spec,
+                               const std::string& first,
+                               const std::string& second,
+                               std::string_view field,
+                               const std::string& text) {
+  const int a = resolve_type(spec, first, field, text);
+  const int b = resolve_type(spec, second, field, text);
+  if (spec.wall_only && a != 0 && b != 0) {
+    throw_invalid(field, text, "a type-wall pair (the export is --wall-only)");
+  }
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// Each pair a --pair or --pair-table names exists, and a pair with a table has no other target
+// of its own (a repeated --pair: the last one counts).
+void validate_pair_targets(const ExportSpec& spec) {
+  std::vector<std::pair<int, int>> named;
+  for (const auto& p : spec.pair_restitution) {
+    named.push_back(named_pair(spec, p.first, p.second, "pair", p.first + "/" + p.second));
+  }
+  for (const auto& t : spec.pair_tables) {
+    const std::string text = t.first + "/" + t.second + "=" + t.source;
+    const auto key = named_pair(spec, t.first, t.second, "pair-table", text);
+    if (std::find(named.begin(), named.end(), key) != named.end()) {
+      throw_invalid("pair-table", text, "a pair that no other --pair or --pair-table names");
+    }
+    named.push_back(key);
+  }
+}
+
+// e(v) of the pair (material `a` of type_i against `b`). A registered model is written for a
+// sphere of density rho on a yielding flat; the Hertz impact of any pair (R*, m*, E*) is exactly
+// that of a sphere of density rho* = 3 m*/(4 pi R*^3) on a flat of the same E*, and every model
+// depends on the sphere only through E* and its density (k1 = E*/(rho v^2), Thornton's v_y), not
+// its radius. So the body with a yield stress (the softer if both) is the model's flat, the other
+// its sphere, and the sphere gets the pair's rho* (c.effective_density): 4 rho for two identical
+// spheres, the particle's own density against the rigid wall.
 RestitutionCurve model_curve(const ExportSpec& spec,
                              const PairCalibration& c,
                              const Material& a,
                              const Material& b,
                              std::string& description) {
-  if (spec.table) {
-    description = "table " + spec.table_source;
-    return *spec.table;
-  }
   const bool b_yields = b.yield_stress.has_value();
   const bool a_yields = a.yield_stress.has_value();
   if (!a_yields && !b_yields) {
@@ -124,7 +179,7 @@ RestitutionCurve model_curve(const ExportSpec& spec,
                     spec.model, first, second));
   }
   const bool b_is_flat = b_yields && (!a_yields || *b.yield_stress <= *a.yield_stress);
-  const Material& sphere = b_is_flat ? a : b;
+  Material sphere = b_is_flat ? a : b;
   const Material& flat = b_is_flat ? b : a;
   const std::string sphere_label = b_is_flat       ? type_label(spec, c.type_i)
                                    : c.type_j == 0 ? wall_label(spec)
@@ -132,9 +187,37 @@ RestitutionCurve model_curve(const ExportSpec& spec,
   const std::string flat_label = !b_is_flat      ? type_label(spec, c.type_i)
                                  : c.type_j == 0 ? wall_label(spec)
                                                  : type_label(spec, c.type_j);
-  description = spec.model + " (" + sphere_label + " on " + flat_label + ")";
+  description = spec.model + " (" + sphere_label + " on " + flat_label;
+  if (sphere.density != c.effective_density) {
+    description += fmt::format(", sphere density rho* = {:.6g} kg/m^3", c.effective_density);
+  }
+  description += ")";
+  sphere.density = c.effective_density;
   auto model = restitution::make_model(spec.model, sphere, flat);
   return [model](double v) { return model.cor(v); };
+}
+
+// The pair's e(v) target: its own table, else the export's table or model.
+RestitutionCurve pair_curve(const ExportSpec& spec,
+                            const PairCalibration& c,
+                            const Material& a,
+                            const Material& b,
+                            std::string& description) {
+  if (const PairTable* t = pair_table(spec, c.type_i, c.type_j)) {
+    description = "table " + t->source + " (--pair-table)";
+    return t->curve;
+  }
+  if (spec.table) {
+    description = "table " + spec.table_source;
+    return *spec.table;
+  }
+  if (spec.model.empty()) {
+    const std::string second = c.type_j == 0 ? "wall" : type_label(spec, c.type_j);
+    throw_invalid("target of pair " + c.name(), type_label(spec, c.type_i) + "/" + second,
+                  "set: --restitution, --model or --table for every pair, or --pair or "
+                  "--pair-table for this one");
+  }
+  return model_curve(spec, c, a, b, description);
 }
 
 // The constant e closest to the target in the worst case: the mid-range of e over the speeds.
@@ -166,11 +249,14 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
     other = &*spec.wall;
     c.effective_radius = ti.radius;
     c.effective_mass = sphere_mass(ti);
+    c.effective_density = ti.material.density;
   } else {
     const ParticleType& tj = spec.types[static_cast<std::size_t>(j - 1)];
     other = &tj.material;
     c.effective_radius = ti.radius * tj.radius / (ti.radius + tj.radius);
     c.effective_mass = sphere_mass(ti) * sphere_mass(tj) / (sphere_mass(ti) + sphere_mass(tj));
+    c.effective_density = restitution::pair_effective_density(
+        ti.radius / tj.radius, ti.material.density, ti.material.density / tj.material.density);
   }
   c.effective_modulus = corlab::effective_modulus(ti.material, *other);
   c.hertz_stiffness = hertz_stiffness(c.effective_modulus, c.effective_radius);
@@ -179,7 +265,7 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
   c.constant = pair_override(spec, i, j);
   if (c.constant) {
     c.target = fmt::format("constant e = {:.6g} (--pair)", *c.constant);
-  } else if (spec.restitution) {
+  } else if (spec.restitution && !pair_table(spec, i, j)) {
     c.constant = spec.restitution;
     c.target = fmt::format("constant e = {:.6g}", *c.constant);
   }
@@ -193,7 +279,7 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
     c.best_constant = best_constant_fit(speeds, c.curve);
     return c;
   }
-  c.curve = model_curve(spec, c, ti.material, *other, c.target);
+  c.curve = pair_curve(spec, c, ti.material, *other, c.target);
   c.viscoelastic = fit_viscoelastic_damping(c.hertz_stiffness, c.effective_mass, speeds, c.curve);
   c.liggghts = fit_liggghts_thornton_pressure(c.effective_modulus, c.effective_radius,
                                               c.effective_mass, speeds, c.curve);
@@ -267,6 +353,24 @@ PairRestitution parse_pair_restitution(std::string_view text) {
   return p;
 }
 
+PairTable parse_pair_table(std::string_view text) {
+  constexpr std::string_view kSyntax =
+      "A/B=FILE with type labels or ids (or wall) and an FE results.csv (columns velocity, e)";
+  const auto slash = text.find('/');
+  const auto eq = text.find('=');
+  if (slash == std::string_view::npos || eq == std::string_view::npos || eq < slash) {
+    throw_invalid("pair-table", text, kSyntax);
+  }
+  PairTable t;
+  t.first = std::string(trim(text.substr(0, slash)));
+  t.second = std::string(trim(text.substr(slash + 1, eq - slash - 1)));
+  t.source = std::string(trim(text.substr(eq + 1)));
+  if (t.first.empty() || t.second.empty() || t.source.empty()) {
+    throw_invalid("pair-table", text, kSyntax);
+  }
+  return t;
+}
+
 std::string type_label(const ExportSpec& spec, int id) {
   const ParticleType& t = spec.types[static_cast<std::size_t>(id - 1)];
   if (!t.label.empty()) return t.label;
@@ -310,14 +414,7 @@ bool liggghts_uses_thornton_ning(const std::vector<PairCalibration>& pairs) {
 
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec) {
   validate_spec(spec);
-  for (const auto& p : spec.pair_restitution) {  // each named pair must exist
-    const std::string text = p.first + "/" + p.second;
-    const int a = resolve_type(spec, p.first, text);
-    const int b = resolve_type(spec, p.second, text);
-    if (spec.wall_only && a != 0 && b != 0) {
-      throw_invalid("pair", text, "a type-wall pair (the export is --wall-only)");
-    }
-  }
+  validate_pair_targets(spec);
   std::vector<PairCalibration> pairs;
   const int n = static_cast<int>(spec.types.size());
   for (int i = 1; i <= n && !spec.wall_only; ++i) {

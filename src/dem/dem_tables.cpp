@@ -32,6 +32,21 @@ double liggghts_e(const PairCalibration& p, double v) {
   return simulate_impact(f, p.effective_mass, v).restitution;
 }
 
+// Each particle type as the exports use it (id = LAMMPS/LIGGGHTS atom type).
+nlohmann::json types_json(const ExportSpec& spec) {
+  nlohmann::json types = nlohmann::json::array();
+  for (int id = 1; id <= static_cast<int>(spec.types.size()); ++id) {
+    const ParticleType& t = spec.types[static_cast<std::size_t>(id - 1)];
+    types.push_back({{"id", id},
+                     {"label", type_label(spec, id)},
+                     {"radius_m", t.radius},
+                     {"density_kg_per_m3", t.material.density},
+                     {"youngs_modulus_Pa", t.material.youngs_modulus},
+                     {"poisson_ratio", t.material.poisson_ratio}});
+  }
+  return types;
+}
+
 }  // namespace
 
 std::string write_table_csv(const ExportSpec& spec,
@@ -69,6 +84,7 @@ std::string write_json(const ExportSpec& spec,
                          {"liggghts", liggghts_time_step(pairs)},
                          {"yade", yade_time_step(pairs)}};
   root["liggghts_model"] = liggghts_uses_thornton_ning(pairs) ? "thornton_ning" : "hertz";
+  root["types"] = types_json(spec);
   const auto fit_json = [](const CurveFit& f) {
     return nlohmann::json{{"parameter", f.parameter},
                           {"rms_error", f.rms_error},
@@ -86,11 +102,14 @@ std::string write_json(const ExportSpec& spec,
   };
   for (const auto& p : pairs) {
     nlohmann::json j{{"pair", short_name(p)},
+                     {"type_i", p.type_i},
+                     {"type_j", p.type_j},
                      {"label", p.label},
                      {"target", p.target},
                      {"effective_modulus_Pa", p.effective_modulus},
                      {"effective_radius_m", p.effective_radius},
                      {"effective_mass_kg", p.effective_mass},
+                     {"effective_density_kg_per_m3", p.effective_density},
                      {"hertz_stiffness_N_per_m1.5", p.hertz_stiffness},
                      {"contact_time_at_v_max_s", p.contact_time_fast},
                      {"contact_time_at_v_min_s", p.contact_time_slow}};

@@ -41,6 +41,18 @@ struct PairRestitution {
 /// Parses "A/B=E" (labels or type ids, "wall" for the wall); InputError naming `pair`.
 PairRestitution parse_pair_restitution(std::string_view text);
 
+/// An e(v) table for one pair that replaces the export's target there: an FE run is of one pair
+/// of materials and radii, so one table for every pair (`table` below) fits an export of one type.
+struct PairTable {
+  std::string first;       ///< type label or 1-based type id
+  std::string second;      ///< type label, type id, or "wall"
+  std::string source;      ///< the table's file name (parse_pair_table), in the exports
+  RestitutionCurve curve;  ///< e(v) [m/s] -> [-] (tabulated_curve)
+};
+/// Parses "A/B=FILE" into first, second and source (the curve is the caller's to read);
+/// InputError naming `pair-table`.
+PairTable parse_pair_table(std::string_view text);
+
 /// What the user asks for.
 struct ExportSpec {
   std::vector<ParticleType> types;    ///< at least one
@@ -55,6 +67,7 @@ struct ExportSpec {
   bool wall_only = false;                 ///< only type-wall contacts (no particle pairs)
   std::string wall_label;                 ///< the wall's name in the exports; empty: material's
   std::vector<PairRestitution> pair_restitution;  ///< constant e of single pairs
+  std::vector<PairTable> pair_tables;             ///< e(v) tables of single pairs
 };
 
 /// The label of type `id` (1-based) and of the wall, as written in the exports.
@@ -68,6 +81,9 @@ struct PairCalibration {
   double effective_modulus = 0.0;  ///< E* [Pa]
   double effective_radius = 0.0;   ///< R* [m]
   double effective_mass = 0.0;     ///< m* [kg] (wall: sphere mass)
+  /// rho* = 3 m*/(4 pi R*^3) [kg/m^3]: the density of the sphere whose impact on a flat is this
+  /// pair's (wall: the particle's; two identical spheres: 4 rho); a model's e(v) is taken at it.
+  double effective_density = 0.0;
   double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
   std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
   std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
@@ -97,7 +113,8 @@ struct PairCalibration {
 };
 
 /// Validates the spec (InputError naming the field) and calibrates every pair i <= j and each
-/// type against the wall.
+/// type against the wall. A pair's target: its --pair constant or --pair-table, else the export's
+/// (restitution, model or table; with none, every pair needs its own).
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec);
 
 /// LIGGGHTS thornton_ning's coefficientYieldRatio per type (a_y = ratio r_i): its wall fit,

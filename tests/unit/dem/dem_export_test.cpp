@@ -5,13 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
 #include "corlab/dem/calibration.hpp"
 #include "corlab/dem/lammps_mapping.hpp"
 #include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/registry.hpp"
 
 namespace corlab::dem {
 namespace {
@@ -71,6 +74,10 @@ TEST(DemExport, ModelCurveFitsAndJson) {
   // Thornton's own law reproduces thornton1997 (p_y = 1.6 sigma_y); LIGGGHTS's law follows it
   // closely; the viscoelastic law can only follow it roughly (e ~ 1 - c v^(1/5)).
   EXPECT_NEAR(pairs[0].thornton->parameter / (1.6 * 380e6), 1.0, 1e-4);
+  // A wall pair is the model itself: the sphere's own density (rho* = rho against the wall).
+  const auto model = restitution::make_model("thornton1997", material("alumina_ma2023"),
+                                             material("aluminium_ma2023"));
+  for (const double v : {0.5, 2.0, 5.0}) EXPECT_DOUBLE_EQ(pairs[0].curve(v), model.cor(v));
   EXPECT_LT(pairs[0].liggghts->max_abs_error, 0.02);
   EXPECT_GT(pairs[0].viscoelastic->max_abs_error, pairs[0].liggghts->max_abs_error);
   const auto json = nlohmann::json::parse(write_json(spec, pairs, 8));
@@ -93,6 +100,128 @@ TEST(DemExport, ModelCurveFitsAndJson) {
   // YADE's hook takes the normal approach speed.
   EXPECT_NE(write_yade(spec, pairs).find("speed = (b1.state.vel - b2.state.vel).dot(n)"),
             std::string::npos);
+}
+
+// A model is written for a sphere of density rho on a flat; two identical spheres (R* = R/2,
+// m* = m/2) are a sphere of density rho* = 3 m*/(4 pi R*^3) = 4 rho on it, so every model (all
+// depend on the density only through rho v^2) gives the pair at v what one sphere of density rho
+// gives at 2 v: the pair first yields at half the wall's approach speed.
+TEST(DemExport, ParticlePairsTakeTheModelAtTheEffectiveDensity) {
+  const Material& aluminium = material("aluminium_ma2023");
+  for (const char* name : {"thornton1997", "corlab2026"}) {
+    ExportSpec spec;
+    spec.types = {{aluminium, 0.005, ""}};
+    spec.model = name;
+    spec.v_min = 0.3;
+    spec.v_max = 3.0;
+    const auto pairs = calibrate_pairs(spec);
+    ASSERT_EQ(pairs.size(), 1u);
+    EXPECT_DOUBLE_EQ(pairs[0].effective_density, 4.0 * aluminium.density);
+    Material dense = aluminium;
+    dense.density = 4.0 * aluminium.density;
+    const auto at_rho_star = restitution::make_model(name, dense, aluminium);
+    const auto one_sphere = restitution::make_model(name, aluminium, aluminium);
+    for (const double v : {0.3, 1.0, 3.0}) {
+      EXPECT_DOUBLE_EQ(pairs[0].curve(v), at_rho_star.cor(v)) << name << " v=" << v;
+      EXPECT_NEAR(pairs[0].curve(v), one_sphere.cor(2.0 * v), 1e-12) << name << " v=" << v;
+      EXPECT_LT(pairs[0].curve(v), one_sphere.cor(v)) << name << " v=" << v;
+    }
+    EXPECT_NE(pairs[0].target.find("rho* = 10800 kg/m^3"), std::string::npos) << pairs[0].target;
+  }
+}
+
+// Unequal spheres: the JSON's R* and m* are the pair's, and the model sees rho* = 3 m*/(4 pi R*^3);
+// a wall pair keeps the particle's own density, also when the particle is the body that yields.
+TEST(DemExport, UnequalPairsAndWallPairsDensities) {
+  const Material& aluminium = material("aluminium_ma2023");
+  const Material& alumina = material("alumina_ma2023");
+  ExportSpec spec;
+  spec.types = {{alumina, 0.002, ""}, {aluminium, 0.005, ""}};
+  spec.wall = alumina;
+  spec.model = "thornton1997";
+  spec.pair_restitution = {parse_pair_restitution("1/1=1"), parse_pair_restitution("1/wall=1")};
+  spec.v_min = 0.3;
+  spec.v_max = 3.0;
+  const auto pairs = calibrate_pairs(spec);
+  ASSERT_EQ(pairs.size(), 5u);  // 1-1, 1-2, 2-2, 1-wall, 2-wall
+  const double m1 = 4.0 / 3.0 * units::kPi * std::pow(0.002, 3) * alumina.density;
+  const double m2 = 4.0 / 3.0 * units::kPi * std::pow(0.005, 3) * aluminium.density;
+  const double r_star = 0.002 * 0.005 / 0.007;
+  const double m_star = m1 * m2 / (m1 + m2);
+  const auto json = nlohmann::json::parse(write_json(spec, pairs, 8));
+  EXPECT_EQ(json["pairs"][1]["pair"], "1-2");
+  EXPECT_NEAR(json["pairs"][1]["effective_radius_m"].get<double>(), r_star, 1e-15);
+  EXPECT_NEAR(json["pairs"][1]["effective_mass_kg"].get<double>() / m_star, 1.0, 1e-12);
+  const double rho_star = 3.0 * m_star / (4.0 * units::kPi * std::pow(r_star, 3));
+  EXPECT_NEAR(pairs[1].effective_density / rho_star, 1.0, 1e-12);
+  Material sphere = alumina;  // aluminium yields: the flat
+  sphere.density = rho_star;
+  const auto model = restitution::make_model("thornton1997", sphere, aluminium);
+  for (const double v : {0.3, 3.0}) EXPECT_NEAR(pairs[1].curve(v), model.cor(v), 1e-12);
+  // 2-wall: the yielding aluminium particle on the elastic alumina wall is the model's flat; its
+  // sphere (the wall's material) takes the particle's density (m* = m2, R* = R2).
+  EXPECT_EQ(pairs[4].label, "aluminium_ma2023-alumina_ma2023");
+  EXPECT_DOUBLE_EQ(pairs[4].effective_density, aluminium.density);
+  Material wall_as_sphere = alumina;
+  wall_as_sphere.density = aluminium.density;
+  const auto swapped = restitution::make_model("thornton1997", wall_as_sphere, aluminium);
+  EXPECT_DOUBLE_EQ(pairs[4].curve(1.0), swapped.cor(1.0));
+}
+
+// --pair-table: one pair's own e(v) (an FE run of those two spheres); the other pairs keep the
+// export's target, and the 1-2 pair's hooks carry the table, not the 1-1 or 2-2 e(v).
+TEST(DemExport, PairTableReplacesOnePairsTarget) {
+  const auto glass = parse_labelled_material("glass=E=63e9,nu=0.22,rho=2500", "type");
+  const auto copper = parse_labelled_material("copper=E=120e9,nu=0.34,rho=8900,sy=200e6", "type");
+  ExportSpec spec;
+  spec.types = {{glass.material, 0.002, glass.label}, {copper.material, 0.005, copper.label}};
+  spec.model = "corlab2026";
+  spec.v_min = 0.5;
+  spec.v_max = 4.0;
+  spec.pair_restitution = {parse_pair_restitution("glass/glass=1")};
+  PairTable table = parse_pair_table("copper/glass=fe pair.csv");
+  EXPECT_EQ(table.first, "copper");
+  EXPECT_EQ(table.second, "glass");
+  EXPECT_EQ(table.source, "fe pair.csv");
+  table.curve = tabulated_curve({0.5, 4.0}, {0.9, 0.6});
+  spec.pair_tables = {table};
+  const auto pairs = calibrate_pairs(spec);
+  ASSERT_EQ(pairs.size(), 3u);  // 1-1, 1-2, 2-2
+  EXPECT_EQ(pairs[1].target, "table fe pair.csv (--pair-table)");
+  EXPECT_DOUBLE_EQ(pairs[1].curve(2.25), 0.75);
+  EXPECT_NE(pairs[2].target.find("corlab2026 (copper on copper"), std::string::npos);
+  const std::string yade = write_yade(spec, pairs);
+  const auto row = yade.find("(1, 2): ([0.5, ");
+  ASSERT_NE(row, std::string::npos);
+  EXPECT_NE(yade.find("], [0.9, ", row), std::string::npos);
+  EXPECT_LT(yade.find("], [0.9, ", row), yade.find("(2, 2):", row));
+  // No export-wide target: fine while every pair has its own, else the uncovered pair is named.
+  spec.model.clear();
+  spec.pair_restitution.push_back(parse_pair_restitution("copper/copper=0.7"));
+  EXPECT_EQ(calibrate_pairs(spec).size(), 3u);
+  spec.pair_restitution.pop_back();
+  try {
+    calibrate_pairs(spec);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "target of pair 2-2 (copper-copper)") << e.what();
+  }
+  // A pair given a table and a constant, or two tables, is refused; so is a bad spec.
+  spec.model = "corlab2026";
+  spec.pair_restitution.push_back(parse_pair_restitution("1/2=0.5"));
+  EXPECT_THROW(calibrate_pairs(spec), InputError);
+  spec.pair_restitution.pop_back();
+  spec.pair_tables.push_back(table);
+  EXPECT_THROW(calibrate_pairs(spec), InputError);
+  for (const char* bad : {"glass=fe.csv", "glass/copper", "glass/copper=", "/copper=fe.csv"}) {
+    try {
+      parse_pair_table(bad);
+      FAIL() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "pair-table") << bad;
+      EXPECT_EQ(std::string(e.what()).rfind("invalid pair-table = ", 0), 0u) << e.what();
+    }
+  }
 }
 
 TEST(DemExport, LabelsAndAnElasticPairByOverride) {

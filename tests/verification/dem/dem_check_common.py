@@ -1,6 +1,7 @@
 """Shared helpers of the DEM real-code checks (dem_{lammps,liggghts,yade}_check.py) and of
-scripts/dem_time_step.py: exports, one-sphere drop tests (a sphere on the wall, two equal
-spheres head-on, an oblique frictionless impact) in Debian's codes, and the cases checked."""
+scripts/dem_time_step.py: exports, drop tests (a sphere on the wall, two spheres head-on, each of
+its own type's radius and density, an oblique frictionless impact) in Debian's codes, and the
+cases checked."""
 import json
 import math
 import os
@@ -8,13 +9,17 @@ import subprocess
 
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "dem")
 FE_TABLE = os.path.join(DATA, "fe_alumina_aluminium.csv")
+# corlab's FE e(v) of the 2 mm glass sphere on a free 5 mm copper sphere (its .toml says how)
+FE_PAIR_TABLE = os.path.join(DATA, "fe_glass_copper_spheres.csv")
 GLASS = "glass=E=63e9,nu=0.22,rho=2500"
 COPPER = "copper=E=120e9,nu=0.34,rho=8900,sy=200e6"
 
 # The three pairs of issue 30, each with its e(v) range:
 #   glass on copper, corlab2026 (and the elastic glass-glass pair, e = 1 by --pair);
 #   alumina on aluminium alloy, thornton1997 (and corlab's FE e(v) of it);
-#   aluminium spheres head-on, thornton1997 (a plastic particle-particle pair).
+#   aluminium spheres head-on, thornton1997 (a plastic particle-particle pair);
+# and a pair of unequal types (issue 26): a 2 mm glass and a 5 mm copper sphere head-on, with
+#   corlab2026 and with corlab's FE e(v) of that pair.
 EV_CASES = (
     ("glass_copper", ["--type", GLASS + ":0.002", "--wall", COPPER, "--model", "corlab2026",
                       "--pair", "glass/glass=1", "--v-min", "0.5", "--v-max", "4"],
@@ -27,6 +32,15 @@ EV_CASES = (
      (("1-wall", "wall"),)),
     ("aluminium_spheres", ["--type", "aluminium_ma2023:0.005", "--model", "thornton1997",
                            "--v-min", "0.3", "--v-max", "3"], (("1-1", "pair"),)),
+    # two types of another radius, material and density: the 1-2 pair must run its own law
+    ("glass_copper_spheres", ["--type", GLASS + ":0.002", "--type", COPPER + ":0.005",
+                              "--model", "corlab2026", "--pair", "glass/glass=1",
+                              "--v-min", "0.5", "--v-max", "4"], (("1-2", "pair"),)),
+    # the same two types with corlab's FE e(v) of that pair (--pair-table) for the 1-2 pair
+    ("glass_copper_fe_pair", ["--type", GLASS + ":0.002", "--type", COPPER + ":0.005",
+                              "--model", "corlab2026", "--pair", "glass/glass=1",
+                              "--pair-table", "glass/copper=" + FE_PAIR_TABLE,
+                              "--v-min", "0.5", "--v-max", "4"], (("1-2", "pair"),)),
 )
 CONSTANT_TARGETS = (0.3, 0.9)
 
@@ -57,15 +71,33 @@ def parse_e(out):
 
 
 class Drop:
-    """One drop test: the sphere (radius [m], density [kg/m^3]) of the pair's first type at
-    normal speed v [m/s] (tangential vt [m/s], frictionless) on the wall or on its twin; dt [s]
-    the step (None: the fragment's own)."""
+    """One drop test of a pair of the export `data` (its dem_export.json): a particle of the
+    pair's first type at normal speed v [m/s] (tangential vt [m/s], frictionless) on the wall, or
+    head-on along x against a particle of its second type (each type's own radius [m] and density
+    [kg/m^3], approach speed v, zero total momentum); dt [s] the step. The export's R* and m* must
+    be those of the two particles."""
 
-    def __init__(self, pair, geometry, v, dt, vt=0.0):
+    def __init__(self, data, pair, geometry, v, dt, vt=0.0):
         self.pair, self.geometry, self.v, self.dt, self.vt = pair, geometry, v, dt, vt
-        self.radius = pair["effective_radius_m"] * (1 if geometry == "wall" else 2)
-        volume = 4.0 / 3.0 * math.pi * self.radius ** 3
-        self.density = pair["effective_mass_kg"] * (1 if geometry == "wall" else 2) / volume
+        self.ntypes = len(data["types"])
+        ids = [pair["type_i"]] + ([pair["type_j"]] if geometry == "pair" else [])
+        self.types = ids
+        self.radii = [data["types"][t - 1]["radius_m"] for t in ids]
+        self.densities = [data["types"][t - 1]["density_kg_per_m3"] for t in ids]
+        masses = [4.0 / 3.0 * math.pi * r ** 3 * rho for r, rho in zip(self.radii, self.densities)]
+        if geometry == "pair":
+            r_star = self.radii[0] * self.radii[1] / (self.radii[0] + self.radii[1])
+            m_star = masses[0] * masses[1] / (masses[0] + masses[1])
+            # velocities [m/s] along x: particle 1 at -x moving +x, zero total momentum
+            self.velocities = [v * masses[1] / sum(masses), -v * masses[0] / sum(masses)]
+        else:
+            r_star, m_star = self.radii[0], masses[0]
+        for name, mine, key in (("R*", r_star, "effective_radius_m"),
+                                ("m*", m_star, "effective_mass_kg")):
+            if abs(mine - pair[key]) > 1e-12 * mine:
+                raise AssertionError("%s %s: dem_export.json has %s = %.17g, the particles %.17g"
+                                     % (pair["pair"], pair["label"], name, pair[key], mine))
+        self.radius = max(self.radii)  # sizes the box
         tc = contact_time(pair, v)
         self.gap = 20 * v * dt
         self.steps = int((self.gap / v + 2.0 * tc) / dt)
@@ -118,7 +150,7 @@ def case_rows(corlab, work, code, simulate, fragments, time_step_key, steps_per_
             for geometry, pair_key in (("wall", "1-wall"), ("pair", "1-1")):
                 for v in (0.1, 10.0):
                     pair = pairs[pair_key]
-                    e = simulate(out, fragment, Drop(pair, geometry, v, dt))
+                    e = simulate(out, fragment, Drop(data, pair, geometry, v, dt))
                     check("%s e=%.1f %s v=%g" % (fragment, target, geometry, v), e, target,
                           law_e(pair, key, 0), pair["delivered"][key]["max_abs_error"],
                           data["time_step_error"], pair["delivered"][key]["law"])
@@ -135,7 +167,7 @@ def case_rows(corlab, work, code, simulate, fragments, time_step_key, steps_per_
                 picks = (0, last // 2, last)
                 for i in picks:
                     v, target = fit["velocities"][i], fit["target"][i]
-                    e = simulate(out, fragment, Drop(pair, geometry, v, dt))
+                    e = simulate(out, fragment, Drop(data, pair, geometry, v, dt))
                     check("%s %s %s v=%.3g" % (fragment, name, pair["label"], v), e, target,
                           law_e(pair, key, i), pair["delivered"][key]["max_abs_error"],
                           data["time_step_error"], pair["delivered"][key]["law"])

@@ -2,8 +2,8 @@
 """Real-code check of `corlab dem` exports in LAMMPS (Debian's `lmp`, never mocked).
 
 Each case's export is wrapped in a minimal input (one sphere hitting the fix wall/gran plane
-z = 0, or two equal spheres head-on; no gravity, so e is the contact's alone) and run at the
-export's recommended time step, both lammps.in (e(v) through the python/invoke hook) and
+z = 0, or two spheres of the pair's types head-on; no gravity, so e is the contact's alone) and
+run at the export's recommended time step, both lammps.in (e(v) through the python/invoke hook) and
 lammps_nopython.in: e must be within the time-step error (1e-3) of the law the fragment runs, and
 within the fragment's stated max |de| + 1e-3 of the target. Cases: dem_check_common.py.
 usage: dem_lammps_check.py CORLAB_BIN LMP_BIN WORK_DIR [--report FILE]
@@ -19,20 +19,24 @@ def lammps_input(fragment, drop):
     r, v, dt = drop.radius, drop.v, drop.dt
     lines = ["units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
              "comm_modify vel yes", "region box block -%g %g -%g %g -%g %g" % ((8 * r,) * 6),
-             "create_box 1 box"]
+             "create_box %d box" % drop.ntypes]
     if drop.geometry == "wall":
-        lines += ["create_atoms 1 single 0 0 %.12g" % (r + drop.gap)]
+        lines += ["create_atoms %d single 0 0 %.12g" % (drop.types[0], drop.radii[0] + drop.gap)]
     else:
-        lines += ["create_atoms 1 single %.12g 0 %.12g" % (-(r + drop.gap / 2), 4 * r),
-                  "create_atoms 1 single %.12g 0 %.12g" % (r + drop.gap / 2, 4 * r)]
-    lines += ["set atom * diameter %.12g density %.12g" % (2 * r, drop.density)]
+        x = (-(drop.radii[0] + drop.gap / 2), drop.radii[1] + drop.gap / 2)
+        lines += ["create_atoms %d single %.12g 0 %.12g" % (t, xt, 4 * r)
+                  for t, xt in zip(drop.types, x)]
+    lines += ["set atom %d diameter %.12g density %.12g" % (k + 1, 2 * radius, density)
+              for k, (radius, density) in enumerate(zip(drop.radii, drop.densities))]
     if drop.geometry == "wall":
         lines += ["velocity all set %.12g 0 %.12g" % (drop.vt, -v)]
     else:
-        lines += ["set atom 1 vx %.12g" % (v / 2), "set atom 2 vx %.12g" % (-v / 2)]
+        lines += ["set atom %d vx %.12g" % (k + 1, u) for k, u in enumerate(drop.velocities)]
     lines += ["include %s" % fragment]
-    if drop.geometry == "pair" and "corlab_wall1" in open(fragment).read():
-        lines += ["unfix corlab_wall1"]
+    if drop.geometry == "pair":
+        text = open(fragment).read()
+        lines += ["unfix corlab_wall%d" % t for t in range(1, drop.ntypes + 1)
+                  if "fix corlab_wall%d " % t in text]
     lines += ["fix corlab_nve all nve/sphere", "timestep %.12g" % dt, "thermo 0",
               "run %d" % drop.steps]
     if drop.geometry == "wall":

@@ -17,24 +17,27 @@ from dem_check_common import case_rows, finish, parse_e, run  # noqa: E402
 def liggghts_input(fragment, drop):
     r, v = drop.radius, drop.v
     text = open(fragment).read()
-    ntypes = 2 if "corlab_wall" in text else 1
+    ntypes = drop.ntypes + (1 if "corlab_wall" in text else 0)  # the wall's material last
     lines = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
              "communicate single vel yes", "units si", "hard_particles yes",
              "region reg block -%g %g -%g %g -%g %g units box"
              % ((8 * r,) * 4 + (0.001 * r, 8 * r)),
              "create_box %d reg" % ntypes, "include %s" % fragment]
     if drop.geometry == "wall":
-        lines += ["create_atoms 1 single 0 0 %.12g units box" % (r + drop.gap)]
+        lines += ["create_atoms %d single 0 0 %.12g units box"
+                  % (drop.types[0], drop.radii[0] + drop.gap)]
     else:
-        if ntypes == 2:
+        if "corlab_wall" in text:
             lines += ["unfix corlab_wall"]
-        lines += ["create_atoms 1 single %.12g 0 %.12g units box" % (-(r + drop.gap / 2), 4 * r),
-                  "create_atoms 1 single %.12g 0 %.12g units box" % (r + drop.gap / 2, 4 * r)]
-    lines += ["set atom * diameter %.12g density %.12g" % (2 * r, drop.density)]
+        x = (-(drop.radii[0] + drop.gap / 2), drop.radii[1] + drop.gap / 2)
+        lines += ["create_atoms %d single %.12g 0 %.12g units box" % (t, xt, 4 * r)
+                  for t, xt in zip(drop.types, x)]
+    lines += ["set atom %d diameter %.12g density %.12g" % (k + 1, 2 * radius, density)
+              for k, (radius, density) in enumerate(zip(drop.radii, drop.densities))]
     if drop.geometry == "wall":
         lines += ["velocity all set %.12g 0 %.12g units box" % (drop.vt, -v)]
     else:
-        lines += ["set atom 1 vx %.12g" % (v / 2), "set atom 2 vx %.12g" % (-v / 2)]
+        lines += ["set atom %d vx %.12g" % (k + 1, u) for k, u in enumerate(drop.velocities)]
     lines += ["fix corlab_nve all nve/sphere", "timestep %.12g" % drop.dt, "run %d" % drop.steps]
     if drop.geometry == "wall":
         lines += ["variable e equal vz[1]/%.17g" % v]

@@ -17,23 +17,25 @@ from dem_check_common import (  # noqa: E402
 
 
 def yade_script(fragment, drop):
-    r, v = drop.radius, drop.v
+    v = drop.v
     hook = "corlab_set_en" in open(fragment).read()
-    lines = ["exec(open(%r).read())" % fragment, "R = %.17g" % r]
+    lines = ["exec(open(%r).read())" % fragment]
     if drop.geometry == "wall":
-        lines += ["O.bodies.append(box((0, 0, -R), (8 * R, 8 * R, R), fixed=True, "
+        lines += ["R = %.17g" % drop.radii[0],
+                  "O.bodies.append(box((0, 0, -R), (8 * R, 8 * R, R), fixed=True, "
                   "material=corlab_wall_mat))",
-                  "a = O.bodies.append(sphere((0, 0, R + %.17g), R, material=corlab_mat1))"
-                  % drop.gap,
+                  "a = O.bodies.append(sphere((0, 0, R + %.17g), R, material=corlab_mat%d))"
+                  % (drop.gap, drop.types[0]),
                   "O.bodies[a].state.vel = Vector3(%.17g, 0, %.17g)" % (drop.vt, -v)]
         measure = "O.bodies[a].state.vel[2] / %.17g" % v
     else:
-        lines += ["a = O.bodies.append(sphere((%.17g, 0, 0), R, material=corlab_mat1))"
-                  % (-(r + drop.gap / 2)),
-                  "b = O.bodies.append(sphere((%.17g, 0, 0), R, material=corlab_mat1))"
-                  % (r + drop.gap / 2),
-                  "O.bodies[a].state.vel = Vector3(%.17g, 0, 0)" % (v / 2),
-                  "O.bodies[b].state.vel = Vector3(%.17g, 0, 0)" % (-v / 2)]
+        (r1, r2), (t1, t2) = drop.radii, drop.types
+        lines += ["a = O.bodies.append(sphere((%.17g, 0, 0), %.17g, material=corlab_mat%d))"
+                  % (-(r1 + drop.gap / 2), r1, t1),
+                  "b = O.bodies.append(sphere((%.17g, 0, 0), %.17g, material=corlab_mat%d))"
+                  % (r2 + drop.gap / 2, r2, t2),
+                  "O.bodies[a].state.vel = Vector3(%.17g, 0, 0)" % drop.velocities[0],
+                  "O.bodies[b].state.vel = Vector3(%.17g, 0, 0)" % drop.velocities[1]]
         measure = "(O.bodies[b].state.vel[0] - O.bodies[a].state.vel[0]) / %.17g" % v
     lines += ["O.engines = [ForceResetter(), "
               "InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()]),"]
@@ -68,8 +70,8 @@ def oblique(corlab, work, simulate):
     import numpy
     target = float(numpy.interp(2.0, v_tab, e_n))
     full = float(numpy.interp(2.5, v_tab, e_n))
-    e = simulate(out, "yade_fragment.py", Drop(pair, "wall", 2.0, data["time_step_s"]["yade"],
-                                               vt=1.5))
+    e = simulate(out, "yade_fragment.py", Drop(data, pair, "wall", 2.0,
+                                               data["time_step_s"]["yade"], vt=1.5))
     bound = pair["delivered"]["yade"]["max_abs_error"] + data["time_step_error"]
     ok = abs(e - target) <= bound
     return ("oblique glass-copper v_n=2 v_t=1.5: e=%.6f e(v_n)=%.6f (e(|v|)=%.6f) |de|=%.1e "
