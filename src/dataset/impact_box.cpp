@@ -25,7 +25,7 @@ double point_effective_modulus(const ImpactBox& box, const DimensionlessImpact& 
 
 // rho* of the point's pair [kg/m^3].
 double point_effective_density(const ImpactBox& box, const DimensionlessImpact& p) {
-  return restitution::pair_effective_density(p.radius_ratio, p.density_ratio * box.density,
+  return pair_effective_density(p.radius_ratio, p.density_ratio * box.density,
                                              p.density_ratio);
 }
 
@@ -157,7 +157,7 @@ DimensionlessInputs dimensionless_inputs(const fem::ImpactConfig& config) {
   d.radius_ratio =
       fem::sphere_target(config) ? config.sphere.radius / config.substrate.radius : 0.0;
   d.effective_density =
-      restitution::pair_effective_density(d.radius_ratio, s.density, s.density / b.density);
+      pair_effective_density(d.radius_ratio, s.density, s.density / b.density);
   d.k1 = k1(e_star, d.effective_density, v);
   d.k2 = b.yield_stress ? k2(*b.yield_stress, e_star) : kNan;
   d.velocity_ratio = kNan;

@@ -255,7 +255,7 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
     other = &tj.material;
     c.effective_radius = ti.radius * tj.radius / (ti.radius + tj.radius);
     c.effective_mass = sphere_mass(ti) * sphere_mass(tj) / (sphere_mass(ti) + sphere_mass(tj));
-    c.effective_density = restitution::pair_effective_density(
+    c.effective_density = pair_effective_density(
         ti.radius / tj.radius, ti.material.density, ti.material.density / tj.material.density);
   }
   c.effective_modulus = corlab::effective_modulus(ti.material, *other);

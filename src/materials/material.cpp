@@ -51,6 +51,11 @@ double k1(double effective_modulus, double sphere_density, double velocity) {
   return effective_modulus / (sphere_density * velocity * velocity);
 }
 
+double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio) {
+  const double r3 = radius_ratio * radius_ratio * radius_ratio;
+  return sphere_density * std::pow(1.0 + radius_ratio, 3) / (1.0 + density_ratio * r3);
+}
+
 double k2(double yield_stress, double effective_modulus) {
   return yield_stress / effective_modulus;
 }

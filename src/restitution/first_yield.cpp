@@ -29,9 +29,4 @@ FirstYield first_yield(const Material& sphere,
   return y;
 }
 
-double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio) {
-  const double r3 = radius_ratio * radius_ratio * radius_ratio;
-  return sphere_density * std::pow(1.0 + radius_ratio, 3) / (1.0 + density_ratio * r3);
-}
-
 }  // namespace corlab::restitution

@@ -45,8 +45,16 @@ double effective_modulus(const Material& sphere, const Material& substrate);
 /// Effective modulus from the four constants [Pa].
 double effective_modulus(double e1, double nu1, double e2, double nu2);
 
-/// Ma et al. 2023 eq. 5: k1 = E* / (rho v^2) [-], rho = sphere density [kg/m^3], v [m/s].
+/// Ma et al. 2023 eq. 5: k1 = E* / (rho v^2) [-], rho = sphere density [kg/m^3] (a pair of
+/// spheres: rho*, pair_effective_density), v [m/s].
 double k1(double effective_modulus, double sphere_density, double velocity);
+
+/// rho* = 3 m* / (4 pi R*^3) [kg/m^3] of a sphere (radius R1, density rho1) hitting a free
+/// sphere (R2, rho2): rho1 (1 + r)^3 / (1 + (rho1/rho2) r^3) with r = R1/R2; r = 0 is a flat
+/// (rho* = rho1), two identical spheres give 4 rho1.
+/// @param radius_ratio R1/R2 >= 0 [-]  @param sphere_density rho1 [kg/m^3]
+/// @param density_ratio rho1/rho2 [-]
+double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio);
 
 /// Ma et al. 2023 eq. 6: k2 = sigma_y / E* [-], sigma_y = substrate yield stress [Pa].
 double k2(double yield_stress, double effective_modulus);

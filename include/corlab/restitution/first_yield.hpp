@@ -27,14 +27,7 @@ FirstYield first_yield(const Material& sphere, const Material& substrate);
 
 /// The same for any pair: the Hertz impact of R*, m* is that of a sphere of density
 /// rho* = 3 m* / (4 pi R*^3) on a rigid flat, so `effective_density` [kg/m^3] replaces the
-/// sphere's (pair_effective_density()).
+/// sphere's (pair_effective_density(), material.hpp).
 FirstYield first_yield(const Material& sphere, const Material& substrate, double effective_density);
-
-/// rho* = 3 m* / (4 pi R*^3) [kg/m^3] of a sphere (radius R1, density rho1) hitting a free
-/// sphere (R2, rho2): rho1 (1 + r)^3 / (1 + (rho1/rho2) r^3) with r = R1/R2; r = 0 is a flat
-/// (rho* = rho1), two identical spheres give 4 rho1.
-/// @param radius_ratio R1/R2 >= 0 [-]  @param sphere_density rho1 [kg/m^3]
-/// @param density_ratio rho1/rho2 [-]
-double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio);
 
 }  // namespace corlab::restitution

@@ -95,8 +95,15 @@ FieldValue k2_of(const FieldInput& in) {
   return std::isnan(sy) ? kNan : k2(sy, e_star(in));
 }
 
+// k1 with rho* of the pair (the sphere's density on a flat, fixed or rigid).
 FieldValue k1_of(const FieldInput& in) {
-  return k1(e_star(in), in.config->sphere.material.density, in.config->impact.velocity);
+  const ImpactConfig& c = *in.config;
+  const double rho1 = c.sphere.material.density;
+  const double rho = sphere_target(c)
+                         ? pair_effective_density(c.sphere.radius / c.substrate.radius, rho1,
+                                                  rho1 / c.substrate.material.density)
+                         : rho1;
+  return k1(e_star(in), rho, c.impact.velocity);
 }
 
 using R = ImpactResult;
@@ -175,8 +182,8 @@ const std::array kFields{
                          "-",
                          "why an error estimate asked for has no e_error (empty: it has)",
                          kBoth),
-    CORLAB_RESULT_MEMBER(e_n, "-", "normal restitution of the c.o.m. (= e for a normal impact)",
-                         kBoth),
+    CORLAB_RESULT_MEMBER(
+        e_n, "-", "normal restitution of the c.o.m. (= e for a normal impact)", kBoth),
     CORLAB_RESULT_MEMBER(
         e_t, "-", "tangential c.o.m. velocity ratio v_x'/v_x (3-D model, oblique)", kBoth),
     CORLAB_RESULT_MEMBER(omega, "rad/s", "rebound spin about the symmetry plane's normal", kBoth),
@@ -186,7 +193,7 @@ const std::array kFields{
             "Pa",
             "effective modulus (Ma et al. 2023 eq. 3)",
             [](const FieldInput& in) -> FieldValue { return e_star(in); }),
-    derived("k1", "-", "E* / (rho v^2) (Ma et al. 2023 eq. 5)", &k1_of),
+    derived("k1", "-", "E* / (rho v^2) (Ma et al. 2023 eq. 5; two spheres: rho*)", &k1_of),
     derived("k2", "-", "sigma_y / E* (Ma et al. 2023 eq. 6; nan if elastic)", &k2_of),
     derived("sphere_rho",
             "kg/m^3",
