@@ -115,10 +115,10 @@ void check_model(const ImpactConfig& c) {
                     "impact.angle > 0)");
     return;
   }
-  if (!rigid_target(c))
+  if (sphere_target(c))
     throw_invalid("substrate.shape", to_string(c.substrate.shape),
-                  "rigid with the 3-D model (solver.model = 3d or impact.angle > 0): its "
-                  "deformable flat is not built yet");
+                  "flat or rigid with the 3-D model (solver.model = 3d or impact.angle > 0): its "
+                  "second sphere is not built yet");
   if (c.impact.repeats != 1)
     throw_invalid("impact.repeats", c.impact.repeats, "1 with the 3-D model");
   if (!c.mesh.file.empty())
@@ -126,9 +126,8 @@ void check_model(const ImpactConfig& c) {
   try {
     validate(hex_mesh_options_for(c));
   } catch (const InputError& err) {
-    throw InputError(fmt::format(
-        "invalid mesh.h_min = {}: the 3-D mesh it gives is refused ({})", c.mesh.h_min,
-        err.what()));
+    throw InputError(fmt::format("invalid mesh.h_min = {}: the 3-D mesh it gives is refused ({})",
+                                 c.mesh.h_min, err.what()));
   }
 }
 
@@ -159,8 +158,8 @@ RunEstimate estimate_run(const ImpactConfig& c) {
   const double lattice = uses_3d_model(c) ? std::sqrt(3.0) : std::sqrt(2.0);
   const double h = uses_3d_model(c) ? hex_mesh_options_for(c).h_contact : e.element_size;
   e.element_size = h;
-  e.time_step = c.solver.safety_factor * h / lattice / e.wave_speed *
-                (std::sqrt(1.0 + b1 * b1) - b1);
+  e.time_step =
+      c.solver.safety_factor * h / lattice / e.wave_speed * (std::sqrt(1.0 + b1 * b1) - b1);
   // Default t_max: 20 Hertz contact times after contact (explicit_solver.cpp).
   e.simulated_time = c.solver.t_max > 0.0 ? c.solver.t_max - c.impact.gap / c.impact.velocity
                                           : 20.0 * hertz_reference(c).contact_time;

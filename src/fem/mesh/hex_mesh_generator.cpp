@@ -1,6 +1,8 @@
 // The half sphere's cube-sphere O-grid (hex_mesh_generator.hpp).
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -150,6 +152,20 @@ void validate(const HexMeshOptions& o) {
   if (!(o.h_max >= o.h_contact)) throw_invalid("mesh.h_max", o.h_max, ">= mesh.h_contact");
   if (!(o.core_fraction > 0.1 && o.core_fraction < 0.8))
     throw_invalid("mesh.core_fraction", o.core_fraction, "in (0.1, 0.8)");
+  if (o.block) {
+    const double need = 2.0 * (o.zone_radius + o.travel);
+    if (!(o.block_half_width >= need))
+      throw_invalid("substrate.radius", o.block_half_width,
+                    fmt::format(">= {:.4g} [m] (twice the 3-D mesh's fine zone and the contact's "
+                                "tangential travel)",
+                                need));
+    if (!(o.block_depth >= 2.0 * o.zone_depth))
+      throw_invalid("substrate.depth", o.block_depth,
+                    fmt::format(">= {:.4g} [m] (twice the fine zone's depth)", 2.0 * o.zone_depth));
+    if (o.block_half_width / o.h_contact > 2e3 || o.block_depth / o.h_contact > 2e3)
+      throw_invalid("mesh.h_contact", o.h_contact,
+                    ">= substrate size / 2000 (a 3-D mesh of that is too large)");
+  }
 }
 
 HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
@@ -167,7 +183,62 @@ HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   o.zone_depth = std::max(config.mesh.refine_depth * a, 2.0 * o.h_contact);
   o.growth = config.mesh.growth;
   o.h_max = std::max(config.mesh.h_max, o.h_contact);
+  o.block = config.substrate.shape == SubstrateShape::kFlat;
+  o.block_half_width = config.substrate.radius;
+  o.block_depth = config.substrate.depth;
+  const double v_t = config.impact.velocity * std::sin(config.impact.angle * units::kPi / 180.0);
+  o.travel = v_t * 1.5 * hertz_reference(normal).contact_time;
   return o;
+}
+
+void append_hex_block(const HexMeshOptions& o, HexMesh& mesh) {
+  const double w = o.block_half_width;
+  // x: graded both ways from the fine band [-zone, zone + travel]; y from 0; z down from 0.
+  const double right_fine = std::min(o.zone_radius + o.travel, 0.9 * w);
+  std::vector<double> x;
+  const std::vector<double> left =
+      graded_positions(w, o.h_contact, o.zone_radius, o.growth, o.h_max);
+  for (std::size_t i = left.size(); i-- > 1;) x.push_back(-left[i]);
+  const std::vector<double> right = graded_positions(w, o.h_contact, right_fine, o.growth, o.h_max);
+  x.insert(x.end(), right.begin(), right.end());
+  const std::vector<double> y = graded_positions(w, o.h_contact, o.zone_radius, o.growth, o.h_max);
+  const std::vector<double> depth =
+      graded_positions(o.block_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
+  std::vector<double> z;
+  for (std::size_t k = depth.size(); k-- > 0;) z.push_back(-depth[k]);
+  z.back() = 0.0;
+  const std::size_t nx = x.size();
+  const std::size_t ny = y.size();
+  const std::size_t nz = z.size();
+  const int first = mesh.num_nodes();
+  auto id = [&](std::size_t i, std::size_t j, std::size_t k) {
+    return first + static_cast<int>((k * ny + j) * nx + i);
+  };
+  for (std::size_t k = 0; k < nz; ++k)
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i) {
+        const int n = mesh.num_nodes();
+        mesh.x.push_back(x[i]);
+        mesh.y.push_back(y[j]);
+        mesh.z.push_back(z[k]);
+        mesh.node_body.push_back(Body::kSubstrate);
+        if (j == 0) mesh.symmetry_nodes.push_back(n);
+        if (k == 0) mesh.base_nodes.push_back(n);
+      }
+  for (std::size_t k = 0; k + 1 < nz; ++k)
+    for (std::size_t j = 0; j + 1 < ny; ++j)
+      for (std::size_t i = 0; i + 1 < nx; ++i) {
+        mesh.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                              id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+                              id(i, j + 1, k + 1)});
+        mesh.element_body.push_back(Body::kSubstrate);
+      }
+  for (std::size_t j = 0; j + 1 < ny; ++j)
+    for (std::size_t i = 0; i + 1 < nx; ++i)
+      mesh.top_faces.push_back(
+          {id(i, j, nz - 1), id(i + 1, j, nz - 1), id(i + 1, j + 1, nz - 1), id(i, j + 1, nz - 1)});
+  mesh.top_x = x;
+  mesh.top_y = y;
 }
 
 HexMesh generate_hex_sphere(const HexMeshOptions& o) {
@@ -198,6 +269,12 @@ HexMesh generate_hex_sphere(const HexMeshOptions& o) {
     return b.node(l.x[i], l.y[j], l.z[m], 0.0);
   });
   std::sort(mesh.symmetry_nodes.begin(), mesh.symmetry_nodes.end());
+  return mesh;
+}
+
+HexMesh generate_hex_impact_mesh(const HexMeshOptions& o) {
+  HexMesh mesh = generate_hex_sphere(o);
+  if (o.block) append_hex_block(o, mesh);
   return mesh;
 }
 

@@ -12,6 +12,7 @@
 #include "corlab/core/units.hpp"
 #include "corlab/fem/kernels/bulk_viscosity.hpp"
 #include "corlab/fem/kernels/coulomb_friction.hpp"
+#include "corlab/fem/kernels/facet_contact.hpp"
 #include "corlab/fem/kernels/hex8.hpp"
 #include "corlab/fem/kernels/hourglass.hpp"
 #include "corlab/fem/kernels/j2_plasticity.hpp"
@@ -29,23 +30,30 @@ namespace {
 using Vec = std::vector<double>;
 
 // The constant part of a run (half model).
-struct HexModel {
-  HexMesh mesh;
+// One body's material point and wave speed.
+struct BodyMaterial {
   J2Plasticity material;
   double density = 0.0;     // [kg/m^3]
   double wave_speed = 0.0;  // c_d [m/s]
-  Vec mass, inv_mass;       // lumped [kg], [1/kg]
-  Vec free_y;               // 0 on the symmetry plane, else 1 [-]
-  Vec penalty;              // per slave [N/m]
-  double total_mass = 0.0;  // half sphere [kg]
-  double v_normal = 0.0;    // [m/s] (> 0, towards the flat)
-  double v_tangent = 0.0;   // [m/s] (towards +x)
-  double friction = 0.0;    // mu [-]
-  double dt_initial = 0.0;  // [s]
-  double t_max = 0.0;       // [s]
-  double t_wave = 0.0;      // 4 R / c_d [s]
-  double t_expected = 0.0;  // expected end: 1.5 Hertz contact times [s]
-  double h_contact = 0.0;   // [m]
+};
+
+struct HexModel {
+  HexMesh mesh;
+  std::array<BodyMaterial, 2> bodies;  // indexed by Body: sphere, substrate
+  Vec mass, inv_mass;                  // lumped [kg], [1/kg]
+  Vec free_x, free_y, free_z;          // 0 where the dof is held (symmetry plane, base) [-]
+  Vec penalty;                         // per slave [N/m]
+  std::size_t sphere_nodes = 0;        // nodes [0, n) are the sphere's
+  bool deformable_target = false;      // the flat's block (else the rigid flat z = 0)
+  double total_mass = 0.0;             // half sphere [kg]
+  double v_normal = 0.0;               // [m/s] (> 0, towards the flat)
+  double v_tangent = 0.0;              // [m/s] (towards +x)
+  double friction = 0.0;               // mu [-]
+  double dt_initial = 0.0;             // [s]
+  double t_max = 0.0;                  // [s]
+  double t_wave = 0.0;                 // 4 R / c_d [s]
+  double t_expected = 0.0;             // expected end: 1.5 Hertz contact times [s]
+  double h_contact = 0.0;              // [m]
   const SolverConfig* solver = nullptr;
 };
 
@@ -87,6 +95,48 @@ Corners corners(const std::array<int, 8>& hex, const Vec& x, const Vec& y, const
   return c;
 }
 
+// Lumped masses (an eighth of each element's to each node) and the smallest element step [s].
+double lump_masses(HexModel& m) {
+  m.mass.assign(static_cast<std::size_t>(m.mesh.num_nodes()), 0.0);
+  double dt_critical = std::numeric_limits<double>::infinity();
+  for (std::size_t e = 0; e < m.mesh.hexes.size(); ++e) {
+    const auto& hex = m.mesh.hexes[e];
+    const BodyMaterial& body = m.bodies[static_cast<std::size_t>(m.mesh.element_body[e])];
+    const Corners c = corners(hex, m.mesh.x, m.mesh.y, m.mesh.z);
+    const Hex8Geometry g = hex8_geometry(c.x, c.y, c.z);
+    for (const int n : hex) m.mass[static_cast<std::size_t>(n)] += 0.125 * body.density * g.volume;
+    dt_critical = std::min(
+        dt_critical, element_stable_time_step(hex8_characteristic_length(g), body.wave_speed, 0.0));
+  }
+  return dt_critical;
+}
+
+// The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
+// clamped to the grid.
+std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, long dj = 0) {
+  auto cell = [](const std::vector<double>& lines, double v, long shift) {
+    const auto it = std::upper_bound(lines.begin(), lines.end(), v);
+    const long i = static_cast<long>(it - lines.begin()) - 1 + shift;
+    return static_cast<std::size_t>(std::clamp(i, 0L, static_cast<long>(lines.size()) - 2));
+  };
+  return cell(mesh.top_y, y, dj) * (mesh.top_x.size() - 1) + cell(mesh.top_x, x, di);
+}
+
+// Each slave's penalty: the two-mass spring at the stability limit, against the face below it
+// on the flat (its corners' mean mass) or the rigid flat.
+void set_penalties(HexModel& m, double scale, double dt_critical) {
+  for (const int s : m.mesh.sphere_surface_nodes) {
+    const auto i = static_cast<std::size_t>(s);
+    double master = std::numeric_limits<double>::infinity();
+    if (m.deformable_target) {
+      const auto& face = m.mesh.top_faces[face_under(m.mesh, m.mesh.x[i], m.mesh.y[i])];
+      master = 0.0;
+      for (const int n : face) master += 0.25 * m.mass[static_cast<std::size_t>(n)];
+    }
+    m.penalty.push_back(penalty_stiffness(scale, m.mass[i], master, dt_critical));
+  }
+}
+
 HexModel make_model(const ImpactConfig& config) {
   HexModel m;
   const double theta = config.impact.angle * units::kPi / 180.0;
@@ -95,36 +145,39 @@ HexModel make_model(const ImpactConfig& config) {
   m.friction = config.contact.friction;
   const HexMeshOptions options = hex_mesh_options_for(config);
   m.h_contact = options.h_contact;
-  m.mesh = generate_hex_sphere(options);
-  const Material& mat = config.sphere.material;
-  m.material = J2Plasticity::from(mat);
-  m.density = mat.density;
-  m.wave_speed = mat.dilatational_wave_speed();
-  const auto nn = static_cast<std::size_t>(m.mesh.num_nodes());
-  m.mass.assign(nn, 0.0);
-  double dt_critical = std::numeric_limits<double>::infinity();
-  for (const auto& hex : m.mesh.hexes) {
-    const Corners c = corners(hex, m.mesh.x, m.mesh.y, m.mesh.z);
-    const Hex8Geometry g = hex8_geometry(c.x, c.y, c.z);
-    for (const int n : hex) m.mass[static_cast<std::size_t>(n)] += 0.125 * m.density * g.volume;
-    dt_critical = std::min(
-        dt_critical, element_stable_time_step(hex8_characteristic_length(g), m.wave_speed, 0.0));
+  m.mesh = generate_hex_impact_mesh(options);
+  m.deformable_target = options.block;
+  for (const Body b : {Body::kSphere, Body::kSubstrate}) {
+    const Material& mat = b == Body::kSphere ? config.sphere.material : config.substrate.material;
+    BodyMaterial& body = m.bodies[static_cast<std::size_t>(b)];
+    body.material = J2Plasticity::from(mat);
+    body.density = mat.density;
+    body.wave_speed = mat.dilatational_wave_speed();
   }
+  const double dt_critical = lump_masses(m);
+  const std::size_t nn = m.mass.size();
   m.inv_mass.resize(nn);
   for (std::size_t n = 0; n < nn; ++n) {
     m.inv_mass[n] = 1.0 / m.mass[n];
-    m.total_mass += m.mass[n];
+    if (m.mesh.node_body[n] == Body::kSphere) {
+      m.total_mass += m.mass[n];
+      m.sphere_nodes = n + 1;
+    }
   }
+  m.free_x.assign(nn, 1.0);
   m.free_y.assign(nn, 1.0);
+  m.free_z.assign(nn, 1.0);
   for (const int n : m.mesh.symmetry_nodes) m.free_y[static_cast<std::size_t>(n)] = 0.0;
-  const double infinite = std::numeric_limits<double>::infinity();
-  for (const int s : m.mesh.sphere_surface_nodes)
-    m.penalty.push_back(penalty_stiffness(
-        config.solver.penalty_scale, m.mass[static_cast<std::size_t>(s)], infinite, dt_critical));
+  for (const int n : m.mesh.base_nodes) {
+    const auto i = static_cast<std::size_t>(n);
+    m.free_x[i] = m.free_y[i] = m.free_z[i] = 0.0;
+  }
+  set_penalties(m, config.solver.penalty_scale, dt_critical);
   m.dt_initial = config.solver.safety_factor * dt_critical;
-  m.t_wave = 4.0 * config.sphere.radius / m.wave_speed;
-  const HertzReference hertz = hertz_reference(
-      config.sphere.radius, contact_effective_modulus(config), m.density, m.v_normal);
+  m.t_wave = 4.0 * config.sphere.radius / m.bodies[0].wave_speed;
+  const HertzReference hertz =
+      hertz_reference(config.sphere.radius, contact_effective_modulus(config),
+                      config.sphere.material.density, m.v_normal);
   m.t_max = config.solver.t_max > 0.0 ? config.solver.t_max : 20.0 * hertz.contact_time;
   m.t_expected = 1.5 * hertz.contact_time;
   m.solver = &config.solver;
@@ -137,9 +190,11 @@ HexState initial_state(const HexModel& m) {
   s.y = m.mesh.y;
   s.z = m.mesh.z;
   const std::size_t nn = s.x.size();
-  s.vx.assign(nn, m.v_tangent);
+  s.vx.assign(nn, 0.0);
   s.vy.assign(nn, 0.0);
-  s.vz.assign(nn, -m.v_normal);
+  s.vz.assign(nn, 0.0);
+  std::fill_n(s.vx.begin(), m.sphere_nodes, m.v_tangent);
+  std::fill_n(s.vz.begin(), m.sphere_nodes, -m.v_normal);
   s.fx.assign(nn, 0.0);
   s.fy.assign(nn, 0.0);
   s.fz.assign(nn, 0.0);
@@ -170,11 +225,12 @@ double update_element(const HexModel& m, HexState& s, std::size_t e, double dt) 
   const StrainRate3 rate = hex8_strain_rate(gm, vel.x, vel.y, vel.z);
   const SymTensor3 de{rate.d.xx * dt, rate.d.yy * dt, rate.d.zz * dt,
                       rate.d.xy * dt, rate.d.yz * dt, rate.d.zx * dt};
+  const BodyMaterial& body = m.bodies[static_cast<std::size_t>(m.mesh.element_body[e])];
   SymTensor3& sigma = s.stress[e];
   rotate_hughes_winget(sigma, Spin3{rate.spin.x * dt, rate.spin.y * dt, rate.spin.z * dt});
   const SymTensor3 old = sigma;
   J2Plasticity::State state{s.eps_p[e]};
-  const J2Plasticity::Increment inc = m.material.update(sigma, state, de);
+  const J2Plasticity::Increment inc = body.material.update(sigma, state, de);
   s.eps_p[e] = state.eps_p;
   s.eps_p_max = std::max(s.eps_p_max, state.eps_p);
   s.w_internal += 0.5 * gm.volume * (contract(old, de) + contract(sigma, de));
@@ -184,7 +240,8 @@ double update_element(const HexModel& m, HexState& s, std::size_t e, double dt) 
   const SolverConfig& sc = *m.solver;
   const double b1 = sc.bulk_viscosity_linear;
   const double b2 = sc.bulk_viscosity_quadratic;
-  const double viscous = bulk_viscous_stress(vol_rate, m.density, m.wave_speed, length, b1, b2);
+  const double viscous =
+      bulk_viscous_stress(vol_rate, body.density, body.wave_speed, length, b1, b2);
   s.w_viscous += viscous * vol_rate * dt * gm.volume;
   SymTensor3 total = sigma;
   total.xx += viscous;
@@ -196,8 +253,8 @@ double update_element(const HexModel& m, HexState& s, std::size_t e, double dt) 
   hex8_add_internal_force(g, total, fx, fy, fz);
   double gamma[4][8];
   hex8_hourglass_shape(g, now.x, now.y, now.z, gamma);
-  const double k_hg =
-      hourglass_stiffness(sc.hourglass, m.material.shear_modulus, g.volume, hex8_gradient_norm2(g));
+  const double k_hg = hourglass_stiffness(sc.hourglass, body.material.shear_modulus, g.volume,
+                                          hex8_gradient_norm2(g));
   s.w_hourglass +=
       hex8_hourglass_update(gamma, vel.x, vel.y, vel.z, k_hg, dt, s.hourglass[e], fx, fy, fz);
   for (int i = 0; i < 8; ++i) {
@@ -206,37 +263,93 @@ double update_element(const HexModel& m, HexState& s, std::size_t e, double dt) 
     s.fy[n] -= fy[i];
     s.fz[n] -= fz[i];
   }
-  const double xi = bulk_viscous_damping_ratio(vol_rate, m.wave_speed, length, b1, b2);
-  return element_stable_time_step(length, m.wave_speed, xi);
+  const double xi = bulk_viscous_damping_ratio(vol_rate, body.wave_speed, length, b1, b2);
+  return element_stable_time_step(length, body.wave_speed, xi);
 }
 
-// Penalty contact with the rigid flat z = 0 and Coulomb friction. Returns whether any slave
-// penetrates.
+// Where one slave meets the target: gap, normal, and the master nodes with their weights (none
+// on the rigid flat).
+struct SlaveContact {
+  double gap = 0.0;
+  double normal[3] = {0.0, 0.0, 1.0};
+  std::array<int, 4> masters{-1, -1, -1, -1};
+  double weight[4] = {0.0, 0.0, 0.0, 0.0};
+};
+
+// The slave's projection on the block's top: the face of the start grid under its current
+// position, or a neighbour when the closest point falls off that face.
+SlaveContact facet_contact(const HexModel& m, const HexState& s, std::size_t n) {
+  const double p[3] = {s.x[n], s.y[n], s.z[n]};
+  SlaveContact c;
+  FacetProjection best;
+  double best_off = std::numeric_limits<double>::infinity();
+  for (long dj = -1; dj <= 1; ++dj)
+    for (long di = -1; di <= 1; ++di) {
+      const auto& face = m.mesh.top_faces[face_under(m.mesh, s.x[n], s.y[n], di, dj)];
+      double corner[4][3];
+      for (int k = 0; k < 4; ++k) {
+        const auto i = static_cast<std::size_t>(face[static_cast<std::size_t>(k)]);
+        corner[k][0] = s.x[i];
+        corner[k][1] = s.y[i];
+        corner[k][2] = s.z[i];
+      }
+      const FacetProjection f = project_on_facet(p, corner);
+      const double off = std::max(std::abs(f.xi), std::abs(f.eta));
+      if (off < best_off) {
+        best_off = off;
+        best = f;
+        c.masters = face;
+      }
+      if (on_facet(f)) break;
+    }
+  c.gap = best.gap;
+  for (int d = 0; d < 3; ++d) c.normal[d] = best.normal[d];
+  for (int k = 0; k < 4; ++k) c.weight[k] = best.weight[k];
+  return c;
+}
+
+// Penalty contact (the rigid flat z = 0 or the block's top) and Coulomb friction. Returns
+// whether any slave penetrates.
 bool contact_forces(const HexModel& m, HexState& s, double dt) {
   bool penetrating = false;
   s.e_contact = 0.0;
   s.normal_force = 0.0;
-  const double normal[3] = {0.0, 0.0, 1.0};
   const auto& slaves = m.mesh.sphere_surface_nodes;
   for (std::size_t k = 0; k < slaves.size(); ++k) {
     const auto n = static_cast<std::size_t>(slaves[k]);
-    const double gap = s.z[n];
+    SlaveContact c;
+    c.gap = s.z[n];
+    if (m.deformable_target && s.z[n] < 0.5 * m.h_contact) c = facet_contact(m, s, n);
     const double stiffness = m.penalty[k];
-    const double fn = gap < 0.0 ? -stiffness * gap : 0.0;
-    const double du[3] = {s.vx[n] * dt, s.vy[n] * dt, 0.0};
+    const double fn = c.gap < 0.0 ? -stiffness * c.gap : 0.0;
+    double v_rel[3] = {s.vx[n], s.vy[n], s.vz[n]};
+    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
+      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
+      v_rel[0] -= c.weight[j] * s.vx[i];
+      v_rel[1] -= c.weight[j] * s.vy[i];
+      v_rel[2] -= c.weight[j] * s.vz[i];
+    }
+    const double du[3] = {v_rel[0] * dt, v_rel[1] * dt, v_rel[2] * dt};
     const FrictionUpdate f =
-        coulomb_friction(s.traction[k].data(), normal, du, fn, stiffness, m.friction);
+        coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
     s.traction[k] = {f.t[0], f.t[1], f.t[2]};
     s.w_friction += f.dissipation;
-    if (fn > 0.0) {
-      penetrating = true;
-      s.penetration_max = std::max(s.penetration_max, -gap);
-      s.fx[n] += f.t[0];
-      s.fy[n] += f.t[1];
-      s.fz[n] += fn;
-      s.normal_force += fn;
-      s.e_contact += 0.5 * stiffness * gap * gap + friction_stored_energy(f.t, stiffness);
+    if (!(fn > 0.0)) continue;
+    penetrating = true;
+    s.penetration_max = std::max(s.penetration_max, -c.gap);
+    const double force[3] = {fn * c.normal[0] + f.t[0], fn * c.normal[1] + f.t[1],
+                             fn * c.normal[2] + f.t[2]};
+    s.fx[n] += force[0];
+    s.fy[n] += force[1];
+    s.fz[n] += force[2];
+    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
+      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
+      s.fx[i] -= c.weight[j] * force[0];
+      s.fy[i] -= c.weight[j] * force[1];
+      s.fz[i] -= c.weight[j] * force[2];
     }
+    s.normal_force += fn * c.normal[2];
+    s.e_contact += 0.5 * stiffness * c.gap * c.gap + friction_stored_energy(f.t, stiffness);
   }
   return penetrating;
 }
@@ -245,7 +358,7 @@ struct Motion {
   double vx = 0.0;  // c.o.m. [m/s]
   double vz = 0.0;
   double omega = 0.0;    // spin about +y [rad/s]
-  double kinetic = 0.0;  // [J], half model
+  double kinetic = 0.0;  // both bodies [J], half model
 };
 
 Motion sphere_motion(const HexModel& m, const HexState& s) {
@@ -256,11 +369,12 @@ Motion sphere_motion(const HexModel& m, const HexState& s) {
   double cz = 0.0;
   for (std::size_t n = 0; n < s.x.size(); ++n) {
     const double mass = m.mass[n];
+    mo.kinetic += 0.5 * mass * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]);
+    if (n >= m.sphere_nodes) continue;
     px += mass * s.vx[n];
     pz += mass * s.vz[n];
     cx += mass * s.x[n];
     cz += mass * s.z[n];
-    mo.kinetic += 0.5 * mass * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]);
   }
   mo.vx = px / m.total_mass;
   mo.vz = pz / m.total_mass;
@@ -268,7 +382,7 @@ Motion sphere_motion(const HexModel& m, const HexState& s) {
   cz /= m.total_mass;
   double momentum = 0.0;
   double inertia = 0.0;
-  for (std::size_t n = 0; n < s.x.size(); ++n) {
+  for (std::size_t n = 0; n < m.sphere_nodes; ++n) {
     const double dx = s.x[n] - cx;
     const double dz = s.z[n] - cz;
     momentum += m.mass[n] * (dz * (s.vx[n] - mo.vx) - dx * (s.vz[n] - mo.vz));
@@ -302,9 +416,9 @@ double step_forces(const HexModel& m, HexState& s, double dt, bool& penetrating)
 // v^{n+1/2} = v^{n-1/2} + dt_avg f / m, the symmetry plane's v_y held at zero.
 void update_velocities(const HexModel& m, HexState& s, double dt_avg) {
   for (std::size_t n = 0; n < s.x.size(); ++n) {
-    s.vx[n] += dt_avg * s.fx[n] * m.inv_mass[n];
+    s.vx[n] = m.free_x[n] * (s.vx[n] + dt_avg * s.fx[n] * m.inv_mass[n]);
     s.vy[n] = m.free_y[n] * (s.vy[n] + dt_avg * s.fy[n] * m.inv_mass[n]);
-    s.vz[n] += dt_avg * s.fz[n] * m.inv_mass[n];
+    s.vz[n] = m.free_z[n] * (s.vz[n] + dt_avg * s.fz[n] * m.inv_mass[n]);
   }
 }
 

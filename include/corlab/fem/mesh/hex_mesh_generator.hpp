@@ -31,6 +31,12 @@ struct HexMeshOptions {
   double growth = 1.2;           ///< size ratio of neighbouring elements outside the zone [-]
   double h_max = 5e-3;           ///< largest element size
   double core_fraction = 0.45;   ///< core half-width / R [-]
+  /// The deformable flat (a half block below z = 0), or none (the rigid flat).
+  bool block = false;
+  double block_half_width = 70e-3;  ///< x in [-w, w], y in [0, w]
+  double block_depth = 70e-3;       ///< z in [-depth, 0]; the base is fixed
+  /// Extra length of the fine zone towards +x: the contact's tangential travel.
+  double travel = 0.0;
 };
 
 /// Throws InputError naming the first invalid option.
@@ -39,11 +45,22 @@ void validate(const HexMeshOptions& options);
 /// The options of a configuration: h_contact = min(mesh.h_min, a / mesh.contact_elements), the
 /// zone refine_factor a wide and max(refine_depth a, 2 h_contact) deep, a the predicted contact
 /// radius at the normal speed velocity cos(angle) (contact_estimate.hpp); the gap is 0 (the
-/// solver crosses it in free flight).
+/// solver crosses it in free flight). On the deformable flat (substrate.shape = flat) the block
+/// is substrate.radius wide and substrate.depth deep, its fine zone extended along +x by the
+/// travel v_t x 1.5 Hertz contact times.
 HexMeshOptions hex_mesh_options_for(const ImpactConfig& config);
+
+/// The half block of the deformable flat (Body::kSubstrate) appended to `mesh`: a tensor grid
+/// graded from the contact (h_contact over [-zone_radius, zone_radius + travel] in x,
+/// [0, zone_radius] in y, zone_depth in z, then growing by `growth` up to h_max); top_faces,
+/// base_nodes and its symmetry nodes set.
+void append_hex_block(const HexMeshOptions& options, HexMesh& mesh);
 
 /// The half sphere (Body::kSphere) resting with its lowest point at z = gap, centre on the z
 /// axis; symmetry_nodes and sphere_surface_nodes set.
 HexMesh generate_hex_sphere(const HexMeshOptions& options);
+
+/// The impact's mesh: the half sphere, and the flat's half block when options.block.
+HexMesh generate_hex_impact_mesh(const HexMeshOptions& options);
 
 }  // namespace corlab::fem

@@ -1,16 +1,15 @@
 #pragma once
 /// @file hex_impact.hpp
-/// The 3-D explicit impact solver (issue 27; docs/theory/solver3d.md): a sphere hits the rigid
-/// flat z = 0 at angle theta from the normal with Coulomb friction mu, modelled as the half
-/// (y >= 0) cut by the plane of the velocity and the normal. One-point hexahedra with
+/// The 3-D explicit impact solver (issue 27; docs/theory/solver3d.md): a sphere hits a flat
+/// (the rigid plane z = 0 or a deformable block below it) at angle theta from the normal with
+/// Coulomb friction mu, modelled as the half (y >= 0) cut by the plane of the velocity and the
+/// normal. One-point hexahedra with
 /// Flanagan-Belytschko hourglass control (hex8.hpp, hourglass.hpp), the J2 material point, the
 /// Hughes-Winget rotation and the bulk viscosity of the axisymmetric solver (the same kernels),
-/// node-on-plane penalty contact with the Coulomb return map (coulomb_friction.hpp), central
-/// differences at the elements' stable step, and the axisymmetric solver's stop rule
-/// (separation_rule.hpp) on the normal velocity.
-///
-/// This first step of the 3-D model hits the rigid flat only (substrate.shape = rigid); the
-/// deformable flat follows.
+/// node-on-plane or node-on-facet penalty contact (facet_contact.hpp) with the Coulomb return
+/// map (coulomb_friction.hpp), central differences at the elements' stable step, and the
+/// axisymmetric solver's stop rule (separation_rule.hpp) on the normal velocity. The second
+/// sphere (substrate.shape = sphere) is not modelled in 3-D yet.
 
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/solver/run_status.hpp"
@@ -45,11 +44,11 @@ struct HexImpactResult {
   double wall_s = 0.0;  ///< [s]
 };
 
-/// Runs the 3-D impact of config's sphere on the rigid flat: impact.velocity at impact.angle
-/// with contact.friction; the sphere's radius and material, the mesh and solver keys apply.
-/// The config must have passed validate() (which refuses what the 3-D model lacks: a
-/// deformable target, repeats, mesh files). From `control`: cancel (status cancelled) and
-/// progress (the fraction of the expected simulated time).
+/// Runs the 3-D impact of config's sphere on the flat (substrate.shape = flat: the substrate's
+/// material, radius and depth; rigid: the plane z = 0): impact.velocity at impact.angle with
+/// contact.friction; the mesh and solver keys apply. The config must have passed validate()
+/// (which refuses what the 3-D model lacks: a second sphere, repeats, mesh files). From `control`:
+/// cancel (status cancelled) and progress (the fraction of the expected simulated time).
 HexImpactResult simulate_hex_impact(const ImpactConfig& config,
                                     const SimulationControl& control = {});
 

@@ -72,6 +72,50 @@ TEST(HexSphere, FillsTheHalfBallWithValidElements) {
   EXPECT_EQ(m.element_body.size(), m.hexes.size());
 }
 
+// The deformable flat's half block: valid elements filling w x w/2... exactly, the top faces
+// facing up and tiling the top, the base fixed at z = -depth, the symmetry plane shared.
+TEST(HexBlock, FillsTheHalfBlockBelowTheSphere) {
+  HexMeshOptions o;
+  o.h_contact = 1e-3;
+  o.zone_radius = 4e-3;
+  o.zone_depth = 2e-3;
+  o.block = true;
+  o.block_half_width = 40e-3;
+  o.block_depth = 30e-3;
+  o.travel = 3e-3;
+  const HexMesh m = generate_hex_impact_mesh(o);
+  double volume = 0.0;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    if (m.element_body[static_cast<std::size_t>(e)] != Body::kSubstrate) continue;
+    const double v = geometry(m, e).volume;
+    ASSERT_GT(v, 0.0);
+    volume += v;
+  }
+  EXPECT_NEAR(volume, 2.0 * 40e-3 * 40e-3 * 30e-3, 1e-12);
+  double top = 0.0;
+  for (const auto& f : m.top_faces) {
+    const auto p = [&](int k) { return static_cast<std::size_t>(f[static_cast<std::size_t>(k)]); };
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(m.z[p(k)], 0.0);
+    // Counter-clockwise seen from +z: positive signed area.
+    const double area = 0.5 * ((m.x[p(2)] - m.x[p(0)]) * (m.y[p(3)] - m.y[p(1)]) -
+                               (m.y[p(2)] - m.y[p(0)]) * (m.x[p(3)] - m.x[p(1)]));
+    EXPECT_GT(area, 0.0);
+    top += area;
+  }
+  EXPECT_NEAR(top, 2.0 * 40e-3 * 40e-3, 1e-12);
+  EXPECT_FALSE(m.base_nodes.empty());
+  for (const int n : m.base_nodes) EXPECT_EQ(m.z[static_cast<std::size_t>(n)], -30e-3);
+  // h_contact over the fine band, which reaches zone + travel towards +x.
+  const auto cell = [&](double x) {
+    const auto it = std::upper_bound(m.top_x.begin(), m.top_x.end(), x);
+    return *it - *(it - 1);
+  };
+  EXPECT_NEAR(cell(0.5e-3), 1e-3, 1e-12);
+  EXPECT_NEAR(cell(6.5e-3), 1e-3, 1e-12);
+  EXPECT_NEAR(cell(-3.5e-3), 1e-3, 1e-12);
+  EXPECT_GT(cell(-8e-3), 1.1e-3);
+}
+
 TEST(HexSphere, RefusesMeshesItCannotBuild) {
   HexMeshOptions o;
   o.h_contact = 3e-3;  // > R / 20
