@@ -15,6 +15,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/mesh/mesh_quality.hpp"
 #include "corlab/fem/output/vtu_writer.hpp"
@@ -57,11 +58,33 @@ void print_explicit_cost(const fem::Mesh& mesh,
   }
 }
 
+// The 3-D model's mesh: its options, element counts and DIR/mesh.vtu.
+int write_hex_mesh(const fem::ImpactConfig& config, const std::string& out) {
+  const fem::HexMeshOptions o = fem::hex_mesh_options_for(config);
+  const fem::HexMesh mesh = fem::generate_hex_impact_mesh(o);
+  int sphere = 0;
+  for (const fem::Body b : mesh.element_body) sphere += b == fem::Body::kSphere ? 1 : 0;
+  fmt::print(
+      "3-D model: h {:.4e} m  zone radius {:.4e} m  zone depth {:.4e} m  travel {:.4e} m  "
+      "growth {}  h_max {:.4e} m\n"
+      "total      elements {:>6} (sphere {}, substrate {})  nodes {:>6}  symmetry {}  base {}  "
+      "sphere_surface {}  top faces {}\n",
+      o.h_contact, o.zone_radius, o.zone_depth, o.travel, o.growth, o.h_max, mesh.num_elements(),
+      sphere, mesh.num_elements() - sphere, mesh.num_nodes(), mesh.symmetry_nodes.size(),
+      mesh.base_nodes.size(), mesh.sphere_surface_nodes.size(), mesh.top_faces.size());
+  std::filesystem::create_directories(out);
+  const auto file = std::filesystem::path(out) / "mesh.vtu";
+  fem::write_vtu(file, mesh);
+  fmt::print(stderr, "wrote {}\n", file.string());
+  return 0;
+}
+
 int run_mesh(const MeshArgs& args) {
   fem::ImpactConfig config =
       args.config.empty() ? fem::ImpactConfig{} : fem::load_impact_config(args.config);
   fem::apply_settings(config, args.settings, "--set");
   fem::validate(config);
+  if (fem::uses_3d_model(config)) return write_hex_mesh(config, args.out);
   const fem::Mesh mesh = fem::build_impact_mesh(config);
   if (config.mesh.file.empty()) {
     const fem::MeshOptions o = fem::mesh_options_for(config);

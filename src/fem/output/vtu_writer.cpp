@@ -1,7 +1,9 @@
 #include "corlab/fem/output/vtu_writer.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <array>
 #include <fstream>
 #include <string_view>
 
@@ -31,12 +33,21 @@ void write_array(std::ofstream& out, const VtuField& f) {
 
 }  // namespace
 
-void write_vtu(const std::filesystem::path& file,
-               const Mesh& mesh,
-               const std::vector<VtuField>& point_fields,
-               const std::vector<VtuField>& cell_fields) {
-  const int nn = mesh.num_nodes();
-  const int ne = mesh.num_elements();
+namespace {
+
+// One unstructured grid of cells with `per_cell` nodes of VTK type `vtk_type`: points at
+// point(k) (3 coordinates [m]), cell e's nodes at cell(e), a "body" cell field first.
+template <class Point, class Cell>
+void write_grid(const std::filesystem::path& file,
+                int nn,
+                Point point,
+                const std::vector<Body>& element_body,
+                Cell cell,
+                int per_cell,
+                int vtk_type,
+                const std::vector<VtuField>& point_fields,
+                const std::vector<VtuField>& cell_fields) {
+  const int ne = static_cast<int>(element_body.size());
   for (const auto& f : point_fields) check_field(f, nn, "point");
   for (const auto& f : cell_fields) check_field(f, ne, "cell");
   std::ofstream out(file);
@@ -48,29 +59,61 @@ void write_vtu(const std::filesystem::path& file,
   out << "      <Points>\n"
          "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
   for (int n = 0; n < nn; ++n) {
-    const auto k = static_cast<std::size_t>(n);
-    out << fmt::format("{:.17g} {:.17g} 0\n", mesh.r[k], mesh.z[k]);
+    const auto p = point(static_cast<std::size_t>(n));
+    out << fmt::format("{:.17g} {:.17g} {:.17g}\n", p[0], p[1], p[2]);
   }
   out << "        </DataArray>\n      </Points>\n      <Cells>\n"
          "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (const auto& q : mesh.quads) out << fmt::format("{} {} {} {}\n", q[0], q[1], q[2], q[3]);
+  for (int e = 0; e < ne; ++e)
+    out << fmt::format("{}\n", fmt::join(cell(static_cast<std::size_t>(e)), " "));
   out << "        </DataArray>\n"
          "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (int e = 0; e < ne; ++e) out << 4 * (e + 1) << ((e + 1) % 16 == 0 ? '\n' : ' ');
+  for (int e = 0; e < ne; ++e) out << per_cell * (e + 1) << ((e + 1) % 16 == 0 ? '\n' : ' ');
   out << "\n        </DataArray>\n"
          "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (int e = 0; e < ne; ++e) out << 9 << ((e + 1) % 32 == 0 ? '\n' : ' ');
+  for (int e = 0; e < ne; ++e) out << vtk_type << ((e + 1) % 32 == 0 ? '\n' : ' ');
   out << "\n        </DataArray>\n      </Cells>\n";
   out << "      <PointData>\n";
   for (const auto& f : point_fields) write_array(out, f);
   out << "      </PointData>\n      <CellData>\n";
   VtuField body{"body", 1, {}};
   body.values.reserve(static_cast<std::size_t>(ne));
-  for (const Body b : mesh.element_body) body.values.push_back(b == Body::kSphere ? 0.0 : 1.0);
+  for (const Body b : element_body) body.values.push_back(b == Body::kSphere ? 0.0 : 1.0);
   write_array(out, body);
   for (const auto& f : cell_fields) write_array(out, f);
   out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   if (!out) throw InputError("invalid output file = " + file.string() + ": write failed");
+}
+
+constexpr int kVtkQuad = 9;
+constexpr int kVtkHexahedron = 12;
+
+}  // namespace
+
+void write_vtu(const std::filesystem::path& file,
+               const Mesh& mesh,
+               const std::vector<VtuField>& point_fields,
+               const std::vector<VtuField>& cell_fields) {
+  write_grid(
+      file, mesh.num_nodes(),
+      [&](std::size_t k) {
+        return std::array<double, 3>{mesh.r[k], mesh.z[k], 0.0};
+      },
+      mesh.element_body, [&](std::size_t e) { return mesh.quads[e]; }, 4, kVtkQuad, point_fields,
+      cell_fields);
+}
+
+void write_vtu(const std::filesystem::path& file,
+               const HexMesh& mesh,
+               const std::vector<VtuField>& point_fields,
+               const std::vector<VtuField>& cell_fields) {
+  write_grid(
+      file, mesh.num_nodes(),
+      [&](std::size_t k) {
+        return std::array<double, 3>{mesh.x[k], mesh.y[k], mesh.z[k]};
+      },
+      mesh.element_body, [&](std::size_t e) { return mesh.hexes[e]; }, 8, kVtkHexahedron,
+      point_fields, cell_fields);
 }
 
 void write_vtu(const std::filesystem::path& file, const FieldSnapshot& s) {

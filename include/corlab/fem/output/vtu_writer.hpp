@@ -1,12 +1,14 @@
 #pragma once
 /// @file vtu_writer.hpp
-/// VTK XML unstructured-grid (.vtu, ASCII) output of the axisymmetric mesh for ParaView.
-/// Points are written as (r, z, 0) [m]; cells are VTK_QUAD (type 9).
+/// VTK XML unstructured-grid (.vtu, ASCII) output of the meshes for ParaView: the axisymmetric
+/// mesh with points (r, z, 0) [m] and VTK_QUAD cells (type 9), the 3-D half model with points
+/// (x, y, z) [m] and VTK_HEXAHEDRON cells (type 12, the same node order as hex8.hpp).
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "corlab/fem/mesh/hex_mesh.hpp"
 #include "corlab/fem/mesh/mesh.hpp"
 #include "corlab/fem/output/field_snapshot.hpp"
 
@@ -23,6 +25,12 @@ struct VtuField {
 /// always added. Throws InputError when a field has the wrong size or the file cannot be written.
 void write_vtu(const std::filesystem::path& file,
                const Mesh& mesh,
+               const std::vector<VtuField>& point_fields = {},
+               const std::vector<VtuField>& cell_fields = {});
+
+/// The same for the 3-D half model.
+void write_vtu(const std::filesystem::path& file,
+               const HexMesh& mesh,
                const std::vector<VtuField>& point_fields = {},
                const std::vector<VtuField>& cell_fields = {});
 

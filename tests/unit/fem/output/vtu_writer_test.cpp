@@ -1,6 +1,7 @@
 // VTU output (vtu_writer.hpp): a well-formed file with the declared arrays.
 #include "corlab/fem/output/vtu_writer.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "support/scratch_files.hpp"
 
@@ -102,6 +104,35 @@ TEST(VtuWriter, RejectsMisSizedFields) {
   VtuField bad{"von_mises", 1, std::vector<double>(3, 0.0)};
   EXPECT_THROW(write_vtu(out_dir() / "bad.vtu", m, {}, {bad}), InputError);
   EXPECT_THROW(write_vtu(out_dir() / "no_such_dir" / "x.vtu", m), InputError);
+}
+
+// The 3-D half model: hexahedra (VTK type 12), eight nodes each, 3-D points.
+TEST(VtuWriter, WritesTheHexahedralMesh) {
+  HexMeshOptions o;
+  o.sphere_radius = 10e-3;
+  o.h_contact = 0.5e-3;
+  o.zone_radius = 1e-3;
+  o.zone_depth = 1e-3;
+  o.h_max = 3e-3;
+  o.growth = 1.4;
+  o.block = true;
+  o.block_half_width = 10e-3;
+  o.block_depth = 10e-3;
+  const HexMesh m = generate_hex_impact_mesh(o);
+  const auto file = out_dir() / "hex.vtu";
+  write_vtu(file, m);
+  const std::string text = slurp(file);
+  EXPECT_NE(text.find(fmt::format("NumberOfPoints=\"{}\" NumberOfCells=\"{}\"", m.num_nodes(),
+                                  m.num_elements())),
+            std::string::npos);
+  const std::vector<double> types = array_values(text, "types");
+  ASSERT_EQ(types.size(), static_cast<std::size_t>(m.num_elements()));
+  for (const double t : types) EXPECT_EQ(t, 12.0);
+  const std::vector<double> offsets = array_values(text, "offsets");
+  EXPECT_EQ(offsets.back(), 8.0 * m.num_elements());
+  const std::vector<double> body = array_values(text, "body");
+  EXPECT_EQ(body.front(), 0.0);
+  EXPECT_EQ(body.back(), 1.0);
 }
 
 }  // namespace
