@@ -44,8 +44,9 @@ FieldValue yield_or_inf(const Material& m) {
 }
 
 // The dataset's input columns (one place: dataset.csv, columns.json and the datasheet's list).
-const std::array<InputColumn, 25> kInputColumns{{
-    {"k1", "-", FieldKind::real, "E* / (rho_sphere v^2) (Ma et al. 2023 eq. 5)",
+const std::array<InputColumn, 29> kInputColumns{{
+    {"k1", "-", FieldKind::real,
+     "E* / (rho* v^2) (Ma et al. 2023 eq. 5; rho* = rho_sphere on a flat)",
      [](const RunInputs& in) -> FieldValue { return in.d.k1; }},
     {"k2", "-", FieldKind::real, "sigma_y,substrate / E* (Ma et al. 2023 eq. 6)",
      [](const RunInputs& in) -> FieldValue { return in.d.k2; }},
@@ -71,8 +72,7 @@ const std::array<InputColumn, 25> kInputColumns{{
      [](const RunInputs& in) -> FieldValue { return in.d.hardening_ratio_substrate; }},
     {"density_ratio", "-", FieldKind::real, "rho_sphere / rho_substrate",
      [](const RunInputs& in) -> FieldValue { return in.d.density_ratio; }},
-    {"damage_number", "-", FieldKind::real,
-     "Johnson's damage number rho_sphere v^2 / sigma_y,substrate",
+    {"damage_number", "-", FieldKind::real, "Johnson's damage number rho* v^2 / sigma_y,substrate",
      [](const RunInputs& in) -> FieldValue { return in.d.damage_number; }},
     // The dimensional inputs, every one (a row is self-contained without configs.jsonl).
     {"sphere_E", "Pa", FieldKind::real, "Young's modulus of the sphere",
@@ -99,6 +99,20 @@ const std::array<InputColumn, 25> kInputColumns{{
      }},
     {"sphere_radius", "m", FieldKind::real, "sphere radius R",
      [](const RunInputs& in) -> FieldValue { return in.config.sphere.radius; }},
+    {"substrate_shape", "-", FieldKind::text,
+     "what the sphere hits: flat (the substrate block), sphere (a free second sphere), rigid",
+     [](const RunInputs& in) -> FieldValue {
+       return std::string(fem::to_string(in.config.substrate.shape));
+     }},
+    {"substrate_radius", "m", FieldKind::real,
+     "the second sphere's radius R2 (substrate.shape = sphere), else the flat's radial extent",
+     [](const RunInputs& in) -> FieldValue { return in.config.substrate.radius; }},
+    {"radius_ratio", "-", FieldKind::real, "R1 / R2 (0: a flat)",
+     [](const RunInputs& in) -> FieldValue { return in.d.radius_ratio; }},
+    {"effective_density", "kg/m^3", FieldKind::real,
+     "rho* = 3 m* / (4 pi R*^3), the density in k1, v_y and the damage number (rho_sphere on a "
+     "flat)",
+     [](const RunInputs& in) -> FieldValue { return in.d.effective_density; }},
     {"velocity", "m/s", FieldKind::real, "impact speed v",
      [](const RunInputs& in) -> FieldValue { return in.config.impact.velocity; }},
 }};
