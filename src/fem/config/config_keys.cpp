@@ -19,6 +19,7 @@
 #include "corlab/core/number.hpp"
 #include "corlab/core/text.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "fem/config/choice_keys.hpp"
 
 namespace corlab::fem {
 
@@ -40,27 +41,6 @@ using Accessor = std::variant<double* (*)(ImpactConfig&),
 constexpr KeyKind kKindOf[] = {KeyKind::number,       KeyKind::integer,     KeyKind::integer,
                                KeyKind::yield_stress, KeyKind::number_list, KeyKind::material,
                                KeyKind::path,         KeyKind::choice,      KeyKind::choice};
-
-// The values of each choice key's enum (named by to_string), in order.
-constexpr std::array kShapes{SubstrateShape::kFlat, SubstrateShape::kRigid,
-                             SubstrateShape::kSphere};
-constexpr std::array kModels{SolverModel::kAxisymmetric, SolverModel::kThreeD};
-constexpr std::span<const SubstrateShape> choices(SubstrateShape /*tag*/) { return kShapes; }
-constexpr std::span<const SolverModel> choices(SolverModel /*tag*/) { return kModels; }
-
-template <class T>
-constexpr bool kIsChoice = std::is_same_v<T, SubstrateShape> || std::is_same_v<T, SolverModel>;
-
-template <class Enum>
-Enum parse_choice(std::string_view key, std::string_view text) {
-  text = trim(text);
-  std::string names;
-  for (const Enum s : choices(Enum{})) {
-    if (to_string(s) == text) return s;
-    names += fmt::format("{}{}", names.empty() ? "" : ", ", to_string(s));
-  }
-  throw_invalid(key, text, fmt::format("one of {}", names));
-}
 
 struct KeyEntry {
   ConfigKeyInfo info;
@@ -340,8 +320,8 @@ void set_value(const KeyEntry& e, ImpactConfig& c, std::string_view text) {
             if (err.field() != body) throw;
             throw InputError(std::string(key), err.value(), err.constraint(), true);
           }
-        } else if constexpr (kIsChoice<T>) {
-          *target = parse_choice<T>(key, text);
+        } else if constexpr (config_choices::kIsChoice<T>) {
+          *target = config_choices::parse_choice<T>(key, text);
         } else {
           *target = std::string(trim(text));
         }
@@ -381,7 +361,7 @@ std::string text_of(const KeyEntry& e, ImpactConfig& c) {
           return fmt::format("[{}]", fmt::join(*v, ", "));
         } else if constexpr (std::is_same_v<T, Material>) {
           return v->name;
-        } else if constexpr (kIsChoice<T>) {
+        } else if constexpr (config_choices::kIsChoice<T>) {
           return std::string(to_string(*v));
         } else {
           return v->string();
@@ -411,7 +391,7 @@ nlohmann::json json_of(const KeyEntry& e, ImpactConfig& c) {
           return material_json(*v);
         } else if constexpr (std::is_same_v<T, std::filesystem::path>) {
           return v->string();
-        } else if constexpr (kIsChoice<T>) {
+        } else if constexpr (config_choices::kIsChoice<T>) {
           return std::string(to_string(*v));
         } else {
           return *v;

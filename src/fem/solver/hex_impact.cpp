@@ -1,4 +1,4 @@
-// The 3-D explicit impact solver on the rigid flat (hex_impact.hpp).
+// The 3-D explicit impact solver (hex_impact.hpp): model, element update, time loop.
 #include "corlab/fem/solver/hex_impact.hpp"
 
 #include <algorithm>
@@ -11,8 +11,6 @@
 #include "corlab/core/error.hpp"
 #include "corlab/core/units.hpp"
 #include "corlab/fem/kernels/bulk_viscosity.hpp"
-#include "corlab/fem/kernels/coulomb_friction.hpp"
-#include "corlab/fem/kernels/facet_contact.hpp"
 #include "corlab/fem/kernels/hex8.hpp"
 #include "corlab/fem/kernels/hourglass.hpp"
 #include "corlab/fem/kernels/j2_plasticity.hpp"
@@ -23,60 +21,11 @@
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "corlab/fem/solver/separation_rule.hpp"
+#include "fem/solver/hex_model.hpp"
 
 namespace corlab::fem {
+namespace hex_solver {
 namespace {
-
-using Vec = std::vector<double>;
-
-// The constant part of a run (half model).
-// One body's material point and wave speed.
-struct BodyMaterial {
-  J2Plasticity material;
-  double density = 0.0;     // [kg/m^3]
-  double wave_speed = 0.0;  // c_d [m/s]
-};
-
-struct HexModel {
-  HexMesh mesh;
-  std::array<BodyMaterial, 2> bodies;  // indexed by Body: sphere, substrate
-  Vec mass, inv_mass;                  // lumped [kg], [1/kg]
-  Vec free_x, free_y, free_z;          // 0 where the dof is held (symmetry plane, base) [-]
-  Vec penalty;                         // per slave [N/m]
-  std::size_t sphere_nodes = 0;        // nodes [0, n) are the sphere's
-  bool deformable_target = false;      // the flat's block (else the rigid flat z = 0)
-  double total_mass = 0.0;             // half sphere [kg]
-  double v_normal = 0.0;               // [m/s] (> 0, towards the flat)
-  double v_tangent = 0.0;              // [m/s] (towards +x)
-  double friction = 0.0;               // mu [-]
-  double dt_initial = 0.0;             // [s]
-  double t_max = 0.0;                  // [s]
-  double t_wave = 0.0;                 // 4 R / c_d [s]
-  double t_expected = 0.0;             // expected end: 1.5 Hertz contact times [s]
-  double h_contact = 0.0;              // [m]
-  const SolverConfig* solver = nullptr;
-};
-
-// The mutable part.
-struct HexState {
-  Vec x, y, z, vx, vy, vz, fx, fy, fz;
-  std::vector<SymTensor3> stress;
-  Vec eps_p;
-  std::vector<Hex8HourglassForce> hourglass;
-  std::vector<std::array<double, 3>> traction;  // friction force of each slave [N]
-  double t = 0.0;
-  double dt = 0.0;
-  long long steps = 0;
-  double w_internal = 0.0;  // [J], half model
-  double w_plastic = 0.0;
-  double w_hourglass = 0.0;
-  double w_viscous = 0.0;
-  double w_friction = 0.0;
-  double e_contact = 0.0;     // penalty energy stored now
-  double normal_force = 0.0;  // on the half sphere, + up [N]
-  double penetration_max = 0.0;
-  double eps_p_max = 0.0;
-};
 
 struct Corners {
   double x[8];
@@ -109,17 +58,6 @@ double lump_masses(HexModel& m) {
         dt_critical, element_stable_time_step(hex8_characteristic_length(g), body.wave_speed, 0.0));
   }
   return dt_critical;
-}
-
-// The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
-// clamped to the grid.
-std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, long dj = 0) {
-  auto cell = [](const std::vector<double>& lines, double v, long shift) {
-    const auto it = std::upper_bound(lines.begin(), lines.end(), v);
-    const long i = static_cast<long>(it - lines.begin()) - 1 + shift;
-    return static_cast<std::size_t>(std::clamp(i, 0L, static_cast<long>(lines.size()) - 2));
-  };
-  return cell(mesh.top_y, y, dj) * (mesh.top_x.size() - 1) + cell(mesh.top_x, x, di);
 }
 
 // Each slave's penalty: the two-mass spring at the stability limit, against the face below it
@@ -267,93 +205,6 @@ double update_element(const HexModel& m, HexState& s, std::size_t e, double dt) 
   return element_stable_time_step(length, body.wave_speed, xi);
 }
 
-// Where one slave meets the target: gap, normal, and the master nodes with their weights (none
-// on the rigid flat).
-struct SlaveContact {
-  double gap = 0.0;
-  double normal[3] = {0.0, 0.0, 1.0};
-  std::array<int, 4> masters{-1, -1, -1, -1};
-  double weight[4] = {0.0, 0.0, 0.0, 0.0};
-};
-
-// The slave's projection on the block's top: the face of the start grid under its current
-// position, or a neighbour when the closest point falls off that face.
-SlaveContact facet_contact(const HexModel& m, const HexState& s, std::size_t n) {
-  const double p[3] = {s.x[n], s.y[n], s.z[n]};
-  SlaveContact c;
-  FacetProjection best;
-  double best_off = std::numeric_limits<double>::infinity();
-  for (long dj = -1; dj <= 1; ++dj)
-    for (long di = -1; di <= 1; ++di) {
-      const auto& face = m.mesh.top_faces[face_under(m.mesh, s.x[n], s.y[n], di, dj)];
-      double corner[4][3];
-      for (int k = 0; k < 4; ++k) {
-        const auto i = static_cast<std::size_t>(face[static_cast<std::size_t>(k)]);
-        corner[k][0] = s.x[i];
-        corner[k][1] = s.y[i];
-        corner[k][2] = s.z[i];
-      }
-      const FacetProjection f = project_on_facet(p, corner);
-      const double off = std::max(std::abs(f.xi), std::abs(f.eta));
-      if (off < best_off) {
-        best_off = off;
-        best = f;
-        c.masters = face;
-      }
-      if (on_facet(f)) break;
-    }
-  c.gap = best.gap;
-  for (int d = 0; d < 3; ++d) c.normal[d] = best.normal[d];
-  for (int k = 0; k < 4; ++k) c.weight[k] = best.weight[k];
-  return c;
-}
-
-// Penalty contact (the rigid flat z = 0 or the block's top) and Coulomb friction. Returns
-// whether any slave penetrates.
-bool contact_forces(const HexModel& m, HexState& s, double dt) {
-  bool penetrating = false;
-  s.e_contact = 0.0;
-  s.normal_force = 0.0;
-  const auto& slaves = m.mesh.sphere_surface_nodes;
-  for (std::size_t k = 0; k < slaves.size(); ++k) {
-    const auto n = static_cast<std::size_t>(slaves[k]);
-    SlaveContact c;
-    c.gap = s.z[n];
-    if (m.deformable_target && s.z[n] < 0.5 * m.h_contact) c = facet_contact(m, s, n);
-    const double stiffness = m.penalty[k];
-    const double fn = c.gap < 0.0 ? -stiffness * c.gap : 0.0;
-    double v_rel[3] = {s.vx[n], s.vy[n], s.vz[n]};
-    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
-      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
-      v_rel[0] -= c.weight[j] * s.vx[i];
-      v_rel[1] -= c.weight[j] * s.vy[i];
-      v_rel[2] -= c.weight[j] * s.vz[i];
-    }
-    const double du[3] = {v_rel[0] * dt, v_rel[1] * dt, v_rel[2] * dt};
-    const FrictionUpdate f =
-        coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
-    s.traction[k] = {f.t[0], f.t[1], f.t[2]};
-    s.w_friction += f.dissipation;
-    if (!(fn > 0.0)) continue;
-    penetrating = true;
-    s.penetration_max = std::max(s.penetration_max, -c.gap);
-    const double force[3] = {fn * c.normal[0] + f.t[0], fn * c.normal[1] + f.t[1],
-                             fn * c.normal[2] + f.t[2]};
-    s.fx[n] += force[0];
-    s.fy[n] += force[1];
-    s.fz[n] += force[2];
-    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
-      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
-      s.fx[i] -= c.weight[j] * force[0];
-      s.fy[i] -= c.weight[j] * force[1];
-      s.fz[i] -= c.weight[j] * force[2];
-    }
-    s.normal_force += fn * c.normal[2];
-    s.e_contact += 0.5 * stiffness * c.gap * c.gap + friction_stored_energy(f.t, stiffness);
-  }
-  return penetrating;
-}
-
 struct Motion {
   double vx = 0.0;  // c.o.m. [m/s]
   double vz = 0.0;
@@ -440,7 +291,7 @@ void finish(const HexModel& m, const HexState& s, HexImpactResult& r) {
 
 }  // namespace
 
-HexImpactResult simulate_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
+HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
   const auto start = std::chrono::steady_clock::now();
   const HexModel m = make_model(config);
   HexState s = initial_state(m);
@@ -503,6 +354,12 @@ HexImpactResult simulate_hex_impact(const ImpactConfig& config, const Simulation
   if (control.progress) control.progress(1.0);
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+}  // namespace hex_solver
+
+HexImpactResult simulate_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
+  return hex_solver::run_hex_impact(config, control);
 }
 
 }  // namespace corlab::fem

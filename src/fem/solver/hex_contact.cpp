@@ -1,0 +1,111 @@
+// The 3-D solver's contact: node on the rigid plane or on the flat's facets, with Coulomb
+// friction (hex_model.hpp).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "corlab/fem/kernels/coulomb_friction.hpp"
+#include "corlab/fem/kernels/facet_contact.hpp"
+#include "fem/solver/hex_model.hpp"
+
+namespace corlab::fem::hex_solver {
+
+std::size_t face_under(const HexMesh& mesh, double x, double y, long di, long dj) {
+  auto cell = [](const std::vector<double>& lines, double v, long shift) {
+    const auto it = std::upper_bound(lines.begin(), lines.end(), v);
+    const long i = static_cast<long>(it - lines.begin()) - 1 + shift;
+    return static_cast<std::size_t>(std::clamp(i, 0L, static_cast<long>(lines.size()) - 2));
+  };
+  return cell(mesh.top_y, y, dj) * (mesh.top_x.size() - 1) + cell(mesh.top_x, x, di);
+}
+
+namespace {
+
+// Where one slave meets the target: gap, normal, and the master nodes with their weights (none
+// on the rigid flat).
+struct SlaveContact {
+  double gap = 0.0;
+  double normal[3] = {0.0, 0.0, 1.0};
+  std::array<int, 4> masters{-1, -1, -1, -1};
+  double weight[4] = {0.0, 0.0, 0.0, 0.0};
+};
+
+// The slave's projection on the block's top: the face of the start grid under its current
+// position, or a neighbour when the closest point falls off that face.
+SlaveContact facet_contact(const HexModel& m, const HexState& s, std::size_t n) {
+  const double p[3] = {s.x[n], s.y[n], s.z[n]};
+  SlaveContact c;
+  FacetProjection best;
+  double best_off = std::numeric_limits<double>::infinity();
+  for (long dj = -1; dj <= 1; ++dj)
+    for (long di = -1; di <= 1; ++di) {
+      const auto& face = m.mesh.top_faces[face_under(m.mesh, s.x[n], s.y[n], di, dj)];
+      double corner[4][3];
+      for (int k = 0; k < 4; ++k) {
+        const auto i = static_cast<std::size_t>(face[static_cast<std::size_t>(k)]);
+        corner[k][0] = s.x[i];
+        corner[k][1] = s.y[i];
+        corner[k][2] = s.z[i];
+      }
+      const FacetProjection f = project_on_facet(p, corner);
+      const double off = std::max(std::abs(f.xi), std::abs(f.eta));
+      if (off < best_off) {
+        best_off = off;
+        best = f;
+        c.masters = face;
+      }
+      if (on_facet(f)) break;
+    }
+  c.gap = best.gap;
+  for (int d = 0; d < 3; ++d) c.normal[d] = best.normal[d];
+  for (int k = 0; k < 4; ++k) c.weight[k] = best.weight[k];
+  return c;
+}
+
+}  // namespace
+
+bool contact_forces(const HexModel& m, HexState& s, double dt) {
+  bool penetrating = false;
+  s.e_contact = 0.0;
+  s.normal_force = 0.0;
+  const auto& slaves = m.mesh.sphere_surface_nodes;
+  for (std::size_t k = 0; k < slaves.size(); ++k) {
+    const auto n = static_cast<std::size_t>(slaves[k]);
+    SlaveContact c;
+    c.gap = s.z[n];
+    if (m.deformable_target && s.z[n] < 0.5 * m.h_contact) c = facet_contact(m, s, n);
+    const double stiffness = m.penalty[k];
+    const double fn = c.gap < 0.0 ? -stiffness * c.gap : 0.0;
+    double v_rel[3] = {s.vx[n], s.vy[n], s.vz[n]};
+    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
+      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
+      v_rel[0] -= c.weight[j] * s.vx[i];
+      v_rel[1] -= c.weight[j] * s.vy[i];
+      v_rel[2] -= c.weight[j] * s.vz[i];
+    }
+    const double du[3] = {v_rel[0] * dt, v_rel[1] * dt, v_rel[2] * dt};
+    const FrictionUpdate f =
+        coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
+    s.traction[k] = {f.t[0], f.t[1], f.t[2]};
+    s.w_friction += f.dissipation;
+    if (!(fn > 0.0)) continue;
+    penetrating = true;
+    s.penetration_max = std::max(s.penetration_max, -c.gap);
+    const double force[3] = {fn * c.normal[0] + f.t[0], fn * c.normal[1] + f.t[1],
+                             fn * c.normal[2] + f.t[2]};
+    s.fx[n] += force[0];
+    s.fy[n] += force[1];
+    s.fz[n] += force[2];
+    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
+      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
+      s.fx[i] -= c.weight[j] * force[0];
+      s.fy[i] -= c.weight[j] * force[1];
+      s.fz[i] -= c.weight[j] * force[2];
+    }
+    s.normal_force += fn * c.normal[2];
+    s.e_contact += 0.5 * stiffness * c.gap * c.gap + friction_stored_energy(f.t, stiffness);
+  }
+  return penetrating;
+}
+
+}  // namespace corlab::fem::hex_solver

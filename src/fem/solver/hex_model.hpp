@@ -1,0 +1,83 @@
+#pragma once
+/// @file hex_model.hpp
+/// The 3-D solver's model (constant) and state (mutable), shared by its time loop
+/// (hex_impact.cpp) and its contact (hex_contact.cpp). Private to src/fem/solver.
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/kernels/hex8.hpp"
+#include "corlab/fem/kernels/hourglass.hpp"
+#include "corlab/fem/kernels/j2_plasticity.hpp"
+#include "corlab/fem/kernels/sym_tensor3.hpp"
+#include "corlab/fem/mesh/hex_mesh.hpp"
+#include "corlab/fem/solver/hex_impact.hpp"
+
+namespace corlab::fem::hex_solver {
+
+using Vec = std::vector<double>;
+
+// The constant part of a run (half model).
+// One body's material point and wave speed.
+struct BodyMaterial {
+  J2Plasticity material;
+  double density = 0.0;     // [kg/m^3]
+  double wave_speed = 0.0;  // c_d [m/s]
+};
+
+struct HexModel {
+  HexMesh mesh;
+  std::array<BodyMaterial, 2> bodies;  // indexed by Body: sphere, substrate
+  Vec mass, inv_mass;                  // lumped [kg], [1/kg]
+  Vec free_x, free_y, free_z;          // 0 where the dof is held (symmetry plane, base) [-]
+  Vec penalty;                         // per slave [N/m]
+  std::size_t sphere_nodes = 0;        // nodes [0, n) are the sphere's
+  bool deformable_target = false;      // the flat's block (else the rigid flat z = 0)
+  double total_mass = 0.0;             // half sphere [kg]
+  double v_normal = 0.0;               // [m/s] (> 0, towards the flat)
+  double v_tangent = 0.0;              // [m/s] (towards +x)
+  double friction = 0.0;               // mu [-]
+  double dt_initial = 0.0;             // [s]
+  double t_max = 0.0;                  // [s]
+  double t_wave = 0.0;                 // 4 R / c_d [s]
+  double t_expected = 0.0;             // expected end: 1.5 Hertz contact times [s]
+  double h_contact = 0.0;              // [m]
+  const SolverConfig* solver = nullptr;
+};
+
+// The mutable part.
+struct HexState {
+  Vec x, y, z, vx, vy, vz, fx, fy, fz;
+  std::vector<SymTensor3> stress;
+  Vec eps_p;
+  std::vector<Hex8HourglassForce> hourglass;
+  std::vector<std::array<double, 3>> traction;  // friction force of each slave [N]
+  double t = 0.0;
+  double dt = 0.0;
+  long long steps = 0;
+  double w_internal = 0.0;  // [J], half model
+  double w_plastic = 0.0;
+  double w_hourglass = 0.0;
+  double w_viscous = 0.0;
+  double w_friction = 0.0;
+  double e_contact = 0.0;     // penalty energy stored now
+  double normal_force = 0.0;  // on the half sphere, + up [N]
+  double penetration_max = 0.0;
+  double eps_p_max = 0.0;
+};
+
+// The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
+// clamped to the grid.
+std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, long dj = 0);
+
+/// Penalty contact (the rigid flat z = 0 or the block's top) and Coulomb friction: adds the
+/// contact forces to s.f*, books the stored energy and the frictional work. Returns whether any
+/// slave penetrates.
+bool contact_forces(const HexModel& m, HexState& s, double dt);
+
+/// The run (simulate_hex_impact's body).
+HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control);
+
+}  // namespace corlab::fem::hex_solver
