@@ -15,6 +15,11 @@
 //     yield-onset probe's speed) with solver.mass_scaling_max = 1 (off) and 8 (the default;
 //     docs/theory/solver.md section 12); compare the times and the e labels.
 // element_steps_per_s counts elements x base steps (what a run without subcycling would update).
+//   BM_HexThroughput/angle: the 3-D model (hex_impact.hpp) on the Kharaz et al. (2001) case
+//     (docs/theory/solver3d.md: alumina on glass, 3.9 m/s, mu 0.092, 3 elements across the
+//     contact radius, h_max 0.5 mm) cut to its first 1 us of contact, for the hex element loop's
+//     throughput (element_steps_per_s, per CPU second: the machines are shared).
+//   BM_HexKharaz/angle: the same case run to the rebound (one iteration: minutes).
 // Sample run: ./build-solver/bin/solver_benchmark --benchmark_filter=PaperCase
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
@@ -24,6 +29,7 @@
 
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/explicit_solver.hpp"
+#include "corlab/fem/solver/hex_impact.hpp"
 #include "corlab/fem/solver/simd_level.hpp"
 
 namespace {
@@ -114,6 +120,56 @@ BENCHMARK(BM_MassScaling)
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->UseRealTime();
+
+/// The Kharaz et al. (2001) oblique case at `angle` [deg] (docs/theory/solver3d.md).
+ImpactConfig kharaz_case(double angle) {
+  ImpactConfig config;
+  config.sphere.material = corlab::Material{};
+  config.sphere.material.youngs_modulus = 380e9;
+  config.sphere.material.poisson_ratio = 0.23;
+  config.sphere.material.density = 4000.0;
+  config.sphere.radius = 2.5e-3;
+  config.substrate.material = corlab::Material{};
+  config.substrate.material.youngs_modulus = 70e9;
+  config.substrate.material.poisson_ratio = 0.25;
+  config.substrate.material.density = 2500.0;
+  config.substrate.radius = 5e-3;
+  config.substrate.depth = 5e-3;
+  config.impact.velocity = 3.9;
+  config.impact.angle = angle;
+  config.contact.friction = 0.092;
+  config.mesh.contact_elements = 3.0;
+  config.mesh.h_max = 0.5e-3;
+  return config;
+}
+
+/// Times simulate_hex_impact on `config` (mesh generation included: it is a small part).
+void time_hex_runs(benchmark::State& state, const ImpactConfig& config) {
+  corlab::fem::HexImpactResult r;
+  for (auto _ : state) {
+    r = corlab::fem::simulate_hex_impact(config);
+    benchmark::DoNotOptimize(std::as_const(r).e_n);
+  }
+  state.counters["elements"] = r.elements;
+  state.counters["steps"] = static_cast<double>(r.steps);
+  state.counters["element_steps_per_s"] =
+      benchmark::Counter(static_cast<double>(r.elements) * static_cast<double>(r.steps) *
+                             static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+  state.SetLabel(fmt::format("e_n={:.6f} e_t={:.6f} omega={:.2f}", r.e_n, r.e_t, r.omega));
+}
+
+void BM_HexThroughput(benchmark::State& state) {
+  ImpactConfig config = kharaz_case(static_cast<double>(state.range(0)));
+  config.solver.t_max = 1e-6;  // the 3-D model starts at first contact
+  time_hex_runs(state, config);
+}
+BENCHMARK(BM_HexThroughput)->Arg(30)->Unit(benchmark::kSecond);
+
+void BM_HexKharaz(benchmark::State& state) {
+  time_hex_runs(state, kharaz_case(static_cast<double>(state.range(0))));
+}
+BENCHMARK(BM_HexKharaz)->Arg(30)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
 
