@@ -10,17 +10,14 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/units.hpp"
-#include "corlab/fem/kernels/bulk_viscosity.hpp"
 #include "corlab/fem/kernels/hex8.hpp"
-#include "corlab/fem/kernels/hourglass.hpp"
 #include "corlab/fem/kernels/j2_plasticity.hpp"
-#include "corlab/fem/kernels/objective_rate.hpp"
 #include "corlab/fem/kernels/penalty_contact.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
-#include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "corlab/fem/solver/separation_rule.hpp"
+#include "fem/solver/hex_element_loop.hpp"
 #include "fem/solver/hex_model.hpp"
 
 namespace corlab::fem {
@@ -75,6 +72,20 @@ void set_penalties(HexModel& m, double scale, double dt_critical) {
   }
 }
 
+// The element pass's view of the mesh: node indices per corner and the runs of each body.
+void index_elements(HexModel& m) {
+  const std::size_t ne = m.mesh.hexes.size();
+  for (std::size_t i = 0; i < 8; ++i) {
+    m.corner[i].resize(ne);
+    for (std::size_t e = 0; e < ne; ++e) m.corner[i][e] = m.mesh.hexes[e][i];
+  }
+  for (std::size_t e = 0; e < ne; ++e) {
+    const Body b = m.mesh.element_body[e];
+    if (m.runs.empty() || m.runs.back().body != b) m.runs.push_back({e, e, b});
+    m.runs.back().end = e + 1;
+  }
+}
+
 HexModel make_model(const ImpactConfig& config) {
   HexModel m;
   const double theta = config.impact.angle * units::kPi / 180.0;
@@ -111,6 +122,8 @@ HexModel make_model(const ImpactConfig& config) {
     m.free_x[i] = m.free_y[i] = m.free_z[i] = 0.0;
   }
   set_penalties(m, config.solver.penalty_scale, dt_critical);
+  index_elements(m);
+  m.simd = simd_level();
   m.dt_initial = config.solver.safety_factor * dt_critical;
   m.t_wave = 4.0 * config.sphere.radius / m.bodies[0].wave_speed;
   const HertzReference hertz =
@@ -137,91 +150,29 @@ HexState initial_state(const HexModel& m) {
   s.fy.assign(nn, 0.0);
   s.fz.assign(nn, 0.0);
   const std::size_t ne = m.mesh.hexes.size();
-  s.stress.assign(ne, SymTensor3{});
+  for (Vec& c : s.stress) c.assign(ne, 0.0);
   s.eps_p.assign(ne, 0.0);
-  s.hourglass.assign(ne, Hex8HourglassForce{});
+  for (Vec& q : s.hourglass) q.assign(ne, 0.0);
   s.traction.assign(m.mesh.sphere_surface_nodes.size(), {0.0, 0.0, 0.0});
   s.dt = m.dt_initial;
   return s;
 }
 
-// One element: rates at the mid-step configuration, stress update, internal and hourglass
-// forces at the new configuration. Returns the element's stable step [s] (0: inverted).
-double update_element(const HexModel& m, HexState& s, std::size_t e, double dt) {
-  const auto& hex = m.mesh.hexes[e];
-  const Corners now = corners(hex, s.x, s.y, s.z);
-  const Corners vel = corners(hex, s.vx, s.vy, s.vz);
-  Corners mid;
-  for (int i = 0; i < 8; ++i) {
-    mid.x[i] = now.x[i] - 0.5 * dt * vel.x[i];
-    mid.y[i] = now.y[i] - 0.5 * dt * vel.y[i];
-    mid.z[i] = now.z[i] - 0.5 * dt * vel.z[i];
-  }
-  const Hex8Geometry gm = hex8_geometry(mid.x, mid.y, mid.z);
-  const Hex8Geometry g = hex8_geometry(now.x, now.y, now.z);
-  if (!(g.volume > 0.0) || !(gm.volume > 0.0)) return 0.0;
-  const StrainRate3 rate = hex8_strain_rate(gm, vel.x, vel.y, vel.z);
-  const SymTensor3 de{rate.d.xx * dt, rate.d.yy * dt, rate.d.zz * dt,
-                      rate.d.xy * dt, rate.d.yz * dt, rate.d.zx * dt};
-  const BodyMaterial& body = m.bodies[static_cast<std::size_t>(m.mesh.element_body[e])];
-  SymTensor3& sigma = s.stress[e];
-  rotate_hughes_winget(sigma, Spin3{rate.spin.x * dt, rate.spin.y * dt, rate.spin.z * dt});
-  const SymTensor3 old = sigma;
-  J2Plasticity::State state{s.eps_p[e]};
-  const J2Plasticity::Increment inc = body.material.update(sigma, state, de);
-  s.eps_p[e] = state.eps_p;
-  s.eps_p_max = std::max(s.eps_p_max, state.eps_p);
-  s.w_internal += 0.5 * gm.volume * (contract(old, de) + contract(sigma, de));
-  s.w_plastic += inc.plastic_work * gm.volume;
-  const double length = hex8_characteristic_length(g);
-  const double vol_rate = trace(rate.d);
-  const SolverConfig& sc = *m.solver;
-  const double b1 = sc.bulk_viscosity_linear;
-  const double b2 = sc.bulk_viscosity_quadratic;
-  const double viscous =
-      bulk_viscous_stress(vol_rate, body.density, body.wave_speed, length, b1, b2);
-  s.w_viscous += viscous * vol_rate * dt * gm.volume;
-  SymTensor3 total = sigma;
-  total.xx += viscous;
-  total.yy += viscous;
-  total.zz += viscous;
-  double fx[8] = {};
-  double fy[8] = {};
-  double fz[8] = {};
-  hex8_add_internal_force(g, total, fx, fy, fz);
-  double gamma[4][8];
-  hex8_hourglass_shape(g, now.x, now.y, now.z, gamma);
-  const double k_hg = hourglass_stiffness(sc.hourglass, body.material.shear_modulus, g.volume,
-                                          hex8_gradient_norm2(g));
-  s.w_hourglass +=
-      hex8_hourglass_update(gamma, vel.x, vel.y, vel.z, k_hg, dt, s.hourglass[e], fx, fy, fz);
-  for (int i = 0; i < 8; ++i) {
-    const auto n = static_cast<std::size_t>(hex[static_cast<std::size_t>(i)]);
-    s.fx[n] -= fx[i];
-    s.fy[n] -= fy[i];
-    s.fz[n] -= fz[i];
-  }
-  const double xi = bulk_viscous_damping_ratio(vol_rate, body.wave_speed, length, b1, b2);
-  return element_stable_time_step(length, body.wave_speed, xi);
-}
-
 struct Motion {
   double vx = 0.0;  // c.o.m. [m/s]
   double vz = 0.0;
-  double omega = 0.0;    // spin about +y [rad/s]
-  double kinetic = 0.0;  // both bodies [J], half model
+  double omega = 0.0;  // spin about +y [rad/s]
 };
 
+// The sphere's rigid-body motion at the end of the run.
 Motion sphere_motion(const HexModel& m, const HexState& s) {
   Motion mo;
   double px = 0.0;
   double pz = 0.0;
   double cx = 0.0;
   double cz = 0.0;
-  for (std::size_t n = 0; n < s.x.size(); ++n) {
+  for (std::size_t n = 0; n < m.sphere_nodes; ++n) {
     const double mass = m.mass[n];
-    mo.kinetic += 0.5 * mass * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]);
-    if (n >= m.sphere_nodes) continue;
     px += mass * s.vx[n];
     pz += mass * s.vz[n];
     cx += mass * s.x[n];
@@ -250,27 +201,42 @@ double step_forces(const HexModel& m, HexState& s, double dt, bool& penetrating)
     s.x[n] += dt * s.vx[n];
     s.y[n] += dt * s.vy[n];
     s.z[n] += dt * s.vz[n];
+    s.fx[n] = 0.0;
+    s.fy[n] = 0.0;
+    s.fz[n] = 0.0;
   }
-  std::fill(s.fx.begin(), s.fx.end(), 0.0);
-  std::fill(s.fy.begin(), s.fy.end(), 0.0);
-  std::fill(s.fz.begin(), s.fz.end(), 0.0);
-  double dt_next = std::numeric_limits<double>::infinity();
-  for (std::size_t e = 0; e < m.mesh.hexes.size(); ++e) {
-    const double dt_e = update_element(m, s, e, dt);
-    if (!(dt_e > 0.0)) return 0.0;
-    dt_next = std::min(dt_next, dt_e);
-  }
+  const HexElementSums sums = hex_element_pass(m.simd, m, s, dt);
+  if (sums.inverted) return 0.0;
+  s.w_internal += sums.internal_work;
+  s.w_plastic += sums.plastic_work;
+  s.w_hourglass += sums.hourglass_work;
+  s.w_viscous += sums.viscous_work;
+  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
   penetrating = contact_forces(m, s, dt);
-  return m.solver->safety_factor * dt_next;
+  return m.solver->safety_factor * sums.dt_min;
 }
 
-// v^{n+1/2} = v^{n-1/2} + dt_avg f / m, the symmetry plane's v_y held at zero.
-void update_velocities(const HexModel& m, HexState& s, double dt_avg) {
+// What the stop rule and the energy balance need of the velocities after an update.
+struct VelocitySums {
+  double kinetic = 0.0;  // both bodies [J], half model
+  double vz = 0.0;       // the sphere's c.o.m. normal velocity [m/s]
+};
+
+// v^{n+1/2} = v^{n-1/2} + dt_avg f / m, the symmetry plane's v_y held at zero; the kinetic
+// energy and the sphere's momentum in the same pass.
+VelocitySums update_velocities(const HexModel& m, HexState& s, double dt_avg) {
+  VelocitySums sums;
+  double pz = 0.0;
   for (std::size_t n = 0; n < s.x.size(); ++n) {
     s.vx[n] = m.free_x[n] * (s.vx[n] + dt_avg * s.fx[n] * m.inv_mass[n]);
     s.vy[n] = m.free_y[n] * (s.vy[n] + dt_avg * s.fy[n] * m.inv_mass[n]);
     s.vz[n] = m.free_z[n] * (s.vz[n] + dt_avg * s.fz[n] * m.inv_mass[n]);
+    const double mass = m.mass[n];
+    sums.kinetic += 0.5 * mass * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]);
+    if (n < m.sphere_nodes) pz += mass * s.vz[n];
   }
+  sums.vz = pz / m.total_mass;
+  return sums;
 }
 
 void finish(const HexModel& m, const HexState& s, HexImpactResult& r) {
@@ -315,10 +281,9 @@ HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationContr
       r.status = RunStatus::kElementInverted;
       break;
     }
-    update_velocities(m, s, 0.5 * (dt + dt_next));
+    const VelocitySums mo = update_velocities(m, s, 0.5 * (dt + dt_next));
     s.dt = dt_next;
     r.F_max = std::max(r.F_max, 2.0 * s.normal_force);
-    const Motion mo = sphere_motion(m, s);
     const double balance = mo.kinetic + s.w_internal + s.w_hourglass + s.w_viscous + s.e_contact +
                            s.w_friction - energy0;
     if (!std::isfinite(balance)) {

@@ -14,6 +14,7 @@
 #include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/mesh/hex_mesh.hpp"
 #include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/fem/solver/simd_level.hpp"
 
 namespace corlab::fem::hex_solver {
 
@@ -27,32 +28,42 @@ struct BodyMaterial {
   double wave_speed = 0.0;  // c_d [m/s]
 };
 
+// A run of consecutive elements of one body [begin, end).
+struct HexElementRun {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  Body body = Body::kSphere;
+};
+
 struct HexModel {
   HexMesh mesh;
-  std::array<BodyMaterial, 2> bodies;  // indexed by Body: sphere, substrate
-  Vec mass, inv_mass;                  // lumped [kg], [1/kg]
-  Vec free_x, free_y, free_z;          // 0 where the dof is held (symmetry plane, base) [-]
-  Vec penalty;                         // per slave [N/m]
-  std::size_t sphere_nodes = 0;        // nodes [0, n) are the sphere's
-  bool deformable_target = false;      // the flat's block (else the rigid flat z = 0)
-  double total_mass = 0.0;             // half sphere [kg]
-  double v_normal = 0.0;               // [m/s] (> 0, towards the flat)
-  double v_tangent = 0.0;              // [m/s] (towards +x)
-  double friction = 0.0;               // mu [-]
-  double dt_initial = 0.0;             // [s]
-  double t_max = 0.0;                  // [s]
-  double t_wave = 0.0;                 // 4 R / c_d [s]
-  double t_expected = 0.0;             // expected end: 1.5 Hertz contact times [s]
-  double h_contact = 0.0;              // [m]
+  std::array<std::vector<int>, 8> corner;  // corner[i][e]: node i of element e
+  std::vector<HexElementRun> runs;         // the elements, by body
+  SimdLevel simd = SimdLevel::kBaseline;   // of the element pass
+  std::array<BodyMaterial, 2> bodies;      // indexed by Body: sphere, substrate
+  Vec mass, inv_mass;                      // lumped [kg], [1/kg]
+  Vec free_x, free_y, free_z;              // 0 where the dof is held (symmetry plane, base) [-]
+  Vec penalty;                             // per slave [N/m]
+  std::size_t sphere_nodes = 0;            // nodes [0, n) are the sphere's
+  bool deformable_target = false;          // the flat's block (else the rigid flat z = 0)
+  double total_mass = 0.0;                 // half sphere [kg]
+  double v_normal = 0.0;                   // [m/s] (> 0, towards the flat)
+  double v_tangent = 0.0;                  // [m/s] (towards +x)
+  double friction = 0.0;                   // mu [-]
+  double dt_initial = 0.0;                 // [s]
+  double t_max = 0.0;                      // [s]
+  double t_wave = 0.0;                     // 4 R / c_d [s]
+  double t_expected = 0.0;                 // expected end: 1.5 Hertz contact times [s]
+  double h_contact = 0.0;                  // [m]
   const SolverConfig* solver = nullptr;
 };
 
 // The mutable part.
 struct HexState {
   Vec x, y, z, vx, vy, vz, fx, fy, fz;
-  std::vector<SymTensor3> stress;
-  Vec eps_p;
-  std::vector<Hex8HourglassForce> hourglass;
+  std::array<Vec, 6> stress;                    // per element: xx, yy, zz, xy, yz, zx [Pa]
+  Vec eps_p;                                    // per element [-]
+  std::array<Vec, 12> hourglass;                // per element: Q[d][a] at d * 4 + a [N]
   std::vector<std::array<double, 3>> traction;  // friction force of each slave [N]
   double t = 0.0;
   double dt = 0.0;

@@ -55,6 +55,7 @@ inline Hex8Geometry hex8_geometry(const double* x, const double* y, const double
   Hex8Geometry g;
   constexpr double kTwelfth = 1.0 / 12.0;
   double volume = 0.0;
+#pragma GCC unroll 8
   for (int i = 0; i < 8; ++i) {
     const int* p = kHex8Rotation[i];
     g.bx[i] = hex8_volume_derivative12(y, z, p) * kTwelfth;
@@ -64,6 +65,7 @@ inline Hex8Geometry hex8_geometry(const double* x, const double* y, const double
   }
   g.volume = volume;
   const double inv = 1.0 / volume;
+#pragma GCC unroll 8
   for (int i = 0; i < 8; ++i) {
     g.bx[i] *= inv;
     g.by[i] *= inv;
@@ -84,8 +86,10 @@ inline StrainRate3 hex8_strain_rate(const Hex8Geometry& g,
                                     const double* vy,
                                     const double* vz) {
   double l[3][3] = {};  // l[i][j] = dv_i/dx_j
+#pragma GCC unroll 8
   for (int n = 0; n < 8; ++n) {
     const double b[3] = {g.bx[n], g.by[n], g.bz[n]};
+#pragma GCC unroll 3
     for (int j = 0; j < 3; ++j) {
       l[0][j] += vx[n] * b[j];
       l[1][j] += vy[n] * b[j];
@@ -108,6 +112,7 @@ inline StrainRate3 hex8_strain_rate(const Hex8Geometry& g,
 inline void hex8_add_internal_force(
     const Hex8Geometry& g, const SymTensor3& s, double* fx, double* fy, double* fz) {
   const double v = g.volume;
+#pragma GCC unroll 8
   for (int n = 0; n < 8; ++n) {
     fx[n] += v * (s.xx * g.bx[n] + s.xy * g.by[n] + s.zx * g.bz[n]);
     fy[n] += v * (s.xy * g.bx[n] + s.yy * g.by[n] + s.yz * g.bz[n]);
@@ -118,6 +123,7 @@ inline void hex8_add_internal_force(
 /// sum_I b_I . b_I [1/m^2].
 inline double hex8_gradient_norm2(const Hex8Geometry& g) {
   double s = 0.0;
+#pragma GCC unroll 8
   for (int n = 0; n < 8; ++n) s += g.bx[n] * g.bx[n] + g.by[n] * g.by[n] + g.bz[n] * g.bz[n];
   return s;
 }

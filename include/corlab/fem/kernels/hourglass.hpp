@@ -80,16 +80,19 @@ inline constexpr double kHex8HourglassBase[4][8] = {{1, -1, 1, -1, 1, -1, 1, -1}
 /// Hourglass shape vectors gamma[a][I] [-] of a hexahedron (gradients g, coordinates x, y, z).
 inline void hex8_hourglass_shape(
     const Hex8Geometry& g, const double* x, const double* y, const double* z, double (*gamma)[8]) {
+#pragma GCC unroll 4
   for (int a = 0; a < 4; ++a) {
     const double* h = kHex8HourglassBase[a];
     double hx = 0.0;
     double hy = 0.0;
     double hz = 0.0;
+#pragma GCC unroll 8
     for (int i = 0; i < 8; ++i) {
       hx += h[i] * x[i];
       hy += h[i] * y[i];
       hz += h[i] * z[i];
     }
+#pragma GCC unroll 8
     for (int i = 0; i < 8; ++i)
       gamma[a][i] = 0.125 * (h[i] - hx * g.bx[i] - hy * g.by[i] - hz * g.bz[i]);
   }
@@ -116,14 +119,18 @@ inline double hex8_hourglass_update(const double (*gamma)[8],
   const double* v[3] = {vx, vy, vz};
   double* f[3] = {fx, fy, fz};
   double work = 0.0;
+#pragma GCC unroll 3
   for (int d = 0; d < 3; ++d) {
+#pragma GCC unroll 4
     for (int a = 0; a < 4; ++a) {
       double rate = 0.0;
+#pragma GCC unroll 8
       for (int i = 0; i < 8; ++i) rate += gamma[a][i] * v[d][i];
       const double old_q = force.q[d][a];
       const double new_q = old_q + stiffness * rate * dt;
       work += 0.5 * dt * (old_q + new_q) * rate;
       force.q[d][a] = new_q;
+#pragma GCC unroll 8
       for (int i = 0; i < 8; ++i) f[d][i] += new_q * gamma[a][i];
     }
   }

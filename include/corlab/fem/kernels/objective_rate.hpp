@@ -46,7 +46,9 @@ inline void rotate_hughes_winget(SymTensor3& stress, const Spin3& w_dt) {
                           {stress.xy, stress.yy, stress.yz},
                           {stress.zx, stress.yz, stress.zz}};
   double qm[3][3];
+#pragma GCC unroll 3
   for (int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
     for (int j = 0; j < 3; ++j)
       qm[i][j] = q[i][0] * m[0][j] + q[i][1] * m[1][j] + q[i][2] * m[2][j];
   auto qmqt = [&](int i, int j) {

@@ -1,0 +1,236 @@
+// The 3-D solver's element pass (hex_element_loop.hpp). Compiled with -fopenmp-simd
+// -fno-math-errno (src/CMakeLists.txt), like element_loop.cpp, so that the lane loop vectorises.
+#include "fem/solver/hex_element_loop.hpp"
+
+#include <algorithm>
+
+#include "corlab/fem/kernels/bulk_viscosity.hpp"
+#include "corlab/fem/kernels/hex8.hpp"
+#include "corlab/fem/kernels/hourglass.hpp"
+#include "corlab/fem/kernels/j2_plasticity.hpp"
+#include "corlab/fem/kernels/objective_rate.hpp"
+#include "corlab/fem/kernels/stable_time_step.hpp"
+#include "corlab/fem/kernels/sym_tensor3.hpp"
+#include "fem/solver/simd_variants.hpp"
+
+namespace corlab::fem::hex_solver {
+namespace {
+
+// Elements per block: one AVX-512 vector of doubles per nodal value.
+constexpr int kBlock = 8;
+
+// The gathered nodal values of a block and the forces its lanes compute, [corner][lane].
+struct HexLanes {
+  alignas(64) double x[8][kBlock], y[8][kBlock], z[8][kBlock];
+  alignas(64) double vx[8][kBlock], vy[8][kBlock], vz[8][kBlock];
+  alignas(64) double fx[8][kBlock], fy[8][kBlock], fz[8][kBlock];
+};
+
+// Per-lane results (no reductions in the lane loop: it vectorises without reassociation).
+struct HexLaneResults {
+  alignas(64) double w_int[kBlock], w_p[kBlock], w_hg[kBlock], w_v[kBlock];
+  alignas(64) double dt[kBlock], eps_p[kBlock], volume[kBlock];
+};
+
+// One body's constants for the lane loop.
+struct HexBody {
+  J2Plasticity material;
+  double density;     // [kg/m^3]
+  double wave_speed;  // [m/s]
+  double b1, b2;      // bulk viscosity [-]
+  double kappa_hg;    // hourglass coefficient [-]
+};
+
+// The element state of the block starting at e0.
+struct HexBlockState {
+  double* __restrict stress[6];  // xx, yy, zz, xy, yz, zx [Pa]
+  double* __restrict eps_p;
+  double* __restrict q[12];  // hourglass Q[d][a] at d * 4 + a [N]
+};
+
+[[gnu::always_inline]] inline HexBlockState block_state(HexState& s, std::size_t e0) {
+  HexBlockState b{};
+  for (int c = 0; c < 6; ++c) b.stress[c] = s.stress[static_cast<std::size_t>(c)].data() + e0;
+  b.eps_p = s.eps_p.data() + e0;
+  for (int k = 0; k < 12; ++k) b.q[k] = s.hourglass[static_cast<std::size_t>(k)].data() + e0;
+  return b;
+}
+
+// Stress update of lane l at the mid-step geometry; returns the rates' volumetric part and
+// writes the lane's works and plastic strain.
+[[gnu::always_inline]] inline double lane_stress(const HexBody& p,
+                                                 const HexBlockState& b,
+                                                 int l,
+                                                 const Hex8Geometry& gm,
+                                                 const double* vx,
+                                                 const double* vy,
+                                                 const double* vz,
+                                                 double dt,
+                                                 SymTensor3& sigma,
+                                                 HexLaneResults& out) {
+  const StrainRate3 rate = hex8_strain_rate(gm, vx, vy, vz);
+  const SymTensor3 de{rate.d.xx * dt, rate.d.yy * dt, rate.d.zz * dt,
+                      rate.d.xy * dt, rate.d.yz * dt, rate.d.zx * dt};
+  sigma = {b.stress[0][l], b.stress[1][l], b.stress[2][l],
+           b.stress[3][l], b.stress[4][l], b.stress[5][l]};
+  rotate_hughes_winget(sigma, Spin3{rate.spin.x * dt, rate.spin.y * dt, rate.spin.z * dt});
+  const SymTensor3 old = sigma;
+  J2Plasticity::State state{b.eps_p[l]};
+  const J2Plasticity::Increment inc = p.material.update(sigma, state, de);
+  b.eps_p[l] = state.eps_p;
+  out.eps_p[l] = state.eps_p;
+  out.w_int[l] = 0.5 * gm.volume * (contract(old, de) + contract(sigma, de));
+  out.w_p[l] = inc.plastic_work * gm.volume;
+  b.stress[0][l] = sigma.xx;
+  b.stress[1][l] = sigma.yy;
+  b.stress[2][l] = sigma.zz;
+  b.stress[3][l] = sigma.xy;
+  b.stress[4][l] = sigma.yz;
+  b.stress[5][l] = sigma.zx;
+  return trace(rate.d);
+}
+
+// Hourglass forces of lane l added to f*, its work into `out`.
+[[gnu::always_inline]] inline void lane_hourglass(const HexBody& p,
+                                                  const HexBlockState& b,
+                                                  int l,
+                                                  const Hex8Geometry& g,
+                                                  const double* const (&pos)[3],
+                                                  const double* const (&vel)[3],
+                                                  double dt,
+                                                  double* fx,
+                                                  double* fy,
+                                                  double* fz,
+                                                  HexLaneResults& out) {
+  double gamma[4][8];
+  hex8_hourglass_shape(g, pos[0], pos[1], pos[2], gamma);
+  const double k_hg =
+      hourglass_stiffness(p.kappa_hg, p.material.shear_modulus, g.volume, hex8_gradient_norm2(g));
+  Hex8HourglassForce q;
+#pragma GCC unroll 12
+  for (int k = 0; k < 12; ++k) q.q[k / 4][k % 4] = b.q[k][l];
+  out.w_hg[l] = hex8_hourglass_update(gamma, vel[0], vel[1], vel[2], k_hg, dt, q, fx, fy, fz);
+#pragma GCC unroll 12
+  for (int k = 0; k < 12; ++k) b.q[k][l] = q.q[k / 4][k % 4];
+}
+
+// Lane l of a block: the element update of hex_impact.cpp's step.
+[[gnu::always_inline]] inline void lane_update(
+    const HexBody& p, const HexBlockState& b, HexLanes& ln, int l, double dt, HexLaneResults& out) {
+  double x[8], y[8], z[8], vx[8], vy[8], vz[8], mx[8], my[8], mz[8];
+#pragma GCC unroll 8
+  for (int i = 0; i < 8; ++i) {
+    x[i] = ln.x[i][l];
+    y[i] = ln.y[i][l];
+    z[i] = ln.z[i][l];
+    vx[i] = ln.vx[i][l];
+    vy[i] = ln.vy[i][l];
+    vz[i] = ln.vz[i][l];
+    mx[i] = x[i] - 0.5 * dt * vx[i];
+    my[i] = y[i] - 0.5 * dt * vy[i];
+    mz[i] = z[i] - 0.5 * dt * vz[i];
+  }
+  const Hex8Geometry gm = hex8_geometry(mx, my, mz);
+  const Hex8Geometry g = hex8_geometry(x, y, z);
+  out.volume[l] = std::min(g.volume, gm.volume);
+  SymTensor3 sigma;
+  const double vol_rate = lane_stress(p, b, l, gm, vx, vy, vz, dt, sigma, out);
+  const double length = hex8_characteristic_length(g);
+  const double viscous = bulk_viscous_stress(vol_rate, p.density, p.wave_speed, length, p.b1, p.b2);
+  out.w_v[l] = viscous * vol_rate * dt * gm.volume;
+  sigma.xx += viscous;
+  sigma.yy += viscous;
+  sigma.zz += viscous;
+  double fx[8] = {};
+  double fy[8] = {};
+  double fz[8] = {};
+  hex8_add_internal_force(g, sigma, fx, fy, fz);
+  lane_hourglass(p, b, l, g, {x, y, z}, {vx, vy, vz}, dt, fx, fy, fz, out);
+#pragma GCC unroll 8
+  for (int i = 0; i < 8; ++i) {
+    ln.fx[i][l] = fx[i];
+    ln.fy[i][l] = fy[i];
+    ln.fz[i][l] = fz[i];
+  }
+  const double xi = bulk_viscous_damping_ratio(vol_rate, p.wave_speed, length, p.b1, p.b2);
+  out.dt[l] = element_stable_time_step(length, p.wave_speed, xi);
+}
+
+// Gathers the block's nodal values into the lanes.
+[[gnu::always_inline]] inline void gather(
+    const HexModel& m, const HexState& s, std::size_t e0, int nb, HexLanes& ln) {
+  for (int i = 0; i < 8; ++i) {
+    const int* nodes = m.corner[static_cast<std::size_t>(i)].data() + e0;
+    for (int l = 0; l < nb; ++l) {
+      const auto n = static_cast<std::size_t>(nodes[l]);
+      ln.x[i][l] = s.x[n];
+      ln.y[i][l] = s.y[n];
+      ln.z[i][l] = s.z[n];
+      ln.vx[i][l] = s.vx[n];
+      ln.vy[i][l] = s.vy[n];
+      ln.vz[i][l] = s.vz[n];
+    }
+  }
+}
+
+// Subtracts the block's forces from the nodes, element by element (the sums' order, and so
+// their bits, do not depend on the block size) and adds its lanes' results to `sums`.
+[[gnu::always_inline]] inline void scatter(const HexModel& m,
+                                           HexState& s,
+                                           std::size_t e0,
+                                           int nb,
+                                           const HexLanes& ln,
+                                           const HexLaneResults& out,
+                                           HexElementSums& sums) {
+  for (int l = 0; l < nb; ++l) {
+    for (int i = 0; i < 8; ++i) {
+      const auto n = static_cast<std::size_t>(m.corner[static_cast<std::size_t>(i)][e0 + l]);
+      s.fx[n] -= ln.fx[i][l];
+      s.fy[n] -= ln.fy[i][l];
+      s.fz[n] -= ln.fz[i][l];
+    }
+    sums.internal_work += out.w_int[l];
+    sums.plastic_work += out.w_p[l];
+    sums.hourglass_work += out.w_hg[l];
+    sums.viscous_work += out.w_v[l];
+    sums.dt_min = std::min(sums.dt_min, out.dt[l]);
+    sums.eps_p_max = std::max(sums.eps_p_max, out.eps_p[l]);
+    sums.inverted = sums.inverted || !(out.volume[l] > 0.0);
+  }
+}
+
+[[gnu::always_inline]] inline HexBody body_constants(const HexModel& m, Body body) {
+  const BodyMaterial& b = m.bodies[static_cast<std::size_t>(body)];
+  const SolverConfig& sc = *m.solver;
+  return HexBody{
+      b.material,  b.density, b.wave_speed, sc.bulk_viscosity_linear, sc.bulk_viscosity_quadratic,
+      sc.hourglass};
+}
+
+[[gnu::always_inline]] inline HexElementSums pass_body(const HexModel& m, HexState& s, double dt) {
+  HexElementSums sums;
+  HexLanes ln;
+  HexLaneResults out;
+  for (const HexElementRun& run : m.runs) {
+    const HexBody p = body_constants(m, run.body);
+    for (std::size_t e0 = run.begin; e0 < run.end; e0 += kBlock) {
+      const int nb = static_cast<int>(std::min<std::size_t>(kBlock, run.end - e0));
+      gather(m, s, e0, nb, ln);
+      const HexBlockState b = block_state(s, e0);
+#pragma GCC ivdep
+      for (int l = 0; l < nb; ++l) lane_update(p, b, ln, l, dt, out);
+      scatter(m, s, e0, nb, ln, out, sums);
+    }
+  }
+  return sums;
+}
+
+}  // namespace
+
+CORLAB_SIMD_VARIANTS(HexElementSums,
+                     hex_element_pass,
+                     (const HexModel& m, HexState& s, double dt),
+                     (m, s, dt),
+                     pass_body(m, s, dt))
+
+}  // namespace corlab::fem::hex_solver
