@@ -92,9 +92,13 @@ int run_simulate(const SimulateOptions& opt) {
         fem::to_string(result.status), result.status_detail);
   }
   if (clean && fem::uses_3d_model(config)) {
-    fmt::print("3-D model: e_n = {:.4f}  e_t = {:.4f}  omega = {:.5g} rad/s  rebound_angle = {:.3f} "
-               "deg  energy_friction = {:.4g} J\n",
-               result.e_n, result.e_t, result.omega, result.rebound_angle, result.energy_friction);
+    // "+/- U" after e_t and omega where the error estimate gave them
+    auto bar = [](double u) { return std::isfinite(u) ? fmt::format(" +/- {:.2g}", u) : ""; };
+    fmt::print(
+        "3-D model: e_n = {:.4f}  e_t = {:.4f}{}  omega = {:.5g}{} rad/s  rebound_angle = {:.3f} "
+        "deg  energy_friction = {:.4g} J\n",
+        result.e_n, result.e_t, bar(result.e_t_error), result.omega, bar(result.omega_error),
+        result.rebound_angle, result.energy_friction);
   }
   if (!result.suspect.empty()) {
     fmt::print(stderr, "corlab simulate: warning: suspect run: {}\n", result.suspect);

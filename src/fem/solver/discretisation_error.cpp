@@ -39,6 +39,8 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   quiet.cancel = control.cancel;
   // The grids the estimator reads: the run's own (ratio 1) and its coarser companions.
   std::vector<double> e{fine.e};
+  std::vector<double> e_t{fine.e_t};
+  std::vector<double> omega{fine.omega};
   std::vector<double> ratios{1.0};
   std::string reason;
   for (const double ratio : kErrorBarRatios) {
@@ -67,6 +69,8 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
       continue;
     }
     e.push_back(coarse.e);
+    e_t.push_back(coarse.e_t);
+    omega.push_back(coarse.omega);
     ratios.push_back(ratio);
   }
   if (fine.status != RunStatus::kSeparated) {
@@ -76,6 +80,10 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
     return fine;
   }
   fine.e_error = error_bar(kDefaultErrorBar, e, ratios);
+  // The tangential results of an oblique impact: the same estimator on the same grids (NaN for
+  // a normal impact, whose e_t is NaN).
+  fine.e_t_error = error_bar(kDefaultErrorBar, e_t, ratios);
+  if (std::isfinite(fine.e_t)) fine.omega_error = error_bar(kDefaultErrorBar, omega, ratios);
   if (!std::isfinite(fine.e_error)) fine.e_error_reason = reason;
   return fine;
 }

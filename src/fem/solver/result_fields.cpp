@@ -189,6 +189,10 @@ const std::array kFields{
     CORLAB_RESULT_MEMBER(omega, "rad/s", "rebound spin about the symmetry plane's normal", kBoth),
     CORLAB_RESULT_MEMBER(rebound_angle, "deg", "rebound angle from the normal", kBoth),
     CORLAB_RESULT_MEMBER(energy_friction, "J", "frictional dissipation (3-D model)", kBoth),
+    CORLAB_RESULT_MEMBER(
+        e_t_error, "-", "discretisation-error bar of e_t (as e_error, same companions)", kBoth),
+    CORLAB_RESULT_MEMBER(
+        omega_error, "rad/s", "discretisation-error bar of omega (as e_error)", kBoth),
     derived("E_star",
             "Pa",
             "effective modulus (Ma et al. 2023 eq. 3)",

@@ -65,6 +65,11 @@ struct ImpactResult {
   double omega = 0.0;
   double rebound_angle = 0.0;    ///< atan(v_x' / v_z') [deg from the normal] (normal impact: 0)
   double energy_friction = 0.0;  ///< frictional dissipation [J] (3-D model with friction)
+  /// discretisation-error estimate of e_t, from the same companions and estimator as e_error [-]
+  /// (NaN unless estimated on an oblique impact)
+  double e_t_error = std::numeric_limits<double>::quiet_NaN();
+  /// discretisation-error estimate of omega, the same way [rad/s] (NaN unless estimated)
+  double omega_error = std::numeric_limits<double>::quiet_NaN();
   double F_max = 0.0;               ///< largest contact force [N]
   double delta_max = 0.0;           ///< largest indentation (sphere c.o.m. displacement) [m]
   double t_contact = 0.0;           ///< duration of contact [s]
