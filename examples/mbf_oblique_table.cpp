@@ -8,6 +8,8 @@
 //   build/bin/example_mbf_oblique_table scan 1.5034     # psi2(psi1) on a fine grid for a chi
 //   build/bin/example_mbf_oblique_table kharaz data/kharaz2001/measured_points.csv
 //                                                       # against Kharaz et al.'s measurements
+//   build/bin/example_mbf_oblique_table chi             # the no-slip limit and psi2(1.2) vs chi
+//   build/bin/example_mbf_oblique_table steel           # the FE comparison's cases (steel, mu 0.3)
 #include <fmt/core.h>
 
 #include <cmath>
@@ -110,6 +112,62 @@ void scan(double chi) {
              best_psi2, best_psi1, zero);
 }
 
+// Bisection for the chi in [lo, hi] where f changes sign.
+template <typename F>
+double sign_change(F f, double lo, double hi) {
+  const double f_lo = f(lo);
+  for (int i = 0; i < 30; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (f_lo * f(mid) <= 0.0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The small-psi1 limit (no slip: psi2/psi1) and psi2 at psi1 = 1.2 (MBF 1976's Fig. 4) against
+// chi, and the reversals of the tangential force at psi1 = 0.3.
+void chi_dependence() {
+  const MbfDiscretisation fine{.annuli = 400, .time_steps = 20000};
+  const MbfDiscretisation no_slip{.annuli = 400, .time_steps = 20000, .coulomb = false};
+  auto ratio = [&](double chi) {
+    return corlab::restitution::mbf_normalised(chi, 1.0, no_slip).contact_point_ratio;
+  };
+  auto psi2_at = [&](double chi) {
+    return corlab::restitution::mbf_normalised(chi, 1.2, fine).psi2;
+  };
+  fmt::print("{:>5} {:>16} {:>12} {:>14}\n", "chi", "no-slip psi2/psi1", "psi2(1.2)",
+             "reversals(0.3)");
+  for (int i = 1; i <= 12; ++i) {
+    const double chi = 0.25 * i;
+    fmt::print("{:5.2f} {:+16.4f} {:+12.4f} {:14d}\n", chi, ratio(chi), psi2_at(chi),
+               corlab::restitution::mbf_normalised(chi, 0.3, fine).force_reversals);
+  }
+  fmt::print("# no-slip ratio = 0 at chi = {:.4f}; psi2(1.2) = 0 at chi = {:.4f}\n",
+             sign_change(ratio, 1.0, 1.5), sign_change(psi2_at, 1.0, 2.0));
+}
+
+// The cases of verification_mbf_hex_impact_test: elastic steel (210 GPa, 0.3, 7850 kg/m^3,
+// R = 35 mm) on the like-material flat, mu = 0.3, v_n = 10 m/s, at psi1 = 1, 1.5, 2 and 3.
+void steel_cases() {
+  const double kappa = corlab::restitution::mbf_stiffness_ratio(210e9, 0.3, 210e9, 0.3);
+  for (double psi1 : {1.0, 1.5, 2.0, 3.0}) {
+    const double theta = std::atan(psi1 * 0.3 / kappa);
+    const auto r = corlab::restitution::mbf_rebound({.radius = 35e-3,
+                                                     .density = 7850.0,
+                                                     .sphere_modulus = 210e9,
+                                                     .sphere_poisson = 0.3,
+                                                     .flat_modulus = 210e9,
+                                                     .flat_poisson = 0.3,
+                                                     .velocity = 10.0 / std::cos(theta),
+                                                     .angle = theta * kDegreesPerRadian,
+                                                     .friction = 0.3},
+                                                    {.annuli = 400, .time_steps = 20000});
+    fmt::print("psi1 {:.2f} theta {:.4f} v {:.4f} chi {:.5f} psi2 {:.5f} e_t {:.5f} omega {:.4f} "
+               "angle {:.4f} t_c {:.4e}\n", psi1, theta * kDegreesPerRadian,
+               10.0 / std::cos(theta), r.chi, r.psi2, r.tangential_restitution, r.spin,
+               r.rebound_angle, r.contact_time);
+  }
+}
+
 // Every measured point of data/kharaz2001 (source, quantity, angle, value, unit) beside MBF.
 void kharaz_points(const std::string& path) {
   std::ifstream file(path);
@@ -138,6 +196,20 @@ void kharaz_points(const std::string& path) {
     fmt::print("{:>27} {:>28} {:8.3f} {:10.4f} {:10.4f} {:9.4f}\n", source, quantity, theta,
                std::stod(value), mbf, mbf - std::stod(value));
   }
+  double deepest = 0.0;
+  double at = 0.0;
+  for (double theta = 5.0; theta <= 30.0; theta += 0.5) {
+    const auto r = corlab::restitution::mbf_rebound(kharaz(theta));
+    const double v_n = 3.9 * std::cos(theta / kDegreesPerRadian);
+    const double a =
+        std::atan2(r.contact_slip_velocity, r.normal_restitution * v_n) * kDegreesPerRadian;
+    if (a < deepest) {
+      deepest = a;
+      at = theta;
+    }
+  }
+  fmt::print("# MBF's deepest contact-point angle: {:.4f} deg at {:.1f} deg (0.5-deg grid)\n",
+             deepest, at);
 }
 
 }  // namespace
@@ -149,12 +221,16 @@ int main(int argc, char** argv) {
       table();
     } else if (mode == "convergence") {
       convergence();
+    } else if (mode == "steel") {
+      steel_cases();
+    } else if (mode == "chi") {
+      chi_dependence();
     } else if (mode == "kharaz" && argc > 2) {
       kharaz_points(argv[2]);
     } else if (mode == "scan" && argc > 2) {
       scan(std::strtod(argv[2], nullptr));
     } else {
-      fmt::print(stderr, "usage: example_mbf_oblique_table [table | convergence | scan CHI | kharaz CSV]\n");
+      fmt::print(stderr, "usage: example_mbf_oblique_table [table | convergence | scan CHI | kharaz CSV | chi | steel]\n");
       return 2;
     }
   } catch (const std::exception& e) {
