@@ -1,0 +1,76 @@
+// The 3-D impact model (hex_impact.hpp) in the elastic micro-slip regime against the theory of
+// Maw, Barber & Fawcett (mbf_oblique.hpp; docs/theory/oblique_theory.md): the elastic steel
+// sphere on the elastic steel flat (like materials: MBF's setting, no normal-tangential coupling),
+// mu = 0.3, at psi1 = kappa tan(theta)/mu = 2 (theta = 36.08 deg), where the contact sticks,
+// slips back and leaves with its contact point's velocity reversed (psi2 < 0), which rigid-body
+// theory cannot give (its psi2 is 0: rolling, or psi1 - 4 chi: sliding). Coarse mesh (h = 1.5 mm,
+// a/h = 2.5, 28,924 elements, about 20 CPU-s); the finer-mesh command and the other angles are in
+// oblique_theory.md.
+//
+// The rigid flat is not used: a sphere on a rigid flat is a dissimilar pair (Dundurs' beta =
+// (1 - 2 nu)/(2 (1 - nu)) = 0.29 for steel), whose normal load drives radial slip that MBF leave
+// out; it gave e_t = 0.553 against MBF's 0.595 at the same psi1 (oblique_theory.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/restitution/mbf_oblique.hpp"
+
+namespace corlab::fem {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
+  constexpr double kMu = 0.3;
+  constexpr double kPsi1 = 2.0;
+  constexpr double kNormalVelocity = 10.0;  // [m/s]: a_max = 3.75 mm, elastic
+  ImpactConfig c;
+  c.sphere.material.yield_stress.reset();
+  c.substrate.material.yield_stress.reset();
+  const double nu = c.sphere.material.poisson_ratio;
+  ASSERT_EQ(nu, c.substrate.material.poisson_ratio);
+  ASSERT_EQ(c.sphere.material.youngs_modulus, c.substrate.material.youngs_modulus);
+  const double kappa = 2.0 * (1.0 - nu) / (2.0 - nu);
+  const double theta = std::atan(kPsi1 * kMu / kappa);
+  c.impact.angle = theta / kDeg;
+  c.impact.velocity = kNormalVelocity / std::cos(theta);
+  c.contact.friction = kMu;
+  c.mesh.h_min = 1.5e-3;
+  c.mesh.contact_elements = 0.0;
+  validate(c);
+  const HexImpactResult r = simulate_hex_impact(c);
+  ASSERT_EQ(r.status, RunStatus::kSeparated);
+  EXPECT_NEAR(r.e_n, 1.0, 5e-3);
+
+  const restitution::MbfRebound mbf = restitution::mbf_rebound(
+      {.radius = c.sphere.radius,
+       .density = c.sphere.material.density,
+       .sphere_modulus = c.sphere.material.youngs_modulus,
+       .sphere_poisson = nu,
+       .flat_modulus = c.substrate.material.youngs_modulus,
+       .flat_poisson = c.substrate.material.poisson_ratio,
+       .velocity = c.impact.velocity,
+       .angle = c.impact.angle,
+       .friction = kMu});
+  ASSERT_NEAR(mbf.psi1, kPsi1, 1e-12);
+  ASSERT_FALSE(mbf.gross_sliding);
+  // The FE's contact point at rebound, normalised with its own rebound normal velocity (e_n
+  // differs from MBF's 1 by 0.3 %: that enters psi2 through v_n' only).
+  const double v_t = c.impact.velocity * std::sin(theta);
+  const double slip = r.e_t * v_t - c.sphere.radius * r.omega;
+  const double psi2 = kappa * slip / (kMu * r.e_n * kNormalVelocity);
+  // Measured at this mesh: e_t 0.5862 vs 0.5947, omega 214.09 vs 210.93 rad/s, psi2 -0.887 vs
+  // -0.837. Bounds: a sixth of the distance to the nearest rigid-body answer (rolling: e_t =
+  // 5/7, 0.12 away) for e_t; 3 % in omega (the mesh's inertia is 0.5 % below 2/5 m R^2); 0.1
+  // in psi2 (rolling's 0 is 0.84 away).
+  EXPECT_NEAR(r.e_t, mbf.tangential_restitution, 0.02);
+  EXPECT_NEAR(r.omega / mbf.spin, 1.0, 0.03);
+  EXPECT_NEAR(psi2, mbf.psi2, 0.1);
+  EXPECT_LT(psi2, -0.5);  // the contact point's velocity has reversed
+  EXPECT_LT(r.energy_balance_error, 5e-3);
+}
+
+}  // namespace
+}  // namespace corlab::fem
