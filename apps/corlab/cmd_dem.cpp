@@ -32,6 +32,7 @@ struct DemArgs {
   int fit_points = 9;
   int table_points = 64;
   bool wall_only = false;
+  double friction = 0.0;  // Coulomb mu [-] of every pair
   std::string out = "dem_export";
 };
 
@@ -97,6 +98,7 @@ int run_dem(const DemArgs& args) {
   spec.v_max = args.v_max;
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
+  spec.friction = args.friction;
   // A pair no model covers (an elastic particle pair) is refused by calibrate_pairs with the ways
   // out (--pair, a yield stress, --wall-only).
   const std::vector<dem::PairCalibration> pairs = dem::calibrate_pairs(spec);
@@ -153,6 +155,9 @@ const CommandRegistration kRegistration{Command{
           sub.add_option("--table", a->table, "FE results.csv (columns velocity, e) for e(v)");
       e->excludes(m)->excludes(t);
       m->excludes(t);
+      sub.add_option("--friction", a->friction,
+                     "Coulomb friction coefficient mu of every pair (default 0: frictionless); "
+                     "above 0 the fragments add Mindlin's tangential stiffness 8 G* a");
       sub.add_option("--v-min", a->v_min, "lower end of the e(v) range [m/s]");
       sub.add_option("--v-max", a->v_max, "upper end of the e(v) range [m/s]");
       sub.add_option("--fit-points", a->fit_points, "speeds of the e(v) fits (log-uniform)");
