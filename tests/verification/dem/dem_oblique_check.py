@@ -38,17 +38,16 @@ SPEED = 3.9  # m/s
 MU = 0.092
 ANGLES = (0.0, 5.0, 10.0, 20.0, 30.0, 40.0, 50.0, 60.0, 70.0, 80.0)
 CODES = ("lammps", "liggghts", "yade")
-# The rigid-body sliding limit holds where the contact slides throughout the impact. Without
-# tangential compliance that is tan(theta) >= 3.5 mu (1 + e_n) (32.8 deg at e_n = 1); Mindlin's
-# compliance lets the contact stick briefly at first (LAMMPS's e_t is 2e-3 above the limit at
-# 30 deg), so it is asserted from the next table angle, 40 deg.
+# The rigid-body sliding limit holds where the contact slides throughout the impact: without
+# tangential compliance where tan(theta) >= 3.5 mu (1 + e_n) (32.8 deg at e_n = 1), and it is
+# asserted from the first table angle above that, 40 deg. There the spring exceeds mu F_n from
+# the first step (8 G* v_t dt > mu 4/3 E* v_n dt) and stays capped, so every step adds mu F_n dt
+# to the tangential impulse as to the normal one times mu: e_t is the limit whatever the step, up
+# to roundoff and the 12 digits the codes print (measured |de_t| <= 1.4e-12 at 40-80 deg).
 GROSS_SLIDING_DEG = 40.0
-# In gross sliding each step adds mu F_n dt to the tangential impulse, so the sum is mu times the
-# normal impulse m v_n (1 + e_n) whatever the step: e_t is exact but for the first steps of the
-# contact, before the spring reaches mu F_n (measured: |de_t| <= 1.1e-5 at 40-80 deg; 1e-4 leaves
-# a factor 9). omega also depends on the torque arm, R or R - delta/2 (delta_max/(2R) = 0.34 % at
-# 3.9 m/s); measured: LAMMPS's wall 0 to 1e-5, LIGGGHTS and YADE -0.07 to -0.26 %.
-ET_TOL = 1e-4
+ET_TOL = 1e-9
+# omega also depends on where F_t acts, R or R - delta/2 (delta_max/(2R) = 0.34 % at 3.9 m/s):
+# measured, LAMMPS's wall 1e-12, LIGGGHTS -0.07 to -0.22 %, YADE -0.08 to -0.26 %.
 OMEGA_TOL = 5e-3  # relative
 ENERGY_GAIN = 1e-4  # an energy ratio above 1 + this is flagged (e_n's integration error: 1e-5)
 
@@ -200,8 +199,8 @@ def check_code(rows, data, code, report):
 
 
 def check_agreement(table, report):
-    """The codes' spread in e_t and rebound angle per angle: asserted in gross sliding (each is
-    within ET_TOL of the same limit), reported below it."""
+    """The codes' spread in e_t and rebound angle per angle: asserted in gross sliding (there
+    they may differ only through their e_n), reported below it."""
     failures = 0
     for angle in ANGLES[1:]:
         rows = [r for r in table if r["angle_deg"] == angle]
@@ -210,9 +209,13 @@ def check_agreement(table, report):
         line = "codes at %2.0f deg: e_t spread %.1e (%s), rebound angle spread %.3f deg" % (
             angle, max(e_t) - min(e_t), " / ".join("%.5f" % x for x in e_t), max(deg) - min(deg))
         if angle >= GROSS_SLIDING_DEG:
-            ok = max(e_t) - min(e_t) <= 2 * ET_TOL
+            # in gross sliding the codes may differ only through their e_n (integration error)
+            e_n = [r["e_n"] for r in rows]
+            bound = MU * (max(e_n) - min(e_n)) / math.tan(math.radians(angle)) + 2 * ET_TOL
+            ok = max(e_t) - min(e_t) <= bound
             failures += not ok
-            line += " (e_t <= %.0e) %s" % (2 * ET_TOL, "ok" if ok else "FAIL")
+            line += " (<= mu de_n/tan(theta) + 2 ET_TOL = %.1e) %s" % (bound,
+                                                                       "ok" if ok else "FAIL")
         report.append(line)
     return failures
 
