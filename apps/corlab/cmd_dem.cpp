@@ -13,6 +13,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/dem/dem_export.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/study/results_table.hpp"
 
@@ -120,6 +121,10 @@ int run_dem(const DemArgs& args) {
         "{:.1e}; contact time {:.3g} s at {} m/s\n",
         p.name(), p.target, lammps.max_abs_error, lammps_plain.max_abs_error,
         liggghts.max_abs_error, yade.max_abs_error, p.contact_time_fast, spec.v_max);
+    if (p.friction > 0.0) {
+      fmt::print("    tangential: mu {:.6g}, Mindlin k_t = 8 G* a with 8 G* = {:.6g} Pa\n",
+                 p.friction, dem::mindlin_coefficient(p.shear_modulus));
+    }
   }
   fmt::print(
       "time step [s]: LAMMPS {:.3g}, without Python {:.3g}, LIGGGHTS {:.3g}, YADE {:.3g} "
