@@ -13,6 +13,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/dem/dem_export.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/study/results_table.hpp"
 
@@ -32,6 +33,7 @@ struct DemArgs {
   int fit_points = 9;
   int table_points = 64;
   bool wall_only = false;
+  double friction = 0.0;  // Coulomb mu [-] of every pair
   std::string out = "dem_export";
 };
 
@@ -97,6 +99,7 @@ int run_dem(const DemArgs& args) {
   spec.v_max = args.v_max;
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
+  spec.friction = args.friction;
   // A pair no model covers (an elastic particle pair) is refused by calibrate_pairs with the ways
   // out (--pair, a yield stress, --wall-only).
   const std::vector<dem::PairCalibration> pairs = dem::calibrate_pairs(spec);
@@ -118,6 +121,10 @@ int run_dem(const DemArgs& args) {
         "{:.1e}; contact time {:.3g} s at {} m/s\n",
         p.name(), p.target, lammps.max_abs_error, lammps_plain.max_abs_error,
         liggghts.max_abs_error, yade.max_abs_error, p.contact_time_fast, spec.v_max);
+    if (p.friction > 0.0) {
+      fmt::print("    tangential: mu {:.6g}, Mindlin k_t = 8 G* a with 8 G* = {:.6g} Pa\n",
+                 p.friction, dem::mindlin_coefficient(p.shear_modulus));
+    }
   }
   fmt::print(
       "time step [s]: LAMMPS {:.3g}, without Python {:.3g}, LIGGGHTS {:.3g}, YADE {:.3g} "
@@ -153,6 +160,9 @@ const CommandRegistration kRegistration{Command{
           sub.add_option("--table", a->table, "FE results.csv (columns velocity, e) for e(v)");
       e->excludes(m)->excludes(t);
       m->excludes(t);
+      sub.add_option("--friction", a->friction,
+                     "Coulomb friction coefficient mu of every pair (default 0: frictionless); "
+                     "above 0 the fragments add Mindlin's tangential stiffness 8 G* a");
       sub.add_option("--v-min", a->v_min, "lower end of the e(v) range [m/s]");
       sub.add_option("--v-max", a->v_max, "upper end of the e(v) range [m/s]");
       sub.add_option("--fit-points", a->fit_points, "speeds of the e(v) fits (log-uniform)");

@@ -90,8 +90,10 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     int fit_points,
                     const std::optional<std::pair<std::vector<double>, std::vector<double>>>& table,
                     const std::string& table_source,
-                    const std::map<std::string, double>& pairs) {
+                    const std::map<std::string, double>& pairs,
+                    double friction) {
   dem::ExportSpec spec;
+  spec.friction = friction;  // Coulomb mu [-] of every pair
   for (const auto& [material, radius] : types) {
     auto labelled = dem::parse_labelled_material(material, "type");
     spec.types.push_back({std::move(labelled.material), radius, std::move(labelled.label)});
@@ -204,13 +206,14 @@ void bind_dem(py::module_& m) {
         py::arg("restitution") = std::nullopt, py::arg("model") = "", py::arg("v_min") = 0.1,
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
         py::arg("table") = std::nullopt, py::arg("table_source") = "",
-        py::arg("pairs") = std::map<std::string, double>{},
+        py::arg("pairs") = std::map<std::string, double>{}, py::arg("friction") = 0.0,
         "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables. "
         "table = (velocities [m/s], e [-]): an FE e(v) table instead of `restitution` or "
         "`model` (e.g. t = corlab.read_results('results.csv'); table=(t['velocity'], t['e'])); "
         "table_source names it in the exported files. A type or wall material may carry a "
         "label ('glass=E=63e9,nu=0.22,rho=2500'); pairs = {'glass/glass': 1.0} sets one pair's "
-        "constant e (labels or type ids, 'wall')");
+        "constant e (labels or type ids, 'wall'); friction = Coulomb mu of every pair (0: "
+        "frictionless; above 0 the fragments add Mindlin's tangential stiffness 8 G* a)");
 }
 
 }  // namespace corlab::python

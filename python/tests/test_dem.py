@@ -157,3 +157,19 @@ def test_export_labels_pairs_and_time_step():
     with pytest.raises(ValueError, match="glass/glass"):
         corlab.dem.export([("glass=E=63e9,nu=0.22,rho=2500", 0.002)],
                           wall="copper=E=120e9,nu=0.34,rho=8900,sy=200e6", model="corlab2026")
+
+
+def test_export_friction_adds_mindlin():
+    out = corlab.dem.export([("alumina=E=380e9,nu=0.23,rho=4000", 0.0025)],
+                            wall="glass=E=70e9,nu=0.25,rho=2500", wall_only=True,
+                            pairs={"alumina/wall": 1.0}, friction=0.092)
+    pair = json.loads(out["json"])["pairs"][0]
+    assert pair["friction"] == 0.092
+    # 1/G* = (2 - nu1)/G1 + (2 - nu2)/G2, G = E/(2 (1 + nu)); k_t = 8 G* a
+    g = 1.0 / (1.77 * 2.46 / 380e9 + 1.75 * 2.5 / 70e9)
+    assert pair["mindlin_kt_per_contact_radius_Pa"] == pytest.approx(8.0 * g, rel=1e-12)
+    assert "tangential mindlin_rescale %.10g " % (8.0 * g) in out["lammps"]
+    assert "tangential history" in out["liggghts"]
+    with pytest.raises(ValueError, match="friction"):
+        corlab.dem.export([("steel_ma2023", 0.005)], wall="steel_ma2023", restitution=0.5,
+                          friction=-1.0)

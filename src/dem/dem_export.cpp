@@ -12,6 +12,7 @@
 #include "corlab/dem/contact_ode.hpp"
 #include "corlab/dem/hysteresis_chi.hpp"
 #include "corlab/dem/lammps_mapping.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/first_yield.hpp"
@@ -62,6 +63,7 @@ void validate_spec(const ExportSpec& spec) {
                   "for every pair)");
   }
   if (spec.restitution) require_open_range("restitution", *spec.restitution, 0.0, 1.0);
+  validate_friction(spec.friction);
   require_positive("v_min", spec.v_min, "[m/s]");
   if (!(spec.v_max > spec.v_min)) throw_invalid("v_max", spec.v_max, "> v_min");
   if (spec.fit_points < 2 || spec.fit_points > 200)
@@ -260,6 +262,8 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
   }
   c.effective_modulus = corlab::effective_modulus(ti.material, *other);
   c.hertz_stiffness = hertz_stiffness(c.effective_modulus, c.effective_radius);
+  c.shear_modulus = mindlin_shear_modulus(ti.material, *other);
+  c.friction = spec.friction;
   c.contact_time_fast = hertz_contact_time(c.hertz_stiffness, c.effective_mass, spec.v_max);
   c.contact_time_slow = hertz_contact_time(c.hertz_stiffness, c.effective_mass, spec.v_min);
   c.constant = pair_override(spec, i, j);

@@ -7,6 +7,7 @@
 #include "corlab/dem/contact_ode.hpp"
 #include "corlab/dem/dem_export.hpp"
 #include "corlab/dem/hysteresis_chi.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "corlab/version.hpp"
 #include "dem/detail/export_text.hpp"
 
@@ -111,6 +112,11 @@ std::string write_json(const ExportSpec& spec,
                      {"effective_mass_kg", p.effective_mass},
                      {"effective_density_kg_per_m3", p.effective_density},
                      {"hertz_stiffness_N_per_m1.5", p.hertz_stiffness},
+                     {"friction", p.friction},
+                     {"mindlin_shear_modulus_Pa", p.shear_modulus},
+                     {"mindlin_kt_per_contact_radius_Pa", mindlin_coefficient(p.shear_modulus)},
+                     {"tangential_damping_ratio_x_gamma",
+                      tangential_damping_ratio(p.shear_modulus, p.effective_modulus)},
                      {"contact_time_at_v_max_s", p.contact_time_fast},
                      {"contact_time_at_v_min_s", p.contact_time_slow}};
     j["delivered"] = {{"lammps", delivery_json(lammps_delivery(spec, p, true))},

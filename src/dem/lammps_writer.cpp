@@ -6,6 +6,7 @@
 #include "corlab/dem/dem_export.hpp"
 #include "corlab/dem/hysteresis_chi.hpp"
 #include "corlab/dem/lammps_mapping.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "dem/detail/export_text.hpp"
 
 namespace corlab::dem {
@@ -31,21 +32,42 @@ CodeLaw law_of(Route r) {
   }
 }
 
+// "tangential ..." of a pair with G* [Pa], E* [Pa] and mu: frictionless, or Mindlin's k_t = 8 G*
+// [Pa] (F_t = k_t a xi), x_gamma = sqrt(4 G*/E*) [-] (the normal damping ratio) and mu [-].
+std::string tangential(double shear_modulus, double effective_modulus, double friction) {
+  if (friction <= 0.0) return "tangential linear_nohistory 0.0 0.0";
+  return fmt::format("tangential mindlin_rescale {:.10g} {:.6g} {:.6g}",
+                     mindlin_coefficient(shear_modulus),
+                     tangential_damping_ratio(shear_modulus, effective_modulus), friction);
+}
+
 // "hertz KN DAMP tangential ... damping MODEL" of one pair (pair_coeff and fix wall/gran).
 std::string normal_model(const PairCalibration& p, Route r) {
   const double kn = 4.0 / 3.0 * p.effective_modulus;
+  const std::string t = tangential(p.shear_modulus, p.effective_modulus, p.friction);
   std::string damping;
   const double e = r == Route::tsuji ? p.constant.value_or(1.0) : p.best_constant->parameter;
   if (r == Route::hook || (r != Route::viscoelastic && e >= 1.0)) {
-    damping = "0.0 tangential linear_nohistory 0.0 0.0 damping velocity";  // elastic Hertz
+    damping = fmt::format("0.0 {} damping velocity", t);  // elastic Hertz
   } else if (r == Route::viscoelastic) {
-    damping = fmt::format("{:.10g} tangential linear_nohistory 0.0 0.0 damping viscoelastic",
-                          p.lammps_viscoelastic_eta());
+    damping = fmt::format("{:.10g} {} damping viscoelastic", p.lammps_viscoelastic_eta(), t);
   } else {
     const double e_in = r == Route::tsuji ? p.lammps_tsuji_input : lammps_tsuji_input(e);
-    damping = fmt::format("{:.10g} tangential linear_nohistory 0.0 0.0 damping tsuji", e_in);
+    damping = fmt::format("{:.10g} {} damping tsuji", e_in, t);
   }
   return fmt::format("hertz {:.10g} {}", kn, damping);
+}
+
+// The header's paragraph on the tangential part.
+std::string tangential_comment(const ExportSpec& spec) {
+  if (spec.friction <= 0.0) return "# Tangential: frictionless (corlab dem --friction MU).\n";
+  return fmt::format(
+      "# Tangential (--friction {:.6g}): `mindlin_rescale k_t x_gamma mu`, Mindlin's no-slip\n"
+      "# stiffness k_t a with k_t = 8 G* [Pa], 1/G* = (2-nu_1)/G_1 + (2-nu_2)/G_2 (what LAMMPS's\n"
+      "# own k_t = NULL gives with hertz/material), the displacement rescaled as a shrinks\n"
+      "# (Thornton et al. 2013), Coulomb mu; x_gamma = sqrt(4 G*/E*): the tangential dashpot\n"
+      "# has the normal one's damping ratio (none where the normal part is elastic Hertz).\n",
+      spec.friction);
 }
 
 std::string route_comment(const ExportSpec& spec, const PairCalibration& p, Route r) {
@@ -212,7 +234,9 @@ std::string write_lammps(const ExportSpec& spec,
       "after\n"
       "# the atoms exist. Normal model `hertz` with kn = 4/3 E* [Pa]: F = kn sqrt(R* delta) delta\n"
       "# (exact Hertz; `hertz/material` is avoided: this LAMMPS's fix wall/gran uses about\n"
-      "# E/(2(1-nu)) for the wall). Tangential: frictionless (edit as needed).\n"
+      "# E/(2(1-nu)) for the wall).\n";
+  out += tangential_comment(spec);
+  out +=
       "# Constant e: `damping tsuji` maps e_in to alpha with a polynomial that is not exact for\n"
       "# this law (asked 0.3 it delivers 0.440), so e_in is pre-compensated: alpha(e_in) = the\n"
       "# exact alpha(e) (corlab ODE); e = 1: no damping.\n";
@@ -248,10 +272,10 @@ std::string write_lammps(const ExportSpec& spec,
       for (int j = i; j <= n; ++j) {
         const Material& a = spec.types[static_cast<std::size_t>(i - 1)].material;
         const Material& b = spec.types[static_cast<std::size_t>(j - 1)].material;
-        out += fmt::format(
-            "pair_coeff {} {} hertz {:.10g} 0.0 tangential linear_nohistory 0.0 0.0 damping "
-            "velocity\n",
-            i, j, 4.0 / 3.0 * effective_modulus(a, b));
+        const double e_star = effective_modulus(a, b);
+        out += fmt::format("pair_coeff {} {} hertz {:.10g} 0.0 {} damping velocity\n", i, j,
+                           4.0 / 3.0 * e_star,
+                           tangential(mindlin_shear_modulus(a, b), e_star, spec.friction));
       }
     }
   }

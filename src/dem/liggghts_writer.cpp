@@ -58,6 +58,17 @@ std::string model_comment(const std::vector<PairCalibration>& pairs, bool tn) {
   return out;
 }
 
+// The header's paragraph on the tangential part.
+std::string tangential_comment(const ExportSpec& spec) {
+  if (spec.friction <= 0.0) return "# Tangential: frictionless (corlab dem --friction MU).\n";
+  return fmt::format(
+      "# Tangential (--friction {:.6g}): `tangential history`, LIGGGHTS's own Mindlin stiffness\n"
+      "# k_t = 8 G* sqrt(R* delta) from youngsModulus and poissonsRatio (1/G* = 2(2-nu_1)\n"
+      "# (1+nu_1)/E_1 + ...), Coulomb coefficientFriction, and its tangential dashpot (the\n"
+      "# normal damping ratio with k_t; tangential_damping on).\n",
+      spec.friction);
+}
+
 }  // namespace
 
 Delivery liggghts_delivery(const std::vector<PairCalibration>& pairs, const PairCalibration& pair) {
@@ -90,6 +101,7 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
   out += spec.wall ? fmt::format(" with N = {} (the wall's material is type {}).\n", n, wall_type)
                    : fmt::format(" with N = {}.\n", n);
   out += model_comment(pairs, tn);
+  out += tangential_comment(spec);
   out +=
       "# Type pairs, the target and what this fragment delivers (max |de| over the fit speeds):\n";
   for (const auto& p : pairs) {
@@ -116,7 +128,7 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
   }
   out += matrix + "\n";
   out += fmt::format("fix m4 all property/global coefficientFriction peratomtypepair {} {}\n", n,
-                     fmt::join(std::vector<std::string>(n * n, "0.0"), " "));
+                     fmt::join(std::vector<double>(n * n, spec.friction), " "));
   std::string model = "hertz";
   if (tn) {
     model = "thornton_ning";
@@ -136,15 +148,15 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
       std::min_element(spec.types.begin(), spec.types.end(), [](const auto& a, const auto& b) {
         return a.radius < b.radius;
       })->radius;
+  const std::string_view tangential = spec.friction > 0.0 ? "history" : "no_history";
   out += fmt::format(
       "# The pair cutoff follows the radii; skin 0.2 r_min.\nneighbor {:.6g} bin\nneigh_modify "
-      "delay 0\npair_style gran model {} tangential no_history\npair_coeff * *\n",
-      0.2 * r_min, model);
+      "delay 0\npair_style gran model {} tangential {}\npair_coeff * *\n",
+      0.2 * r_min, model, tangential);
   if (spec.wall) {
     out += fmt::format(
-        "fix corlab_wall all wall/gran model {} tangential no_history primitive type {} zplane "
-        "0.0\n",
-        model, wall_type);
+        "fix corlab_wall all wall/gran model {} tangential {} primitive type {} zplane 0.0\n",
+        model, tangential, wall_type);
   }
   const auto law = [tn](const PairCalibration&) {
     return tn ? CodeLaw::liggghts_thornton_ning : CodeLaw::liggghts_hertz;

@@ -16,14 +16,28 @@ std::string material_name(int type) {
   return type == 0 ? std::string("corlab_wall_mat") : fmt::format("corlab_mat{}", type);
 }
 
+// frictionAngle = atan(mu) [rad] (YADE takes the smaller of the two materials').
 std::string material_line(const std::string& var,
                           int type,
                           const Material& m,
-                          const std::string& label) {
+                          const std::string& label,
+                          double friction) {
   return fmt::format(
       "{0} = O.materials.append(FrictMat(young={1:.10g}, poisson={2:.6g}, density={3:.8g}, "
-      "frictionAngle=0.0, label='{4}'))\ncorlab_type_of_material[{0}] = {5}\n",
-      var, m.youngs_modulus, m.poisson_ratio, m.density, label, type);
+      "frictionAngle={6:.17g}, label='{4}'))\ncorlab_type_of_material[{0}] = {5}\n",
+      var, m.youngs_modulus, m.poisson_ratio, m.density, label, type, std::atan(friction));
+}
+
+// The header's paragraph on the tangential part.
+std::string tangential_comment(const ExportSpec& spec) {
+  if (spec.friction <= 0.0) return "# Tangential: frictionless (corlab dem --friction MU).\n";
+  return fmt::format(
+      "# Tangential (--friction {:.6g}): frictionAngle = atan(mu); MindlinPhys's shear stiffness\n"
+      "# k_s = kso sqrt(u_N), kso = 8 G* sqrt(R) (Mindlin's; 1/G* = (2-nu_1)/G_1 + (2-nu_2)/G_2),\n"
+      "# and es = en (the tangential dashpot at the normal damping ratio). YADE's Box and Wall\n"
+      "# contacts take R = r/2, not r, in kn and ks alike: their ratio is Mindlin's, the contact\n"
+      "# 2^(1/5) = 1.15 times longer than Hertz's (measured; docs/theory/dem_contact_laws.md).\n",
+      spec.friction);
 }
 
 // The end of the e(v) tables, then the hook (Python): the normal and gap of a forming contact and
@@ -134,6 +148,7 @@ std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration
       "# (0.96 -> 0.9568, 0.99 -> 0.9790, 0.999 -> 0.9841; en = 1: elastic): the stated max |de|\n"
       "# includes that. Use corlab_ip2 in the InteractionLoop\n"
       "# with Law2_ScGeom_MindlinPhys_Mindlin(); en is per material pair (MatchMaker).\n";
+  out += tangential_comment(spec);
   const bool hook =
       std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
   out += "# Type pairs and the target:\n";
@@ -145,9 +160,12 @@ std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration
   out += "from yade import *\nimport numpy\ncorlab_type_of_material = {}\n";
   for (std::size_t i = 0; i < spec.types.size(); ++i) {
     const int id = static_cast<int>(i) + 1;
-    out += material_line(material_name(id), id, spec.types[i].material, type_label(spec, id));
+    out += material_line(material_name(id), id, spec.types[i].material, type_label(spec, id),
+                         spec.friction);
   }
-  if (spec.wall) out += material_line(material_name(0), 0, *spec.wall, wall_label(spec));
+  if (spec.wall) {
+    out += material_line(material_name(0), 0, *spec.wall, wall_label(spec), spec.friction);
+  }
   std::vector<std::string> matches;
   for (int i = 1; spec.wall_only && i <= static_cast<int>(spec.types.size()); ++i) {
     for (int j = i; j <= static_cast<int>(spec.types.size()); ++j) {  // not calibrated: elastic

@@ -68,6 +68,9 @@ struct ExportSpec {
   std::string wall_label;                 ///< the wall's name in the exports; empty: material's
   std::vector<PairRestitution> pair_restitution;  ///< constant e of single pairs
   std::vector<PairTable> pair_tables;             ///< e(v) tables of single pairs
+  /// Coulomb friction coefficient mu [-] of every pair (0: frictionless, the normal part only);
+  /// above 0 each fragment adds Mindlin's tangential stiffness (tangential.hpp).
+  double friction = 0.0;
 };
 
 /// The label of type `id` (1-based) and of the wall, as written in the exports.
@@ -85,6 +88,8 @@ struct PairCalibration {
   /// pair's (wall: the particle's; two identical spheres: 4 rho); a model's e(v) is taken at it.
   double effective_density = 0.0;
   double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
+  double shear_modulus = 0.0;      ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
+  double friction = 0.0;           ///< Coulomb mu [-] (ExportSpec::friction)
   std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
   std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
   RestitutionCurve curve;          ///< target e(v) [m/s] -> [-]
