@@ -49,18 +49,44 @@ inline double hex8_volume_derivative12(const double* y, const double* z, const i
          y4 * ((z3 + z7) - (z1 + z5)) + y5 * (z4 - z1) + y7 * (z3 - z4);
 }
 
+/// All eight 12 dV/dx_I [m^2] from the other two coordinate sets (y, z) into d[8] (with (z, x):
+/// 12 dV/dy, with (x, y): 12 dV/dz): hex8_volume_derivative12 of every node, with the
+/// differences the eight share computed once (found by sympy's common-subexpression elimination
+/// of the eight: 63 operations instead of 184; a test compares the two).
+inline void hex8_volume_derivatives12(const double* y, const double* z, double* d) {
+  const double z14 = z[1] - z[4], z13 = z[1] - z[3], z34 = z[3] - z[4], z25 = z[2] - z[5];
+  const double z57 = z[5] - z[7], z27 = z[2] - z[7], z05 = z[0] - z[5], z02 = z[0] - z[2];
+  const double z46 = z[4] - z[6], z36 = z[3] - z[6], z16 = z[1] - z[6], z07 = z[0] - z[7];
+  const double a = z34 + z25;
+  const double b = z13 + z57;
+  const double c = z14 + z27;
+  const double e = z02 + z46;
+  const double f = z05 + z36;
+  const double g = z16 + z07;
+  d[0] = -z14 * y[5] + c * y[3] + z13 * y[2] + z34 * y[7] - a * y[1] - b * y[4];
+  d[1] = z05 * y[4] - z02 * y[3] + e * y[5] - f * y[2] - z25 * y[6] + a * y[0];
+  d[2] = -z36 * y[7] + f * y[1] + z16 * y[5] - z13 * y[0] - g * y[3] + b * y[6];
+  d[3] = z27 * y[6] - c * y[0] + z02 * y[1] - e * y[7] - z07 * y[4] + g * y[2];
+  d[4] = -z05 * y[1] + f * y[7] + z07 * y[3] - g * y[5] - z57 * y[6] + b * y[0];
+  d[5] = z14 * y[0] - c * y[6] + z46 * y[7] - e * y[1] - z16 * y[2] + g * y[4];
+  d[6] = -z27 * y[3] + c * y[5] + z25 * y[1] - a * y[7] + z57 * y[4] - b * y[2];
+  d[7] = -z46 * y[5] + e * y[3] + z36 * y[2] - f * y[4] - z34 * y[0] + a * y[6];
+}
+
 /// Geometry of the element with node coordinates x[8], y[8], z[8] [m]. A tangled element has
 /// V <= 0 (the caller checks: its gradients are then meaningless).
 inline Hex8Geometry hex8_geometry(const double* x, const double* y, const double* z) {
   Hex8Geometry g;
   constexpr double kTwelfth = 1.0 / 12.0;
+  hex8_volume_derivatives12(y, z, g.bx);
+  hex8_volume_derivatives12(z, x, g.by);
+  hex8_volume_derivatives12(x, y, g.bz);
   double volume = 0.0;
 #pragma GCC unroll 8
   for (int i = 0; i < 8; ++i) {
-    const int* p = kHex8Rotation[i];
-    g.bx[i] = hex8_volume_derivative12(y, z, p) * kTwelfth;
-    g.by[i] = hex8_volume_derivative12(z, x, p) * kTwelfth;
-    g.bz[i] = hex8_volume_derivative12(x, y, p) * kTwelfth;
+    g.bx[i] *= kTwelfth;
+    g.by[i] *= kTwelfth;
+    g.bz[i] *= kTwelfth;
     volume += x[i] * g.bx[i];
   }
   g.volume = volume;

@@ -118,6 +118,19 @@ TEST(Hex8, ClosedFormMatchesGaussQuadratureOnDistortedElements) {
   }
 }
 
+// The shared-difference form of the eight volume derivatives is the rotated node-0 formula.
+TEST(Hex8, SharedDifferenceDerivativesEqualTheRotatedFormula) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const Hex e = distorted_cube(1e-3, 0.3, seed);
+    double d[8];
+    hex8_volume_derivatives12(e.y, e.z, d);
+    for (int i = 0; i < 8; ++i) {
+      const double reference = hex8_volume_derivative12(e.y, e.z, kHex8Rotation[i]);
+      EXPECT_NEAR(d[i], reference, 1e-15 * 1e-6) << seed << " node " << i;  // [m^2]
+    }
+  }
+}
+
 TEST(Hex8, LinearVelocityFieldsAreReproducedExactly) {
   const double a[3][3] = {{0.3, -1.2, 0.7}, {2.0, -0.4, 0.1}, {-0.6, 0.9, 0.5}};  // [1/s]
   for (unsigned seed = 1; seed <= 5; ++seed) {
