@@ -94,7 +94,9 @@ def damage_scale(i, k, form):
     f = {"star": 1.0, "first": i["rho_w"] / i["rho_star"],
          "mix": (i["rho_w"] / i["rho_star"]) ** k.get("dens_mix", 1.0),
          "ab": (i["rho_w"] / i["rho_star"]) ** k.get("da", 1.0)
-         * (i["rho_o"] / i["rho_star"]) ** k.get("db", 0.0)}[dens]
+         * (i["rho_o"] / i["rho_star"]) ** k.get("db", 0.0),
+         "sum": (i["rho_w"] + k.get("beta", 0.0) * i["rho_star"])
+         / ((1 + k.get("beta", 0.0)) * i["rho_star"])}[dens]
     if form.get("curvature"):
         f = f * (1 + i["r"]) ** -k["curv"]
     if form.get("poisson_damage"):
@@ -137,6 +139,8 @@ CANDIDATES = (
      (("dens_mix", 0.5, -1.0, 2.0),)),
     ("B + damage density rho_w^a rho_o^b / rho*^(a+b-1)", {"density": "ab", "flatten_pairs": True},
      (("da", 1.0, -2.0, 3.0), ("db", 0.0, -2.0, 3.0))),
+    ("B + damage density (rho_w + beta rho*) / (1 + beta)",
+     {"density": "sum", "flatten_pairs": True}, (("beta", 0.1, 0.0, 10.0),)),
     ("B + damage x (1+R1/R2)^-m", {"density": "first", "flatten_pairs": True, "curvature": True},
      (("curv", 1.0, -2.0, 8.0),)),
     ("B + hardening h (2 l)^p", {"density": "first", "flatten_pairs": True,
