@@ -4,6 +4,14 @@ restitution dataset, its confidence and prediction intervals, and its held-out s
     /usr/bin/python3 -m corlab.model_fit data/fe_restitution/dataset.csv \\
         --out data/fe_restitution/model_fit.json
 
+The pair model (`corlab2026p`, corlab2026p.hpp: the same kernel and coefficients' names over
+particle pairs) is fitted to the union of the flat and pair datasets, with issue 26's corners
+held out (E_sphere / E_other > 10, rho_sphere / rho_other > 5):
+
+    /usr/bin/python3 -m corlab.model_fit data/fe_restitution/dataset.csv \\
+        data/fe_restitution_pairs/dataset.csv --model corlab2026p \\
+        --out data/fe_restitution_pairs/model_fit.json
+
 Held out of the fit (never used in it): a random 20 % of the rows (those whose case id, a hash,
 is 0 mod 5) and a corner, the largest modulus ratios (E_sphere / E_substrate > 4). The
 coefficients minimise the sum of squared relative errors (e_model - e_FE) / e_FE over the rest
@@ -41,16 +49,38 @@ NAMES = tuple(p[0] for p in PARAMETERS)
 
 #: The held-out corner: modulus ratios above this [-].
 CORNER_MODULUS_RATIO = 4.0
+#: corlab2026p's held-out corners (issue 26): (name, column, rows above this value [-]).
+PAIR_CORNERS = (("corner holdout modulus_ratio > 10", "modulus_ratio", 10.0),
+                ("corner holdout density_ratio > 5", "density_ratio", 5.0))
+MODELS = ("corlab2026", "corlab2026p")
 #: Bootstrap resamples for the coefficients' confidence intervals.
 BOOTSTRAP = 200
 
 
-def model_inputs(table):
+def model_inputs(table, model="corlab2026"):
     """The model's dimensionless inputs of every row (dict of arrays, the keys of
-    _core.corlab2026_inputs)."""
-    rows = [_core.corlab2026_inputs(*dataset.material_specs(table, i), float(v))
-            for i, v in enumerate(table["velocity"])]
+    _core.corlab2026_inputs); corlab2026p reads the rows' radius_ratio (0, a flat, if absent)."""
+    if model == "corlab2026p":
+        ratios = table.get("radius_ratio", np.zeros(len(table["velocity"])))
+        rows = [_core.corlab2026p_inputs(*dataset.material_specs(table, i), float(v),
+                                         float(ratios[i]))
+                for i, v in enumerate(table["velocity"])]
+    else:
+        rows = [_core.corlab2026_inputs(*dataset.material_specs(table, i), float(v))
+                for i, v in enumerate(table["velocity"])]
     return {k: np.array([row[k] for row in rows]) for k in rows[0]}
+
+
+def read_union(paths):
+    """The included rows of several dataset.csv files, one after the other: the columns they all
+    have, and radius_ratio (0 for a file without it: the flat dataset)."""
+    tables = [dataset.read(p) for p in paths]
+    for t in tables:
+        if "radius_ratio" not in t:
+            t["radius_ratio"] = np.zeros(len(t["e"]))
+    keys = [k for k in tables[0] if all(k in t for t in tables)]
+    return {k: (np.concatenate([t[k] for t in tables]) if isinstance(tables[0][k], np.ndarray)
+                else [x for t in tables for x in t[k]]) for k in keys}
 
 
 def predict(inputs, coefficients, mask=None):
@@ -60,10 +90,17 @@ def predict(inputs, coefficients, mask=None):
     return _core.corlab2026_restitution(inputs, coefficients)
 
 
-def split(table):
-    """Boolean masks (train, random held-out, corner held-out)."""
+def corners(table, model="corlab2026"):
+    """{score name: boolean mask} of the model's held-out corners."""
+    if model == "corlab2026p":
+        return {name: table[column] > bound for name, column, bound in PAIR_CORNERS}
+    return {"corner holdout": table["modulus_ratio"] > CORNER_MODULUS_RATIO}
+
+
+def split(table, model="corlab2026"):
+    """Boolean masks (train, random held-out, corner held-out: any of the model's corners)."""
     random_out = np.array([int(cid[1:], 16) % 5 == 0 for cid in table["case_id"]])
-    corner = table["modulus_ratio"] > CORNER_MODULUS_RATIO
+    corner = np.logical_or.reduce(list(corners(table, model).values()))
     return ~random_out & ~corner, random_out & ~corner, corner
 
 
@@ -109,22 +146,29 @@ def bootstrap_intervals(table, inputs, mask, resamples=BOOTSTRAP, seed=2026, fix
             for j, n in enumerate(NAMES)}
 
 
-def run(path, resamples=BOOTSTRAP, fixed=None):
-    """The whole fit of dataset.csv at `path`: coefficients, intervals, held-out scores."""
-    table = dataset.read(path)
-    inputs = model_inputs(table)
-    train, random_out, corner = split(table)
+def run(path, resamples=BOOTSTRAP, fixed=None, model="corlab2026"):
+    """The whole fit of dataset.csv at `path` (a list of paths: their union): coefficients,
+    intervals, held-out scores."""
+    paths = path if isinstance(path, (list, tuple)) else [path]
+    table = read_union(paths) if len(paths) > 1 else dataset.read(paths[0])
+    inputs = model_inputs(table, model)
+    train, random_out, corner = split(table, model)
     coefficients = fit(table, inputs, train, fixed)
     e_model = predict(inputs, coefficients)
     rel = _core.relative_errors(e_model, table["e"])
+    corner_scores = {}
+    if model == "corlab2026p":
+        corner_scores = {name: dataset.score(table, e_model, mask)
+                         for name, mask in corners(table, model).items()}
     return {
-        "model": "corlab2026",
-        "dataset": str(path),
+        "model": model,
+        "dataset": str(paths[0]) if len(paths) == 1 else [str(p) for p in paths],
         "rows": int(table["e"].size),
         "rows_train": int(train.sum()),
         "rows_random_holdout": int(random_out.sum()),
         "rows_corner_holdout": int(corner.sum()),
-        "corner": f"modulus_ratio > {CORNER_MODULUS_RATIO}",
+        "corner": (f"modulus_ratio > {CORNER_MODULUS_RATIO}" if model == "corlab2026" else
+                   " or ".join(f"{c} > {b}" for _, c, b in PAIR_CORNERS)),
         "coefficients": coefficients,
         "fixed": dict(fixed or {}),
         "confidence_95": bootstrap_intervals(table, inputs, train, resamples, fixed=fixed),
@@ -133,6 +177,7 @@ def run(path, resamples=BOOTSTRAP, fixed=None):
         "scores": {"train": dataset.score(table, e_model, train),
                    "random holdout": dataset.score(table, e_model, random_out),
                    "corner holdout": dataset.score(table, e_model, corner),
+                   **corner_scores,
                    "all": dataset.score(table, e_model)},
     }
 
@@ -164,18 +209,21 @@ def parse_fixed(items, parser):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("dataset", help="dataset.csv (corlab dataset export)")
+    parser.add_argument("dataset", nargs="+",
+                        help="dataset.csv (corlab dataset export); several: their union")
+    parser.add_argument("--model", choices=MODELS, default="corlab2026",
+                        help="corlab2026 (flat) or corlab2026p (pairs: fit the union)")
     parser.add_argument("--out", required=True, help="model_fit.json to write")
     parser.add_argument("--bootstrap", type=int, default=BOOTSTRAP, help="resamples")
     parser.add_argument("--fix", action="append", default=[], metavar="NAME=VALUE",
                         help="pin a coefficient (an ablation; repeatable)")
     args = parser.parse_args(argv)
-    result = run(args.dataset, args.bootstrap, parse_fixed(args.fix, parser))
+    result = run(args.dataset, args.bootstrap, parse_fixed(args.fix, parser), args.model)
     with open(args.out, "w") as f:
         json.dump(_finite(result), f, indent=2, sort_keys=True)
         f.write("\n")
     s = result["scores"]
-    print(f"corlab2026: {result['rows_train']} rows fitted; RMS / worst relative error: train "
+    print(f"{args.model}: {result['rows_train']} rows fitted; RMS / worst relative error: train "
           f"{s['train']['all']['rms']:.4f} / {s['train']['all']['worst']:+.4f}, random holdout "
           f"{s['random holdout']['all']['rms']:.4f} / {s['random holdout']['all']['worst']:+.4f},"
           f" corner {s['corner holdout']['all']['rms']:.4f} -> {args.out}")

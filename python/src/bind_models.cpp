@@ -12,6 +12,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/corlab2026.hpp"
+#include "corlab/restitution/corlab2026p.hpp"
 #include "corlab/restitution/impact_pair.hpp"
 #include "corlab/restitution/oblique_impact.hpp"
 #include "corlab/restitution/registry.hpp"
@@ -114,20 +115,47 @@ py::array_t<double> corlab2026_over(const py::dict& inputs, const py::dict& coef
   return out;
 }
 
+// The inputs struct as a dict (names as in corlab2026.hpp; other_is_sphere 1 or 0).
+py::dict inputs_dict(const restitution::Corlab2026Inputs& in) {
+  py::dict d;
+  for (const auto& [name, member] : restitution::kCorlab2026Inputs) {
+    d[py::str(std::string(name))] = in.*member;
+  }
+  d["other_is_sphere"] = in.other_is_sphere ? 1.0 : 0.0;
+  return d;
+}
+
+// corlab2026p (particle pairs, corlab2026p.hpp): its inputs and its fitted coefficients; the
+// kernel is corlab2026_restitution.
+void bind_corlab2026p(py::module_& m) {
+  m.def(
+      "corlab2026p_inputs",
+      [](const MaterialArg& sphere, const MaterialArg& other, double v, double radius_ratio) {
+        restitution::require_velocity(v);
+        return inputs_dict(restitution::corlab2026_inputs(
+            restitution::corlab2026p_pair(to_material(sphere, "sphere"),
+                                          to_material(other, "other"), radius_ratio),
+            v));
+      },
+      py::arg("sphere"), py::arg("other"), py::arg("v"), py::arg("radius_ratio") = 0.0,
+      "The dimensionless inputs of corlab's pair model (corlab2026p) for a sphere hitting "
+      "`other` at v [m/s]: a flat for radius_ratio = R1/R2 = 0, else a free sphere at rest (rho* "
+      "of the pair, the damage number on the density of the body that yields first). Same keys "
+      "as corlab2026_inputs.");
+  m.def(
+      "corlab2026p_fitted", [] { return coefficients_dict(restitution::corlab2026p_fitted()); },
+      "The coefficients of corlab's pair model, fitted to the flat and pair datasets "
+      "(data/fe_restitution_pairs/model_fit.json).");
+}
+
 // corlab's model: its inputs, its kernel over arrays and its shipped coefficients.
 void bind_corlab2026(py::module_& m) {
   m.def(
       "corlab2026_inputs",
       [](const MaterialArg& sphere, const MaterialArg& substrate, double v) {
         restitution::require_velocity(v);
-        const auto in = restitution::corlab2026_inputs(to_material(sphere, "sphere"),
-                                                       to_material(substrate, "substrate"), v);
-        py::dict d;
-        for (const auto& [name, member] : restitution::kCorlab2026Inputs) {
-          d[py::str(std::string(name))] = in.*member;
-        }
-        d["other_is_sphere"] = in.other_is_sphere ? 1.0 : 0.0;
-        return d;
+        return inputs_dict(restitution::corlab2026_inputs(to_material(sphere, "sphere"),
+                                                          to_material(substrate, "substrate"), v));
       },
       py::arg("sphere"), py::arg("substrate"), py::arg("v"),
       "The dimensionless inputs of corlab's model (corlab2026) for one impact at v [m/s]: "
@@ -176,6 +204,7 @@ void bind_oblique_rebound(py::module_& m) {
 
 void bind_models(py::module_& m) {
   bind_corlab2026(m);
+  bind_corlab2026p(m);
   m.def(
       "models",
       [] {

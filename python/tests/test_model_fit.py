@@ -105,3 +105,52 @@ def test_compliance_share_is_the_spheres_part_of_one_over_e_star():
     first = corlab.corlab2026_inputs("E=70e9,nu=0.2,rho=2500,sy=1e8",
                                      "E=210e9,nu=0.3,rho=7850,sy=5e8", 1.0)
     assert first["poisson_first"] == 0.2 and first["other_is_sphere"] == 0.0
+
+
+PAIRS = ROOT / "data" / "fe_restitution_pairs"
+
+
+def test_refitting_the_union_gives_the_pair_models_coefficients():
+    shipped = json.loads((PAIRS / "model_fit.json").read_text())
+    assert shipped["model"] == "corlab2026p"
+    table = model_fit.read_union([DATA / "dataset.csv", PAIRS / "dataset.csv"])
+    inputs = model_fit.model_inputs(table, "corlab2026p")
+    train, random_out, corner = model_fit.split(table, "corlab2026p")
+    assert train.sum() == shipped["rows_train"]
+    assert random_out.sum() == shipped["rows_random_holdout"]
+    assert corner.sum() == shipped["rows_corner_holdout"]
+    refit = model_fit.fit(table, inputs, train)
+    for name in model_fit.NAMES:
+        assert refit[name] == pytest.approx(shipped["coefficients"][name], rel=1e-6), name
+    assert corlab.corlab2026p_fitted() == shipped["coefficients"]
+
+
+def test_union_and_corners_of_the_pair_model():
+    table = model_fit.read_union([DATA / "dataset.csv", PAIRS / "dataset.csv"])
+    flat = dataset.read(DATA / "dataset.csv")
+    n = len(flat["e"])
+    assert list(table["case_id"][:n]) == list(flat["case_id"])
+    assert not table["radius_ratio"][:n].any() and table["radius_ratio"][n:].any()
+    corners = model_fit.corners(table, "corlab2026p")
+    assert sorted(corners) == ["corner holdout density_ratio > 5",
+                               "corner holdout modulus_ratio > 10"]
+    assert corners["corner holdout modulus_ratio > 10"].sum() == np.sum(
+        table["modulus_ratio"] > 10)
+    # The flat model's split is unchanged.
+    assert model_fit.corners(flat).keys() == {"corner holdout"}
+
+
+def test_pair_inputs_reduce_to_the_flat_models_for_equal_densities():
+    sphere, flat = "E=300e9,nu=0.25,rho=7850,sy=900e6,H=3e9", "E=210e9,nu=0.3,rho=7850,sy=5e8"
+    assert corlab.corlab2026p_inputs(sphere, flat, 5.0) == corlab.corlab2026_inputs(
+        sphere, flat, 5.0)
+    # A dense elastic sphere on a light flat: the damage number on the flat's density.
+    dense, light = "E=600e9,nu=0.24,rho=15000", "E=70e9,nu=0.33,rho=2700,sy=100e6"
+    ours = corlab.corlab2026p_inputs(dense, light, 20.0)
+    old = corlab.corlab2026_inputs(dense, light, 20.0)
+    assert ours["damage_at_yield"] == pytest.approx(old["damage_at_yield"] * 2700 / 15000,
+                                                    rel=1e-14)
+    second = corlab.corlab2026p_inputs(dense, light, 20.0, radius_ratio=0.5)
+    assert second["radius_ratio"] == 0.5
+    with pytest.raises(ValueError):
+        corlab.corlab2026p_inputs(dense, light, 20.0, radius_ratio=-1.0)

@@ -52,18 +52,27 @@ double poisson_scale(const Corlab2026Inputs& in) {
   return jackson_green_c(0.3) / jackson_green_c(in.poisson_first);
 }
 
-// The fully plastic cap of the body that yields first: Tabor's indentation hardness for a
-// substrate; for a sphere flattened against the substrate, Jackson & Green's hardness, which
-// falls as the flat grows (a/R from the first-yield contact radius growing like x^(2/5)). Never
-// below the first-yield pressure (phi = 1 at x = 1: e stays continuous for any input). poisson
-// is poisson_scale(in).
+// R*/R_w of the body that yields first, its part of the pair's curvature 1/R* = 1/R1 + 1/R2
+// (r = R1/R2): 1/(1 + r) for the sphere, r/(1 + r) for the other body (0 for a flat) [-].
+double curvature_share_first(const Corlab2026Inputs& in) {
+  const double r = in.radius_ratio;
+  return (in.other_is_sphere ? r : 1.0) / (1.0 + r);
+}
+
+// The fully plastic cap of the body that yields first: Tabor's indentation hardness for a flat;
+// for a curved body flattened by the other one, Jackson & Green's hardness, which falls as the
+// flat grows (a/R_w from the first-yield contact radius a_y/R* growing like x^(2/5), times
+// R*/R_w). Never below the first-yield pressure (phi = 1 at x = 1: e stays continuous for any
+// input). poisson is poisson_scale(in).
 double first_body_cap(const Corlab2026Inputs& in,
                       double x_first,
                       double poisson,
                       const Corlab2026Coefficients& k) {
   double cap = poisson * k.phi_max;
-  if (!in.other_is_sphere) {
-    const double a_over_r = k.flattening * in.contact_radius_at_yield * std::pow(x_first, 0.4);
+  const double share = curvature_share_first(in);
+  if (share > 0.0) {
+    const double a_over_r =
+        k.flattening * in.contact_radius_at_yield * share * std::pow(x_first, 0.4);
     cap *= jackson_green_hardness_ratio(a_over_r) / jackson_green_hardness_ratio(0.0);
   }
   return std::max(1.0, cap);

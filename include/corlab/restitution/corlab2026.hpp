@@ -19,8 +19,7 @@
 ///   phi(x, h, c, P) = min(1 + c ln x + A(h) (x^(2/5) - 1), P g(x, h, kappa))
 ///                                                               (mean pressure / at first yield)
 ///   n = C(0.3) / C(nu_w),  C(nu) = 1.295 exp(0.736 nu)         (p_y = C Y: c1, phi_max in Y)
-///   P_w = max(1, n phi_max J(s a_y/R x_w^(2/5))) if the sphere yields first,
-///         else max(1, n phi_max)
+///   P_w = max(1, n phi_max J(s (a_y/R*) (R*/R_w) x_w^(2/5)))    (R*/R_w = 0 for a flat: J = 1)
 ///   J(a/R) = 1 - exp(-0.82 (a/R)^(-0.7))                        (Jackson & Green 2005, over 2.84)
 ///   phi_w = phi(x_w, h_w, n c1, P_w),   x_o* = phi_w^(5/2) x_o / x
 ///   phi_o = phi(x_o*, h_o, c1, phi_max),   T(x, phi) = e_Thornton(phi^(5/2) / x) (1 for x <= 1)
@@ -32,8 +31,12 @@
 /// only lowers it; so each T decreases, and x_o* grows with phi_w. h = H / E* of a body, w the
 /// body that yields first, o the other (x_o = v / v_y,o; gamma = gamma_sphere or gamma_substrate
 /// after which body that is; x_o = 0 if it is elastic), D_y = rho_sphere v_y^2 / p_y the damage
-/// number at first yield (over g: on the flow stress), a_y/R = pi p_y / (2 E*) the contact radius
+/// number at first yield (over g: on the flow stress), a_y/R* = pi p_y / (2 E*) the contact radius
 /// at first yield and l = E* (1 - nu^2) / E a body's share of the compliance (l_w + l_o = 1).
+/// R*/R_w is the first body's share of the pair's curvature, from r = R1/R2 (radius_ratio): the
+/// sphere's 1/(1 + r), a second sphere's r/(1 + r), a flat's 0 (a flat is indented, not
+/// flattened). For a sphere on a flat (r = 0) this is the model as first fitted; pairs of spheres
+/// and unequal densities: corlab2026p.hpp.
 
 #include <array>
 #include <string_view>
@@ -88,12 +91,13 @@ struct Corlab2026Inputs {
   double compliance_share = 0.5;         ///< l_s = ((1 - nu_s^2) / E_s) E* of the sphere [-]
   double contact_radius_at_yield = 0.0;  ///< a_y / R = pi p_y / (2 E*) [-]
   double poisson_first = 0.3;            ///< nu of the body that yields first [-]
+  double radius_ratio = 0.0;             ///< r = R1/R2, the sphere's over the other's (0: flat) [-]
   bool other_is_sphere = false;          ///< the sphere yields second (else the substrate)
 };
 
 /// The real-valued inputs by name, in order (other_is_sphere aside): the one list that the
 /// Python binding's dicts and the fit read.
-inline constexpr std::array<std::pair<std::string_view, double Corlab2026Inputs::*>, 8>
+inline constexpr std::array<std::pair<std::string_view, double Corlab2026Inputs::*>, 9>
     kCorlab2026Inputs{{{"velocity_ratio", &Corlab2026Inputs::velocity_ratio},
                        {"velocity_ratio_other", &Corlab2026Inputs::velocity_ratio_other},
                        {"hardening_first", &Corlab2026Inputs::hardening_first},
@@ -101,7 +105,8 @@ inline constexpr std::array<std::pair<std::string_view, double Corlab2026Inputs:
                        {"damage_at_yield", &Corlab2026Inputs::damage_at_yield},
                        {"compliance_share", &Corlab2026Inputs::compliance_share},
                        {"contact_radius_at_yield", &Corlab2026Inputs::contact_radius_at_yield},
-                       {"poisson_first", &Corlab2026Inputs::poisson_first}}};
+                       {"poisson_first", &Corlab2026Inputs::poisson_first},
+                       {"radius_ratio", &Corlab2026Inputs::radius_ratio}}};
 
 /// What the model needs of a material pair, independent of the speed.
 struct Corlab2026Pair {

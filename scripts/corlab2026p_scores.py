@@ -1,0 +1,73 @@
+"""Scores of corlab's pair model (corlab2026p, fitted coefficients from
+data/fe_restitution_pairs/model_fit.json through the library) next to corlab2026 at the pair's
+rho* (its shipped coefficients, the sphere's density replaced by rho*), by subset: the flat
+dataset, the pair dataset's flats and second spheres, the paper's corner (Table 2, and by its
+density ratio), and issue 26's user case (a tungsten-carbide-like sphere on aluminium alloy at 20 m/s, FE e = 0.1486).
+Relative errors (e_model - e_FE) / e_FE: RMS / worst / bias in %.
+
+    PYTHONPATH=build/python /usr/bin/python3 scripts/corlab2026p_scores.py \\
+        data/fe_restitution_pairs/dataset.csv
+"""
+import argparse
+import pathlib
+
+import numpy as np
+
+import corlab
+from corlab import dataset, model_fit
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+USER_CASE = ("E=600e9,nu=0.24,rho=15000", "E=70e9,nu=0.33,rho=2700,sy=100e6,H=0", 20.0, 0.1486)
+
+
+def rho_star_inputs(table):
+    """corlab2026's inputs with the sphere's density replaced by the pair's rho*."""
+    rho = table.get("effective_density", table["sphere_rho"])
+    rows = []
+    for i, v in enumerate(table["velocity"]):
+        sphere, other = dataset.material_specs(table, i)
+        sphere = sphere.replace(f"rho={table['sphere_rho'][i]!r}", f"rho={rho[i]!r}")
+        rows.append(corlab.corlab2026_inputs(sphere, other, float(v)))
+    return {k: np.array([row[k] for row in rows]) for k in rows[0]}
+
+
+def cell(rel):
+    return (f"{100 * np.sqrt(np.mean(rel ** 2)):.2f} / {100 * rel[np.argmax(abs(rel))]:+.1f} / "
+            f"{100 * rel.mean():+.2f} ({rel.size})")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("pairs", help="the pair dataset.csv (corlab dataset export)")
+    args = parser.parse_args()
+    flat = ROOT / "data" / "fe_restitution"
+    subsets = {"flat dataset": dataset.read(flat / "dataset.csv"),
+               "paper corner (Table 2)": dataset.read(flat / "paper_corner" / "dataset.csv")}
+    corner = subsets["paper corner (Table 2)"]
+    for ratio in sorted(set(np.round(corner["density_ratio"], 3))):
+        mask = np.round(corner["density_ratio"], 3) == ratio
+        subsets[f"paper corner, density ratio {ratio:g}"] = {
+            k: (v[mask] if isinstance(v, np.ndarray) else [x for x, m in zip(v, mask) if m])
+            for k, v in corner.items()}
+    pairs = dataset.read(args.pairs)
+    shape = np.array(pairs["substrate_shape"])
+    for name, mask in (("pair flats", shape == "flat"), ("pair second spheres", shape != "flat")):
+        subsets[name] = {k: (v[mask] if isinstance(v, np.ndarray) else
+                             [x for x, m in zip(v, mask) if m]) for k, v in pairs.items()}
+    ours, old = corlab.corlab2026p_fitted(), corlab.corlab2026_fitted()
+    print("| rows | corlab2026 at rho* | corlab2026p |\n|---|---|---|")
+    for name, table in subsets.items():
+        e_old = model_fit.predict(rho_star_inputs(table), old)
+        e_new = model_fit.predict(model_fit.model_inputs(table, "corlab2026p"), ours)
+        print(f"| {name} | {cell((e_old - table['e']) / table['e'])} | "
+              f"{cell((e_new - table['e']) / table['e'])} |")
+    sphere, other, v, e_fe = USER_CASE
+    e_old = corlab.predict("corlab2026", sphere, other, v)
+    e_new = model_fit.predict({k: np.array([x]) for k, x in corlab.corlab2026p_inputs(
+        sphere, other, v).items()}, ours)[0]
+    print(f"| user case (FE e = {e_fe}) | {e_old:.4f} ({100 * (e_old / e_fe - 1):+.1f} %) | "
+          f"{e_new:.4f} ({100 * (e_new / e_fe - 1):+.1f} %) |")
+
+
+if __name__ == "__main__":
+    main()
