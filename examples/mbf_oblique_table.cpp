@@ -8,6 +8,7 @@
 //   build/bin/example_mbf_oblique_table scan 1.5034     # psi2(psi1) on a fine grid for a chi
 //   build/bin/example_mbf_oblique_table kharaz data/kharaz2001/measured_points.csv
 //                                                       # against Kharaz et al.'s measurements
+//   build/bin/example_mbf_oblique_table angles 2 4 40   # e_t, omega, angle at those angles (CSV)
 //   build/bin/example_mbf_oblique_table chi             # the no-slip limit and psi2(1.2) vs chi
 //   build/bin/example_mbf_oblique_table steel           # the FE comparison's cases (steel, mu 0.3)
 #include <fmt/core.h>
@@ -50,13 +51,13 @@ void table() {
   const double chi = corlab::restitution::mbf_chi(kappa, base.gyration);
   fmt::print("# alumina on glass: kappa = {:.5f}, chi = {:.5f}, 4 chi - 1 = {:.4f}\n", kappa, chi,
              4.0 * chi - 1.0);
-  fmt::print("{:>6} {:>8} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>4} {}\n", "psi1", "theta",
-             "psi2", "e_t", "e_t_rigid", "omega", "omega_rig", "angle", "rev", "regime");
-  for (double psi1 : {0.1, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0,
-                      5.5, 6.0, 8.0}) {
+  fmt::print("{:>6} {:>8} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>4} {}\n", "psi1", "theta", "psi2",
+             "e_t", "e_t_rigid", "omega", "omega_rig", "angle", "rev", "regime");
+  for (double psi1 :
+       {0.1, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 4.5, 5.0, 5.5, 6.0, 8.0}) {
     const double theta = std::atan(psi1 * base.friction / kappa) * kDegreesPerRadian;
-    const auto r = corlab::restitution::mbf_rebound(kharaz(theta), {.annuli = 400,
-                                                                    .time_steps = 20000});
+    const auto r =
+        corlab::restitution::mbf_rebound(kharaz(theta), {.annuli = 400, .time_steps = 20000});
     // Rigid body, sticking contact leaves rolling (beta = 0) where Coulomb does not bind.
     const double tan_t = std::tan(theta / kDegreesPerRadian);
     const double slide = 1.0 - 2.0 * base.friction / tan_t;
@@ -65,7 +66,8 @@ void table() {
     const double omega_rigid = (1.0 - e_t_rigid) * v_t / (base.gyration * base.radius);
     fmt::print("{:6.2f} {:8.4f} {:9.5f} {:9.5f} {:9.5f} {:9.2f} {:9.2f} {:9.4f} {:4d} {}\n", psi1,
                theta, r.psi2, r.tangential_restitution, e_t_rigid, r.spin, omega_rigid,
-               r.rebound_angle, r.force_reversals, r.gross_sliding ? "gross sliding" : "micro-slip");
+               r.rebound_angle, r.force_reversals,
+               r.gross_sliding ? "gross sliding" : "micro-slip");
   }
 }
 
@@ -93,8 +95,8 @@ void scan(double chi) {
   double previous = 0.0;
   for (int i = 1; i <= 400; ++i) {
     const double psi1 = 0.02 * i;
-    const auto n = corlab::restitution::mbf_normalised(chi, psi1, {.annuli = 400,
-                                                                   .time_steps = 20000});
+    const auto n =
+        corlab::restitution::mbf_normalised(chi, psi1, {.annuli = 400, .time_steps = 20000});
     if (n.psi2 < best_psi2) {
       best_psi2 = n.psi2;
       best_psi1 = psi1;
@@ -161,10 +163,11 @@ void steel_cases() {
                                                      .angle = theta * kDegreesPerRadian,
                                                      .friction = 0.3},
                                                     {.annuli = 400, .time_steps = 20000});
-    fmt::print("psi1 {:.2f} theta {:.4f} v {:.4f} chi {:.5f} psi2 {:.5f} e_t {:.5f} omega {:.4f} "
-               "angle {:.4f} t_c {:.4e}\n", psi1, theta * kDegreesPerRadian,
-               10.0 / std::cos(theta), r.chi, r.psi2, r.tangential_restitution, r.spin,
-               r.rebound_angle, r.contact_time);
+    fmt::print(
+        "psi1 {:.2f} theta {:.4f} v {:.4f} chi {:.5f} psi2 {:.5f} e_t {:.5f} omega {:.4f} "
+        "angle {:.4f} t_c {:.4e}\n",
+        psi1, theta * kDegreesPerRadian, 10.0 / std::cos(theta), r.chi, r.psi2,
+        r.tangential_restitution, r.spin, r.rebound_angle, r.contact_time);
   }
 }
 
@@ -174,8 +177,8 @@ void kharaz_points(const std::string& path) {
   if (!file) throw std::runtime_error("cannot read " + path);
   std::string line;
   std::getline(file, line);  // header
-  fmt::print("{:>27} {:>28} {:>8} {:>10} {:>10} {:>9}\n", "source", "quantity", "angle",
-             "measured", "MBF", "MBF-meas");
+  fmt::print("{:>27} {:>28} {:>8} {:>10} {:>10} {:>9}\n", "source", "quantity", "angle", "measured",
+             "MBF", "MBF-meas");
   while (std::getline(file, line)) {
     std::stringstream row(line);
     std::string source, quantity, angle, value;
@@ -184,8 +187,8 @@ void kharaz_points(const std::string& path) {
     std::getline(row, angle, ',');
     std::getline(row, value, ',');
     const double theta = std::stod(angle);
-    const auto r = corlab::restitution::mbf_rebound(kharaz(theta), {.annuli = 400,
-                                                                    .time_steps = 20000});
+    const auto r =
+        corlab::restitution::mbf_rebound(kharaz(theta), {.annuli = 400, .time_steps = 20000});
     const double v_n = 3.9 * std::cos(theta / kDegreesPerRadian);
     double mbf = r.tangential_restitution;
     if (quantity == "omega") mbf = r.spin;
@@ -212,6 +215,18 @@ void kharaz_points(const std::string& path) {
              deepest, at);
 }
 
+// MBF for Kharaz's case at the given angles [deg], as CSV (angle, e_t, omega [rad/s], c.o.m.
+// rebound angle [deg]): the theory column of scripts/kharaz_fe_table.py.
+void kharaz_angles(int count, char** angles) {
+  fmt::print("impact_angle_deg,e_t,omega,rebound_angle_com\n");
+  for (int i = 0; i < count; ++i) {
+    const double theta = std::strtod(angles[i], nullptr);
+    const auto r =
+        corlab::restitution::mbf_rebound(kharaz(theta), {.annuli = 400, .time_steps = 20000});
+    fmt::print("{},{:.6f},{:.4f},{:.4f}\n", theta, r.tangential_restitution, r.spin,
+               r.rebound_angle);
+  }
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -227,10 +242,14 @@ int main(int argc, char** argv) {
       chi_dependence();
     } else if (mode == "kharaz" && argc > 2) {
       kharaz_points(argv[2]);
+    } else if (mode == "angles" && argc > 2) {
+      kharaz_angles(argc - 2, argv + 2);
     } else if (mode == "scan" && argc > 2) {
       scan(std::strtod(argv[2], nullptr));
     } else {
-      fmt::print(stderr, "usage: example_mbf_oblique_table [table | convergence | scan CHI | kharaz CSV | chi | steel]\n");
+      fmt::print(stderr,
+                 "usage: example_mbf_oblique_table [table | convergence | scan CHI | kharaz CSV | "
+                 "angles DEG... | chi | steel]\n");
       return 2;
     }
   } catch (const std::exception& e) {

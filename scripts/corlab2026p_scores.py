@@ -2,7 +2,8 @@
 data/fe_restitution_pairs/model_fit.json through the library) next to corlab2026 at the pair's
 rho* (its shipped coefficients, the sphere's density replaced by rho*), by subset: the flat
 dataset, the pair dataset's flats and second spheres, the paper's corner (Table 2, and by its
-density ratio), and issue 26's user case (a tungsten-carbide-like sphere on aluminium alloy at 20 m/s, FE e = 0.1486).
+density ratio), and issue 26's user case (a tungsten-carbide-like sphere on aluminium alloy
+at 20 m/s, FE e = 0.1486).
 Relative errors (e_model - e_FE) / e_FE: RMS / worst / bias in %.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/corlab2026p_scores.py \\

@@ -240,7 +240,8 @@ def main():
         table += rows
     failures += check_agreement(table, report)
     fe_path = opt.get("--fe-table", os.path.join(KHARAZ, "fe_oblique.csv"))
-    fe_source = fe_path if os.path.exists(fe_path) else "docs/theory/solver3d.md (40 deg only)"
+    fe_source = (os.path.relpath(os.path.realpath(fe_path), os.path.realpath(ROOT))
+                 if os.path.exists(fe_path) else "docs/theory/solver3d.md (40 deg only)")
     markdown = write_tables(table, fe_points(fe_path), opt.get("--table-out", work), fe_source)
     text = "\n".join(report) + "\n\n" + markdown + "\n"
     print(text, end="")
