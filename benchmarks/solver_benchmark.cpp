@@ -37,14 +37,19 @@ namespace {
 using corlab::fem::ImpactConfig;
 using corlab::fem::ImpactResult;
 
-/// Counters of one run; e goes into the label (a user counter is shown with SI prefixes).
-void report(benchmark::State& state, const ImpactResult& r) {
-  state.counters["elements"] = r.elements;
-  state.counters["steps"] = static_cast<double>(r.steps);
+/// The elements, steps and element-steps/s counters of a run of `elements` x `steps`.
+void step_counters(benchmark::State& state, int elements, long long steps) {
+  state.counters["elements"] = elements;
+  state.counters["steps"] = static_cast<double>(steps);
   state.counters["element_steps_per_s"] =
-      benchmark::Counter(static_cast<double>(r.elements) * static_cast<double>(r.steps) *
+      benchmark::Counter(static_cast<double>(elements) * static_cast<double>(steps) *
                              static_cast<double>(state.iterations()),
                          benchmark::Counter::kIsRate);
+}
+
+/// Counters of one run; e goes into the label (a user counter is shown with SI prefixes).
+void report(benchmark::State& state, const ImpactResult& r) {
+  step_counters(state, r.elements, r.steps);
   state.counters["element_updates"] = r.element_steps_per_s * r.wall_s;
   state.SetLabel(fmt::format("e={:.6f}", r.e));
 }
@@ -150,12 +155,7 @@ void time_hex_runs(benchmark::State& state, const ImpactConfig& config) {
     r = corlab::fem::simulate_hex_impact(config);
     benchmark::DoNotOptimize(std::as_const(r).e_n);
   }
-  state.counters["elements"] = r.elements;
-  state.counters["steps"] = static_cast<double>(r.steps);
-  state.counters["element_steps_per_s"] =
-      benchmark::Counter(static_cast<double>(r.elements) * static_cast<double>(r.steps) *
-                             static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate);
+  step_counters(state, r.elements, r.steps);
   state.SetLabel(fmt::format("e_n={:.6f} e_t={:.6f} omega={:.2f}", r.e_n, r.e_t, r.omega));
 }
 

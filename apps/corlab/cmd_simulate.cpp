@@ -32,6 +32,16 @@ struct SimulateOptions {
   bool error_estimate = false;
 };
 
+// The 3-D model's line: e_n, e_t and omega with "+/- U" where the error estimate gave U.
+void print_oblique_result(const fem::ImpactResult& result) {
+  auto bar = [](double u) { return std::isfinite(u) ? fmt::format(" +/- {:.2g}", u) : ""; };
+  fmt::print(
+      "3-D model: e_n = {:.4f}  e_t = {:.4f}{}  omega = {:.5g}{} rad/s  rebound_angle = {:.3f} "
+      "deg  energy_friction = {:.4g} J\n",
+      result.e_n, result.e_t, bar(result.e_t_error), result.omega, bar(result.omega_error),
+      result.rebound_angle, result.energy_friction);
+}
+
 int run_simulate(const SimulateOptions& opt) {
   fem::ImpactConfig config;
   if (!opt.config_file.empty()) config = fem::load_impact_config(opt.config_file);
@@ -91,15 +101,7 @@ int run_simulate(const SimulateOptions& opt) {
         "rebound\n",
         fem::to_string(result.status), result.status_detail);
   }
-  if (clean && fem::uses_3d_model(config)) {
-    // "+/- U" after e_t and omega where the error estimate gave them
-    auto bar = [](double u) { return std::isfinite(u) ? fmt::format(" +/- {:.2g}", u) : ""; };
-    fmt::print(
-        "3-D model: e_n = {:.4f}  e_t = {:.4f}{}  omega = {:.5g}{} rad/s  rebound_angle = {:.3f} "
-        "deg  energy_friction = {:.4g} J\n",
-        result.e_n, result.e_t, bar(result.e_t_error), result.omega, bar(result.omega_error),
-        result.rebound_angle, result.energy_friction);
-  }
+  if (clean && fem::uses_3d_model(config)) print_oblique_result(result);
   if (!result.suspect.empty()) {
     fmt::print(stderr, "corlab simulate: warning: suspect run: {}\n", result.suspect);
   }
