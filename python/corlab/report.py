@@ -22,6 +22,7 @@ import sys
 from . import figures
 from .html_table import esc, fmt, pct, table
 from .report_dataset import dataset_section
+from .report_oblique import oblique_section
 
 COARSE_OMITS = [
     "Contact mesh: h_min = 1 mm with h <= a_max/4 (paper and paper preset: 0.25 mm, h <= "
@@ -457,6 +458,8 @@ available to corlab; none are shown and none were digitised.</p>
 {img("fig11_12", "Figs. 11-12")}{img("fig13", "Fig. 13")}
 <h2>Beyond the paper: corlab's FE dataset and its model</h2>
 {dataset_section(fit, out_dir)}
+<h2>Beyond the paper: oblique impacts in 3-D (Kharaz et al. 2001)</h2>
+{oblique_section(os.path.dirname(fit.get("dataset_dir") or ""), out_dir)}
 <h2>Runs and time</h2>{runs_table(fit)}
 <p>Fitting took {fmt(fit.get('fit_wall_s'), 3)} s. Runs in parallel: {esc(fit.get('jobs'))}
 (hardware threads: {esc(fit.get('hardware_threads'))}).</p>

@@ -12,7 +12,7 @@ import re
 import subprocess
 
 import corlab
-from corlab import report, report_dataset
+from corlab import report, report_dataset, report_oblique
 
 ES = 210e9 / (2 * (1 - 0.3 ** 2))
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -242,8 +242,8 @@ def test_no_formula_or_constant_in_any_module_of_the_report():
     C++ (corlab._core): no module it imports holds a formula or a material or published
     constant."""
     modules = report_modules()
-    assert {"corlab.report", "corlab.figures", "corlab.report_dataset", "corlab.dataset",
-            "corlab.html_table", "corlab.vtu"} <= set(modules), sorted(modules)
+    assert {"corlab.report", "corlab.figures", "corlab.report_dataset", "corlab.report_oblique",
+            "corlab.dataset", "corlab.html_table", "corlab.vtu"} <= set(modules), sorted(modules)
     for name, path in modules.items():
         findings = formula_findings(open(path).read())
         assert findings == [], (name, findings)
@@ -269,6 +269,19 @@ def test_table2_against_eq19_is_fit_jsons(tmp_path):
         assert row in html, row
     del fit["fits"]["corlab2026_versus_eq19"]
     assert "The paper's corner" not in report_dataset.dataset_section(fit, str(tmp_path / "out"))
+
+
+def test_oblique_section_shows_the_shipped_kharaz_tables(tmp_path):
+    """The oblique section reads data/kharaz2001's tables as shipped: one row per FE angle with
+    its error bars, and the figure; without the tables, a note instead of an error."""
+    data = os.path.join(os.path.dirname(__file__), "..", "..", "data")
+    html = report_oblique.oblique_section(data, str(tmp_path))
+    with open(os.path.join(data, "kharaz2001", "fe_oblique.csv")) as f:
+        angles = [line.split(",")[0] for line in f.read().splitlines()[1:]]
+    assert html.count("<tr>") == len(angles) + 1
+    assert (tmp_path / "figures" / "kharaz2001.png").stat().st_size > 10000
+    empty = report_oblique.oblique_section(str(tmp_path), str(tmp_path))
+    assert "No oblique-impact tables" in empty
 
 
 def test_the_guard_finds_what_the_report_used_to_compute():
