@@ -33,19 +33,19 @@ struct SlaveContact {
 // The slave's projection on the block's top: the face of the start grid under its current
 // position, or a neighbour when the closest point falls off that face.
 SlaveContact facet_contact(const HexModel& m, const HexState& s, std::size_t n) {
-  const double p[3] = {s.x[n], s.y[n], s.z[n]};
+  const double p[3] = {s.node[n].x, s.node[n].y, s.node[n].z};
   SlaveContact c;
   FacetProjection best;
   double best_off = std::numeric_limits<double>::infinity();
   for (long dj = -1; dj <= 1; ++dj)
     for (long di = -1; di <= 1; ++di) {
-      const auto& face = m.mesh.top_faces[face_under(m.mesh, s.x[n], s.y[n], di, dj)];
+      const auto& face = m.mesh.top_faces[face_under(m.mesh, s.node[n].x, s.node[n].y, di, dj)];
       double corner[4][3];
       for (int k = 0; k < 4; ++k) {
         const auto i = static_cast<std::size_t>(face[static_cast<std::size_t>(k)]);
-        corner[k][0] = s.x[i];
-        corner[k][1] = s.y[i];
-        corner[k][2] = s.z[i];
+        corner[k][0] = s.node[i].x;
+        corner[k][1] = s.node[i].y;
+        corner[k][2] = s.node[i].z;
       }
       const FacetProjection f = project_on_facet(p, corner);
       const double off = std::max(std::abs(f.xi), std::abs(f.eta));
@@ -72,16 +72,16 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
   for (std::size_t k = 0; k < slaves.size(); ++k) {
     const auto n = static_cast<std::size_t>(slaves[k]);
     SlaveContact c;
-    c.gap = s.z[n];
-    if (m.deformable_target && s.z[n] < 0.5 * m.h_contact) c = facet_contact(m, s, n);
+    c.gap = s.node[n].z;
+    if (m.deformable_target && s.node[n].z < 0.5 * m.h_contact) c = facet_contact(m, s, n);
     const double stiffness = m.penalty[k];
     const double fn = c.gap < 0.0 ? -stiffness * c.gap : 0.0;
-    double v_rel[3] = {s.vx[n], s.vy[n], s.vz[n]};
+    double v_rel[3] = {s.node[n].vx, s.node[n].vy, s.node[n].vz};
     for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
       const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
-      v_rel[0] -= c.weight[j] * s.vx[i];
-      v_rel[1] -= c.weight[j] * s.vy[i];
-      v_rel[2] -= c.weight[j] * s.vz[i];
+      v_rel[0] -= c.weight[j] * s.node[i].vx;
+      v_rel[1] -= c.weight[j] * s.node[i].vy;
+      v_rel[2] -= c.weight[j] * s.node[i].vz;
     }
     const double du[3] = {v_rel[0] * dt, v_rel[1] * dt, v_rel[2] * dt};
     const FrictionUpdate f =
@@ -93,14 +93,14 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
     s.penetration_max = std::max(s.penetration_max, -c.gap);
     const double force[3] = {fn * c.normal[0] + f.t[0], fn * c.normal[1] + f.t[1],
                              fn * c.normal[2] + f.t[2]};
-    s.fx[n] += force[0];
-    s.fy[n] += force[1];
-    s.fz[n] += force[2];
+    s.force[n].x += force[0];
+    s.force[n].y += force[1];
+    s.force[n].z += force[2];
     for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
       const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
-      s.fx[i] -= c.weight[j] * force[0];
-      s.fy[i] -= c.weight[j] * force[1];
-      s.fz[i] -= c.weight[j] * force[2];
+      s.force[i].x -= c.weight[j] * force[0];
+      s.force[i].y -= c.weight[j] * force[1];
+      s.force[i].z -= c.weight[j] * force[2];
     }
     s.normal_force += fn * c.normal[2];
     s.e_contact += 0.5 * stiffness * c.gap * c.gap + friction_stored_energy(f.t, stiffness);

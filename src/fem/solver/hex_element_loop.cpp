@@ -163,12 +163,12 @@ struct HexBlockState {
     const int* nodes = m.corner[static_cast<std::size_t>(i)].data() + e0;
     for (int l = 0; l < nb; ++l) {
       const auto n = static_cast<std::size_t>(nodes[l]);
-      ln.x[i][l] = s.x[n];
-      ln.y[i][l] = s.y[n];
-      ln.z[i][l] = s.z[n];
-      ln.vx[i][l] = s.vx[n];
-      ln.vy[i][l] = s.vy[n];
-      ln.vz[i][l] = s.vz[n];
+      ln.x[i][l] = s.node[n].x;
+      ln.y[i][l] = s.node[n].y;
+      ln.z[i][l] = s.node[n].z;
+      ln.vx[i][l] = s.node[n].vx;
+      ln.vy[i][l] = s.node[n].vy;
+      ln.vz[i][l] = s.node[n].vz;
     }
   }
 }
@@ -185,9 +185,9 @@ struct HexBlockState {
   for (int l = 0; l < nb; ++l) {
     for (int i = 0; i < 8; ++i) {
       const auto n = static_cast<std::size_t>(m.corner[static_cast<std::size_t>(i)][e0 + l]);
-      s.fx[n] -= ln.fx[i][l];
-      s.fy[n] -= ln.fy[i][l];
-      s.fz[n] -= ln.fz[i][l];
+      s.force[n].x -= ln.fx[i][l];
+      s.force[n].y -= ln.fy[i][l];
+      s.force[n].z -= ln.fz[i][l];
     }
     sums.internal_work += out.w_int[l];
     sums.plastic_work += out.w_p[l];

@@ -137,18 +137,15 @@ HexModel make_model(const ImpactConfig& config) {
 
 HexState initial_state(const HexModel& m) {
   HexState s;
-  s.x = m.mesh.x;
-  s.y = m.mesh.y;
-  s.z = m.mesh.z;
-  const std::size_t nn = s.x.size();
-  s.vx.assign(nn, 0.0);
-  s.vy.assign(nn, 0.0);
-  s.vz.assign(nn, 0.0);
-  std::fill_n(s.vx.begin(), m.sphere_nodes, m.v_tangent);
-  std::fill_n(s.vz.begin(), m.sphere_nodes, -m.v_normal);
-  s.fx.assign(nn, 0.0);
-  s.fy.assign(nn, 0.0);
-  s.fz.assign(nn, 0.0);
+  const std::size_t nn = m.mesh.x.size();
+  s.node.resize(nn);
+  for (std::size_t n = 0; n < nn; ++n) {
+    const bool sphere = n < m.sphere_nodes;
+    s.node[n] = {m.mesh.x[n], m.mesh.y[n],
+                 m.mesh.z[n], sphere ? m.v_tangent : 0.0,
+                 0.0,         sphere ? -m.v_normal : 0.0};
+  }
+  s.force.assign(nn, NodeForce{0.0, 0.0, 0.0});
   const std::size_t ne = m.mesh.hexes.size();
   for (Vec& c : s.stress) c.assign(ne, 0.0);
   s.eps_p.assign(ne, 0.0);
@@ -173,10 +170,10 @@ Motion sphere_motion(const HexModel& m, const HexState& s) {
   double cz = 0.0;
   for (std::size_t n = 0; n < m.sphere_nodes; ++n) {
     const double mass = m.mass[n];
-    px += mass * s.vx[n];
-    pz += mass * s.vz[n];
-    cx += mass * s.x[n];
-    cz += mass * s.z[n];
+    px += mass * s.node[n].vx;
+    pz += mass * s.node[n].vz;
+    cx += mass * s.node[n].x;
+    cz += mass * s.node[n].z;
   }
   mo.vx = px / m.total_mass;
   mo.vz = pz / m.total_mass;
@@ -185,9 +182,9 @@ Motion sphere_motion(const HexModel& m, const HexState& s) {
   double momentum = 0.0;
   double inertia = 0.0;
   for (std::size_t n = 0; n < m.sphere_nodes; ++n) {
-    const double dx = s.x[n] - cx;
-    const double dz = s.z[n] - cz;
-    momentum += m.mass[n] * (dz * (s.vx[n] - mo.vx) - dx * (s.vz[n] - mo.vz));
+    const double dx = s.node[n].x - cx;
+    const double dz = s.node[n].z - cz;
+    momentum += m.mass[n] * (dz * (s.node[n].vx - mo.vx) - dx * (s.node[n].vz - mo.vz));
     inertia += m.mass[n] * (dx * dx + dz * dz);
   }
   mo.omega = momentum / inertia;
@@ -197,13 +194,13 @@ Motion sphere_motion(const HexModel& m, const HexState& s) {
 // Advances positions by dt with the current velocities and assembles the forces there. Returns
 // the next stable step (0: an element inverted).
 double step_forces(const HexModel& m, HexState& s, double dt, bool& penetrating) {
-  for (std::size_t n = 0; n < s.x.size(); ++n) {
-    s.x[n] += dt * s.vx[n];
-    s.y[n] += dt * s.vy[n];
-    s.z[n] += dt * s.vz[n];
-    s.fx[n] = 0.0;
-    s.fy[n] = 0.0;
-    s.fz[n] = 0.0;
+  for (std::size_t n = 0; n < s.node.size(); ++n) {
+    s.node[n].x += dt * s.node[n].vx;
+    s.node[n].y += dt * s.node[n].vy;
+    s.node[n].z += dt * s.node[n].vz;
+    s.force[n].x = 0.0;
+    s.force[n].y = 0.0;
+    s.force[n].z = 0.0;
   }
   const HexElementSums sums = hex_element_pass(m.simd, m, s, dt);
   if (sums.inverted) return 0.0;
@@ -227,13 +224,15 @@ struct VelocitySums {
 VelocitySums update_velocities(const HexModel& m, HexState& s, double dt_avg) {
   VelocitySums sums;
   double pz = 0.0;
-  for (std::size_t n = 0; n < s.x.size(); ++n) {
-    s.vx[n] = m.free_x[n] * (s.vx[n] + dt_avg * s.fx[n] * m.inv_mass[n]);
-    s.vy[n] = m.free_y[n] * (s.vy[n] + dt_avg * s.fy[n] * m.inv_mass[n]);
-    s.vz[n] = m.free_z[n] * (s.vz[n] + dt_avg * s.fz[n] * m.inv_mass[n]);
+  for (std::size_t n = 0; n < s.node.size(); ++n) {
+    s.node[n].vx = m.free_x[n] * (s.node[n].vx + dt_avg * s.force[n].x * m.inv_mass[n]);
+    s.node[n].vy = m.free_y[n] * (s.node[n].vy + dt_avg * s.force[n].y * m.inv_mass[n]);
+    s.node[n].vz = m.free_z[n] * (s.node[n].vz + dt_avg * s.force[n].z * m.inv_mass[n]);
     const double mass = m.mass[n];
-    sums.kinetic += 0.5 * mass * (s.vx[n] * s.vx[n] + s.vy[n] * s.vy[n] + s.vz[n] * s.vz[n]);
-    if (n < m.sphere_nodes) pz += mass * s.vz[n];
+    sums.kinetic +=
+        0.5 * mass *
+        (s.node[n].vx * s.node[n].vx + s.node[n].vy * s.node[n].vy + s.node[n].vz * s.node[n].vz);
+    if (n < m.sphere_nodes) pz += mass * s.node[n].vz;
   }
   sums.vz = pz / m.total_mass;
   return sums;

@@ -58,9 +58,21 @@ struct HexModel {
   const SolverConfig* solver = nullptr;
 };
 
+// One node's position [m] and velocity [m/s], together: the element pass gathers both, and one
+// record is one or two cache lines where six arrays were six.
+struct NodeKinematics {
+  double x, y, z, vx, vy, vz;
+};
+
+// One node's force [N].
+struct NodeForce {
+  double x, y, z;
+};
+
 // The mutable part.
 struct HexState {
-  Vec x, y, z, vx, vy, vz, fx, fy, fz;
+  std::vector<NodeKinematics> node;
+  std::vector<NodeForce> force;
   std::array<Vec, 6> stress;                    // per element: xx, yy, zz, xy, yz, zx [Pa]
   Vec eps_p;                                    // per element [-]
   std::array<Vec, 12> hourglass;                // per element: Q[d][a] at d * 4 + a [N]
