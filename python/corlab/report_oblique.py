@@ -1,7 +1,8 @@
 """The report's oblique-impact section (issue 27): corlab's 3-D FE on Kharaz, Gorham & Salman's
 (2001) alumina sphere on glass against the measured points and the three DEM codes, from the files
 data/kharaz2001 ships (fe_oblique.csv, measured_points.csv, dem_oblique.csv; its README says how
-each was made). Nothing is computed here: a figure and a table of those files' numbers."""
+each was made), and the elastic-plastic studies of data/oblique_studies. Nothing is computed
+here: figures and a table of those files' numbers."""
 import csv
 import os
 import sys
@@ -52,6 +53,49 @@ def oblique_figure(fe, measured, dem, path):
     plt.close(fig)
 
 
+def study_figure(rows, title, path):
+    """e_n, e_t and omega against the impact angle, one line per impact speed, with error bars."""
+    fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
+    speeds = sorted({float(r["impact_velocity"]) for r in rows})
+    for ax, key, label in zip(axes, ("e_n", "e_t", "omega"),
+                              ("e_n [-]", "e_t [-]", "rebound spin ω [rad/s]")):
+        for v in speeds:
+            mine = sorted((float(r["impact_angle_deg"]), float(r[key]),
+                           float(r[key + "_error" if key != "e_n" else "e_n_error"]))
+                          for r in rows if float(r["impact_velocity"]) == v and r[key] != "nan")
+            if mine:
+                ax.errorbar(*zip(*mine), fmt="o-", ms=3, capsize=2, label=f"{v:g} m/s")
+        ax.set_xlabel("impact angle from the normal [deg]")
+        ax.set_ylabel(label)
+    axes[0].legend(fontsize=8)
+    fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def studies_section(data_dir, out_dir):
+    """HTML: a figure per table of data/oblique_studies (the elastic-plastic oblique studies)."""
+    folder = os.path.join(data_dir, "oblique_studies")
+    try:
+        names = sorted(n for n in os.listdir(folder) if n.endswith(".csv"))
+    except OSError:
+        names = []
+    if not names:
+        return "<p><i>No elastic-plastic oblique tables found (data/oblique_studies).</i></p>"
+    parts = []
+    for name in names:
+        stem = name[:-4]
+        try:
+            study_figure(_rows(os.path.join(folder, name)), stem,
+                         os.path.join(out_dir, "figures", f"oblique_{stem}.png"))
+            parts.append(f'<p><img src="figures/oblique_{esc(stem)}.png" alt="{esc(stem)}"></p>')
+        except Exception as err:  # a broken figure must not lose the rest of the report
+            print(f"corlab.report: oblique figure {stem} failed: {err}", file=sys.stderr)
+    return (f"<p>The elastic-plastic oblique studies of <code>{esc(folder)}</code> (its README: "
+            "materials, friction, mesh and how each table was made).</p>" + "".join(parts))
+
+
 def oblique_section(data_dir, out_dir):
     """HTML: the Kharaz comparison, or a note when data/kharaz2001 lacks the tables."""
     folder = os.path.join(data_dir, "kharaz2001")
@@ -81,4 +125,6 @@ export (<code>{esc(folder)}</code>, its README). The FE's error bars come from i
 companion meshes. From 20&deg; up the FE follows the measurements; below 15&deg; it rebounds with
 less tangential velocity than measured (docs/theory/solver3d.md discusses why).</p>
 {figure}
-{table(head, rows)}"""
+{table(head, rows)}
+<h3>Elastic-plastic oblique impacts</h3>
+{studies_section(data_dir, out_dir)}"""

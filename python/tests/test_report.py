@@ -284,6 +284,25 @@ def test_oblique_section_shows_the_shipped_kharaz_tables(tmp_path):
     assert "No oblique-impact tables" in empty
 
 
+def test_oblique_studies_give_one_figure_per_table(tmp_path):
+    """Each table of data/oblique_studies gets its figure (e_n, e_t, omega against the angle, a
+    line per speed); no tables, a note."""
+    folder = tmp_path / "oblique_studies"
+    folder.mkdir()
+    head = ("impact_velocity,impact_angle_deg,e_n,e_n_error,e_t,e_t_error,omega,omega_error,"
+            "rebound_angle_com")
+    rows = ["1,0,0.72,0.01,nan,nan,0,nan,0", "1,30,0.74,0.01,0.70,0.01,10.7,0.3,28.7",
+            "3,30,0.60,0.01,0.65,0.01,30.1,0.5,25.0"]
+    (folder / "pair.csv").write_text("\n".join([head] + rows) + "\n")
+    (tmp_path / "out" / "figures").mkdir(parents=True)
+    html = report_oblique.studies_section(str(tmp_path), str(tmp_path / "out"))
+    assert 'src="figures/oblique_pair.png"' in html
+    assert (tmp_path / "out" / "figures" / "oblique_pair.png").stat().st_size > 10000
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    assert "No elastic-plastic" in report_oblique.studies_section(str(empty), str(tmp_path))
+
+
 def test_the_guard_finds_what_the_report_used_to_compute():
     """The lines that derived Table 2's materials in the report (E from E*, nu, rho) and Hertz's
     force, as they were: each is found."""
