@@ -52,6 +52,13 @@ json read_file(const std::filesystem::path& file) {
   return json::parse(in);
 }
 
+/// The fields a case pins: its own "fields" list (e.g. e_t and omega for an oblique impact), else
+/// kPinned.
+std::vector<std::string> pinned_fields(const json& c) {
+  if (c.contains("fields")) return c.at("fields").get<std::vector<std::string>>();
+  return {std::begin(kPinned), std::end(kPinned)};
+}
+
 /// The run of one case at one level: the pinned fields (e_coarse, e_error only with an error
 /// estimate).
 json run_case(const json& c, SimdLevel level) {
@@ -67,11 +74,10 @@ json run_case(const json& c, SimdLevel level) {
   const ImpactResult r = estimate ? simulate_with_error_estimate(config) : simulate(config);
   json out = json::object();
   const FieldInput in{&r, &config, r.wall_s};
-  for (const char* name : kPinned) {
-    if (!estimate && (std::strcmp(name, "e_coarse") == 0 || std::strcmp(name, "e_error") == 0)) {
-      continue;
-    }
+  for (const std::string& name : pinned_fields(c)) {
+    if (!estimate && (name == "e_coarse" || name == "e_error")) continue;
     const ResultField* f = find_result_field(name);
+    if (f == nullptr) throw std::runtime_error("golden.json: unknown result field '" + name + "'");
     std::visit(
         [&](const auto& v) {
           using T = std::decay_t<decltype(v)>;
