@@ -12,6 +12,7 @@
 #include "corlab/restitution/first_yield.hpp"
 #include "corlab/restitution/jackson_green2005.hpp"
 #include "corlab/restitution/thornton1997.hpp"
+#include "restitution/fitted_coefficients.hpp"
 
 namespace corlab::restitution {
 namespace {
@@ -80,10 +81,7 @@ double first_body_cap(const Corlab2026Inputs& in,
 
 // The fitted coefficients {name, value}: data/fe_restitution/model_fit.json's "coefficients",
 // generated at configure time (cmake/Corlab2026Coefficients.cmake).
-struct FittedValue {
-  std::string_view name;
-  double value;
-};
+using detail::FittedValue;
 constexpr auto kFitted = std::to_array<FittedValue>({
 #include "corlab2026_fitted.inc"
 });
@@ -138,20 +136,10 @@ constexpr bool every_fitted_value_listed(std::index_sequence<I...> /*unused*/) {
 static_assert(every_coefficient_fitted(std::make_index_sequence<kCorlab2026Coefficients.size()>{}));
 static_assert(every_fitted_value_listed(std::make_index_sequence<kFitted.size()>{}));
 
-constexpr Corlab2026Coefficients fitted_coefficients() {
-  Corlab2026Coefficients k;
-  for (const auto& [name, member] : kCorlab2026Coefficients) {
-    for (const auto& f : kFitted) {
-      if (f.name == name) k.*member = f.value;
-    }
-  }
-  return k;
-}
-
 }  // namespace
 
 Corlab2026Coefficients corlab2026_fitted() {
-  static constexpr Corlab2026Coefficients kCoefficients = fitted_coefficients();
+  static constexpr Corlab2026Coefficients kCoefficients = detail::coefficients_from(kFitted);
   return kCoefficients;
 }
 

@@ -7,16 +7,14 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/restitution/first_yield.hpp"
+#include "restitution/fitted_coefficients.hpp"
 
 namespace corlab::restitution {
 namespace {
 
 // The fitted coefficients {name, value}: data/fe_restitution_pairs/model_fit.json's
 // "coefficients", generated at configure time (cmake/Corlab2026Coefficients.cmake).
-struct FittedValue {
-  std::string_view name;
-  double value;
-};
+using detail::FittedValue;
 constexpr auto kFitted = std::to_array<FittedValue>({
 #include "corlab2026p_fitted.inc"
 });
@@ -32,16 +30,6 @@ constexpr bool each_coefficient_fitted_once() {
 static_assert(each_coefficient_fitted_once(),
               "data/fe_restitution_pairs/model_fit.json must hold exactly the coefficients of "
               "kCorlab2026Coefficients (corlab2026.hpp)");
-
-constexpr Corlab2026Coefficients fitted_coefficients() {
-  Corlab2026Coefficients k;
-  for (const auto& [name, member] : kCorlab2026Coefficients) {
-    for (const auto& f : kFitted) {
-      if (f.name == name) k.*member = f.value;
-    }
-  }
-  return k;
-}
 
 }  // namespace
 
@@ -65,7 +53,7 @@ Corlab2026Pair corlab2026p_pair(const Material& sphere,
 }
 
 Corlab2026Coefficients corlab2026p_fitted() {
-  static constexpr Corlab2026Coefficients kCoefficients = fitted_coefficients();
+  static constexpr Corlab2026Coefficients kCoefficients = detail::coefficients_from(kFitted);
   return kCoefficients;
 }
 

@@ -15,7 +15,7 @@ function(build_with case text rc_var out_var)
     -DOUT=${WORK}/${case}/corlab2026_fitted.inc -P ${generator}
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   if(rc EQUAL 0)
-    execute_process(COMMAND ${CXX} -std=c++20 -fsyntax-only -I${SOURCE_DIR}/include
+    execute_process(COMMAND ${CXX} -std=c++20 -fsyntax-only -I${SOURCE_DIR}/include -I${SOURCE_DIR}/src
       -I${WORK}/${case} ${SOURCE_DIR}/src/restitution/corlab2026.cpp
       RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
   endif()

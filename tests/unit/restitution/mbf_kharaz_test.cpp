@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "corlab/restitution/mbf_oblique.hpp"
+#include "support/kharaz2001_mbf.hpp"
 
 namespace corlab::restitution {
 namespace {
@@ -46,17 +47,7 @@ std::vector<Point> measured() {
   return points;
 }
 
-MbfRebound kharaz(double angle_deg) {
-  return mbf_rebound({.radius = 2.5e-3,
-                      .density = 4000.0,
-                      .sphere_modulus = 380e9,
-                      .sphere_poisson = 0.23,
-                      .flat_modulus = 70e9,
-                      .flat_poisson = 0.25,
-                      .velocity = 3.9,
-                      .angle = angle_deg,
-                      .friction = 0.092});
-}
+MbfRebound kharaz(double angle_deg) { return mbf_rebound(test::kharaz2001_mbf_impact(angle_deg)); }
 
 // The contact point's rebound angle atan(u' / v_n') [deg].
 double contact_point_angle(const MbfRebound& r, double angle_deg) {

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "corlab/core/error.hpp"
+#include "support/kharaz2001_mbf.hpp"
 
 namespace corlab::restitution {
 namespace {
@@ -17,19 +18,7 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kChiDisc = 1.2558;  // MBF 1981's diametral slice of a sphere (nu = 0.28)
 
-/// Kharaz, Gorham & Salman (2001): alumina (380 GPa, 0.23, 4000 kg/m^3, R = 2.5 mm) on soda-lime
-/// glass (70 GPa, 0.25) at 3.9 m/s, mu = 0.092 (data/kharaz2001/README.md).
-MbfImpact kharaz(double angle_deg) {
-  return {.radius = 2.5e-3,
-          .density = 4000.0,
-          .sphere_modulus = 380e9,
-          .sphere_poisson = 0.23,
-          .flat_modulus = 70e9,
-          .flat_poisson = 0.25,
-          .velocity = 3.9,
-          .angle = angle_deg,
-          .friction = 0.092};
-}
+MbfImpact kharaz(double angle_deg) { return test::kharaz2001_mbf_impact(angle_deg); }
 
 double kharaz_chi() { return mbf_chi(mbf_stiffness_ratio(380e9, 0.23, 70e9, 0.25), 0.4); }
 
@@ -94,7 +83,8 @@ TEST(MbfOblique, TheTangentialImpulseNeverExceedsCoulomb) {
   for (int i = 0; i <= 40; ++i) {
     const double psi1 = 0.2 * i;
     const MbfNormalised n = mbf_normalised(chi, psi1, {.annuli = 100, .time_steps = 5000});
-    EXPECT_GE(n.psi2 * n.normal_restitution, psi1 - 2.0 * chi * (1.0 + n.normal_restitution) - 1e-12)
+    EXPECT_GE(n.psi2 * n.normal_restitution,
+              psi1 - 2.0 * chi * (1.0 + n.normal_restitution) - 1e-12)
         << psi1;
     EXPECT_LE(n.psi2, psi1 + 4.0 * chi) << psi1;
   }
@@ -114,8 +104,8 @@ TEST(MbfOblique, SmallIncidenceTendsToTheNoSlipSolution) {
     EXPECT_FALSE(a.gross_sliding);
     double previous = std::numeric_limits<double>::infinity();
     for (double psi1 : {0.1, 0.01, 0.001, 0.0001}) {
-      const double gap = std::abs(mbf_normalised(chi, psi1).contact_point_ratio -
-                                  a.contact_point_ratio);
+      const double gap =
+          std::abs(mbf_normalised(chi, psi1).contact_point_ratio - a.contact_point_ratio);
       EXPECT_LT(gap, previous) << chi << " " << psi1;
       previous = gap;
     }
@@ -178,8 +168,8 @@ TEST(MbfOblique, TheDiscretisationConverges) {
   for (double psi1 : {0.5, 1.5, 3.0, 4.5}) {
     double psi2[4];
     for (int level = 0; level < 4; ++level) {
-      psi2[level] = mbf_normalised(chi, psi1, {.annuli = 100 << level,
-                                               .time_steps = 5000 << level}).psi2;
+      psi2[level] =
+          mbf_normalised(chi, psi1, {.annuli = 100 << level, .time_steps = 5000 << level}).psi2;
     }
     const double d1 = psi2[1] - psi2[0];
     const double d2 = psi2[2] - psi2[1];
@@ -219,8 +209,8 @@ TEST(MbfOblique, SiReboundMatchesTheNormalisedOne) {
   EXPECT_NEAR(r.spin * in.radius * 0.4, v_t * (1.0 - r.tangential_restitution), 1e-12);
   // Hertz (Johnson 1985, section 11.4): t_c = 2.943 (m^2 / (R E*^2 v_n))^(1/5) (15/16)^(2/5).
   const double e_star = 1.0 / ((1.0 - 0.23 * 0.23) / 380e9 + (1.0 - 0.25 * 0.25) / 70e9);
-  const double alpha = std::pow(15.0 * mass * v_n * v_n / (16.0 * e_star * std::sqrt(in.radius)),
-                                0.4);
+  const double alpha =
+      std::pow(15.0 * mass * v_n * v_n / (16.0 * e_star * std::sqrt(in.radius)), 0.4);
   EXPECT_NEAR(r.contact_time / (2.9432704 * alpha / v_n), 1.0, 1e-4);
 }
 
