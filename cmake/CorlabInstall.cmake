@@ -59,7 +59,11 @@ install(TARGETS corlab_shared EXPORT corlabCxxTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT cxx NAMELINK_COMPONENT cxx)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/corlab DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   COMPONENT cxx FILES_MATCHING PATTERN "*.hpp")
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/fe_restitution ${PROJECT_SOURCE_DIR}/studies
+# The datasets and tables the report and users read: the FE datasets (sphere on flat, particle
+# pairs), Kharaz et al.'s measured points with corlab's FE and DEM tables, the oblique studies.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/fe_restitution
+  ${PROJECT_SOURCE_DIR}/data/fe_restitution_pairs ${PROJECT_SOURCE_DIR}/data/kharaz2001
+  ${PROJECT_SOURCE_DIR}/data/oblique_studies ${PROJECT_SOURCE_DIR}/studies
   DESTINATION ${CORLAB_INSTALL_DATADIR} COMPONENT data)
 
 if(TARGET _core)

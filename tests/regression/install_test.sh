@@ -16,6 +16,8 @@ export LC_ALL=C.UTF-8
 data="$prefix/share/corlab"
 for f in bin/corlab include/corlab/restitution/registry.hpp include/corlab/corlab_dem.h \
   share/corlab/materials.toml share/corlab/fe_restitution/dataset.csv \
+  share/corlab/fe_restitution_pairs/dataset.csv share/corlab/kharaz2001/fe_oblique.csv \
+  share/corlab/oblique_studies/steel_pair.csv \
   share/corlab/studies/paper/table2.toml lib/cmake/corlab/corlabConfig.cmake \
   lib/pkgconfig/corlab.pc lib/pkgconfig/corlab-cxx.pc "$pydir/corlab/__init__.py" \
   "$pydir/corlab/dem.py" "$pydir/corlab/_core.pyi" "$pydir/corlab/dem.pyi" "$pydir/corlab/py.typed"; do
@@ -39,6 +41,9 @@ fi
 "$corlab" reproduce --preset coarse --only verification_hertz --out reproduce --quiet >reproduce.out 2>reproduce.err \
   || { cat reproduce.err >&2; exit 1; }
 test -s reproduce/report.html
+# the oblique section's figure, from the installed data/kharaz2001
+test -s reproduce/figures/kharaz2001.png \
+  || { echo "install_test: no oblique figure from the installed data" >&2; exit 1; }
 /usr/bin/python3 - reproduce/fit.json "$data" <<'PY'
 import json, sys
 fit, data = json.load(open(sys.argv[1])), sys.argv[2]
