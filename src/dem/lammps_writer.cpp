@@ -60,7 +60,7 @@ std::string normal_model(const PairCalibration& p, Route r) {
 
 // The header's paragraph on the tangential part.
 std::string tangential_comment(const ExportSpec& spec) {
-  if (spec.friction <= 0.0) return "# Tangential: frictionless (corlab dem --friction MU).\n";
+  if (spec.friction <= 0.0) return std::string(kFrictionlessComment);
   return fmt::format(
       "# Tangential (--friction {:.6g}): `mindlin_rescale k_t x_gamma mu`, Mindlin's no-slip\n"
       "# stiffness k_t a with k_t = 8 G* [Pa], 1/G* = (2-nu_1)/G_1 + (2-nu_2)/G_2 (what LAMMPS's\n"

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "corlab/dem/dem_export.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "dem/detail/export_text.hpp"
 
 namespace corlab::dem {
@@ -60,7 +61,7 @@ std::string model_comment(const std::vector<PairCalibration>& pairs, bool tn) {
 
 // The header's paragraph on the tangential part.
 std::string tangential_comment(const ExportSpec& spec) {
-  if (spec.friction <= 0.0) return "# Tangential: frictionless (corlab dem --friction MU).\n";
+  if (spec.friction <= 0.0) return std::string(kFrictionlessComment);
   return fmt::format(
       "# Tangential (--friction {:.6g}): `tangential history`, LIGGGHTS's own Mindlin stiffness\n"
       "# k_t = 8 G* sqrt(R* delta) from youngsModulus and poissonsRatio (1/G* = 2(2-nu_1)\n"

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "corlab/dem/dem_export.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "dem/detail/export_text.hpp"
 
 namespace corlab::dem {
@@ -30,13 +31,14 @@ std::string material_line(const std::string& var,
 
 // The header's paragraph on the tangential part.
 std::string tangential_comment(const ExportSpec& spec) {
-  if (spec.friction <= 0.0) return "# Tangential: frictionless (corlab dem --friction MU).\n";
+  if (spec.friction <= 0.0) return std::string(kFrictionlessComment);
   return fmt::format(
       "# Tangential (--friction {:.6g}): frictionAngle = atan(mu); MindlinPhys's shear stiffness\n"
       "# k_s = kso sqrt(u_N), kso = 8 G* sqrt(R) (Mindlin's; 1/G* = (2-nu_1)/G_1 + (2-nu_2)/G_2),\n"
       "# and es = en (the tangential dashpot at the normal damping ratio). YADE's Box and Wall\n"
-      "# contacts take R = r/2, not r, in kn and ks alike: their ratio is Mindlin's, the contact\n"
-      "# 2^(1/5) = 1.15 times longer than Hertz's (measured; docs/theory/dem_contact_laws.md).\n",
+      "# contacts take R = r/2, not r, in kn and ks alike (measured from kno): their ratio is\n"
+      "# Mindlin's; by Hertz (t_c ~ R^(-1/5)) the contact lasts 2^(1/5) = 1.15 times longer\n"
+      "# (docs/theory/dem_contact_laws.md).\n",
       spec.friction);
 }
 

@@ -9,9 +9,15 @@
 /// poissonsRatio); YADE 2023.02a Ip2_FrictMat_FrictMat_MindlinPhys (k_s = kso sqrt(u_N),
 /// kso = 8 G* sqrt(R), measured; on a Box or Wall it takes R = r/2, for k_n as well).
 
+#include <string_view>
+
 #include "corlab/materials/material.hpp"
 
 namespace corlab::dem {
+
+/// The fragments' header line when no friction was asked for (every code's).
+inline constexpr std::string_view kFrictionlessComment =
+    "# Tangential: frictionless (corlab dem --friction MU).\n";
 
 /// Mindlin's effective shear modulus G* [Pa]: 1/G* = (2 - nu_1)/G_1 + (2 - nu_2)/G_2,
 /// G = E/(2 (1 + nu)).

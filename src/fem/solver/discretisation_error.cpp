@@ -80,8 +80,9 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
     return fine;
   }
   fine.e_error = error_bar(kDefaultErrorBar, e, ratios);
-  // The tangential results of an oblique impact: the same estimator on the same grids (NaN for
-  // a normal impact, whose e_t is NaN).
+  // The tangential results of an oblique impact: the same estimator on the same grids. A normal
+  // impact has neither: its e_t is NaN (so is e_t_error) and its spin is round-off, left
+  // without a bar.
   fine.e_t_error = error_bar(kDefaultErrorBar, e_t, ratios);
   if (std::isfinite(fine.e_t)) fine.omega_error = error_bar(kDefaultErrorBar, omega, ratios);
   if (!std::isfinite(fine.e_error)) fine.e_error_reason = reason;

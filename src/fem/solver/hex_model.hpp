@@ -20,7 +20,6 @@ namespace corlab::fem::hex_solver {
 
 using Vec = std::vector<double>;
 
-// The constant part of a run (half model).
 // One body's material point and wave speed.
 struct BodyMaterial {
   J2Plasticity material;
@@ -35,9 +34,11 @@ struct HexElementRun {
   Body body = Body::kSphere;
 };
 
+// The constant part of a run (half model).
 struct HexModel {
   HexMesh mesh;
-  std::array<std::vector<int>, 8> corner;  // corner[i][e]: node i of element e
+  std::array<std::vector<int>, 8> corner;  // mesh.hexes by corner (node i of element e): the
+                                           // element pass gathers one corner of a block at once
   std::vector<HexElementRun> runs;         // the elements, by body
   SimdLevel simd = SimdLevel::kBaseline;   // of the element pass
   std::array<BodyMaterial, 2> bodies;      // indexed by Body: sphere, substrate
@@ -58,8 +59,8 @@ struct HexModel {
   const SolverConfig* solver = nullptr;
 };
 
-// One node's position [m] and velocity [m/s], together: the element pass gathers both, and one
-// record is one or two cache lines where six arrays were six.
+// One node's position [m] and velocity [m/s], together: the element pass gathers both, from one
+// or two cache lines per node instead of six.
 struct NodeKinematics {
   double x, y, z, vx, vy, vz;
 };
@@ -96,7 +97,7 @@ struct HexState {
 std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, long dj = 0);
 
 /// Penalty contact (the rigid flat z = 0 or the block's top) and Coulomb friction: adds the
-/// contact forces to s.f*, books the stored energy and the frictional work. Returns whether any
+/// contact forces to s.force, books the stored energy and the frictional work. Returns whether any
 /// slave penetrates.
 bool contact_forces(const HexModel& m, HexState& s, double dt);
 
