@@ -66,11 +66,13 @@ int run_simulate(const SimulateOptions& opt) {
     };
   }
   std::vector<std::string> written;
-  control.on_fields = [&out, &written](double time, const fem::FieldSnapshot& snapshot) {
+  const auto write_fields = [&out, &written](double time, const auto& snapshot) {
     const auto file = out / fmt::format("fields_{:.6e}.vtu", time);
     fem::write_vtu(file, snapshot);
     written.push_back(file.string());
   };
+  control.on_fields = write_fields;
+  control.on_hex_fields = write_fields;
   const fem::ImpactResult result = opt.error_estimate
                                        ? fem::simulate_with_error_estimate(config, control)
                                        : fem::simulate(config, control);

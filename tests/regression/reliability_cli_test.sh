@@ -142,7 +142,7 @@ field file for it$" "$work/err" || fail "no warning for a late output time: $(ca
 limited "$corlab" simulate "${tiny[@]}" --set output.times=1e-5,3e-5 --quiet \
   --out "$work/early" > "$work/out" 2> "$work/err" || fail "output.times run: $(cat "$work/err")"
 grep -q "^corlab simulate: warning: output.times 1e-05 s (1 of 2) before the run's start at \
-2e-05 s (gap / velocity): the first step's field file stands for it$" "$work/err" ||
+2e-05 s (gap / normal speed): the first step's field file stands for it$" "$work/err" ||
   fail "no warning for an early output time: $(cat "$work/err")"
 "$corlab" simulate --set mesh.h_min=0.1e-3 --out "$work/sim" 2> "$work/sim.err" &
 pid=$!

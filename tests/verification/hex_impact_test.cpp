@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "corlab/fem/mesh/contact_estimate.hpp"
@@ -61,6 +62,61 @@ TEST(HexImpact, SlidingContactObeysTheRigidBodyIdentity) {
   EXPECT_NEAR(r.energy_friction / lost, 1.0, 0.03);
   EXPECT_LT(r.energy_balance_error, 5e-3);
   EXPECT_NEAR(r.rebound_angle, std::atan2(r.e_t * v_t, r.e_n * v_n) * 180.0 / M_PI, 1e-9);
+}
+
+// output.times counts from the release at impact.gap, as in the axisymmetric model. Half a Hertz
+// contact time after the first contact (gap / v_n later) the sphere's centre has slid by v_t t less
+// what friction took (mu (1 + e_n) v_n at most, over the contact), has come down by at least
+// Hertz's delta_max (this coarse mesh, a / h = 0.75, is softer than Hertz), and the lowest node is
+// in the flat by the penalty's penetration, near the run's deepest.
+TEST(HexImpact, FieldSnapshotsAreTakenFromTheRelease) {
+  ImpactConfig c = rigid_flat(1.0, 1.5e-3);
+  c.impact.angle = 60.0;
+  c.contact.friction = 0.1;
+  const double theta = c.impact.angle * M_PI / 180.0;
+  const double v_n = normal_velocity(c);
+  const double v_t = c.impact.velocity * std::sin(theta);
+  const HertzReference hertz = hertz_reference(c.sphere.radius, contact_effective_modulus(c),
+                                               c.sphere.material.density, v_n);
+  const double deepest = c.impact.gap / v_n + 0.5 * hertz.contact_time;
+  c.output.field_times = {deepest};
+  int calls = 0;
+  double lowest = 0.0;
+  SimulationControl control;
+  control.on_hex_fields = [&](double t, const HexFieldSnapshot& f) {
+    ++calls;
+    EXPECT_GE(t, deepest);
+    EXPECT_LT(t - deepest, 1e-3 * hertz.contact_time);  // the first step at or after it
+    const auto nn = static_cast<std::size_t>(f.mesh.num_nodes());
+    ASSERT_EQ(f.displacement.size(), 3 * nn);
+    ASSERT_EQ(f.velocity.size(), 3 * nn);
+    ASSERT_EQ(f.von_mises.size(), static_cast<std::size_t>(f.mesh.num_elements()));
+    // The node at the sphere's centre (which the spin does not move) and its lowest node.
+    std::size_t centre = 0;
+    std::size_t bottom = 0;
+    auto from_centre = [&](std::size_t n) {
+      return std::hypot(f.mesh.x[n] - f.displacement[3 * n], f.mesh.y[n] - f.displacement[3 * n + 1],
+                        f.mesh.z[n] - f.displacement[3 * n + 2] - c.sphere.radius);
+    };
+    for (std::size_t n = 0; n < nn; ++n) {
+      if (from_centre(n) < from_centre(centre)) centre = n;
+      if (f.mesh.node_body[n] == Body::kSphere && f.mesh.z[n] < f.mesh.z[bottom]) bottom = n;
+    }
+    const double slid = f.displacement[3 * centre] / (v_t * (t - deepest + 0.5 * hertz.contact_time));
+    EXPECT_LE(slid, 1.0);
+    EXPECT_GT(slid, 1.0 - c.contact.friction * 2.0 / std::tan(theta));
+    EXPECT_GT(-f.displacement[3 * centre + 2] / hertz.max_overlap, 1.0);
+    EXPECT_LT(-f.displacement[3 * centre + 2] / hertz.max_overlap, 1.5);
+    lowest = f.mesh.z[bottom];
+    EXPECT_EQ(*std::max_element(f.plastic_strain.begin(), f.plastic_strain.end()), 0.0);
+    EXPECT_GT(*std::max_element(f.von_mises.begin(), f.von_mises.end()), 0.0);
+  };
+  const HexImpactResult r = simulate_hex_impact(c, control);
+  ASSERT_EQ(r.status, RunStatus::kSeparated);
+  EXPECT_EQ(calls, 1);
+  EXPECT_GT(r.end_time, deepest);
+  EXPECT_LE(-lowest, r.penetration_max);
+  EXPECT_GT(-lowest, 0.8 * r.penetration_max);
 }
 
 // A normal elastic impact: the peak force and the contact time of Hertz (Johnson 1985,

@@ -123,10 +123,6 @@ void check_model(const ImpactConfig& c) {
     throw_invalid("impact.repeats", c.impact.repeats, "1 with the 3-D model");
   if (!c.mesh.file.empty())
     throw_invalid("mesh.file", c.mesh.file.string(), "empty with the 3-D model (its own mesh)");
-  if (!c.output.field_times.empty())
-    throw_invalid(
-        "output.times", c.output.field_times.front(),
-        "empty with the 3-D model (no field snapshots yet; `corlab mesh` writes its mesh)");
   try {
     validate(hex_mesh_options_for(c));
   } catch (const InputError& err) {

@@ -7,12 +7,14 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <string>
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/text.hpp"
 #include "corlab/core/text_file.hpp"
+#include "corlab/core/units.hpp"
 #include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/config/config_limits.hpp"
 
@@ -64,6 +66,14 @@ std::string_view to_string(SubstrateShape shape) {
 
 std::string_view to_string(SolverModel model) {
   return model == SolverModel::kThreeD ? "3d" : "axisymmetric";
+}
+
+double normal_velocity(const ImpactConfig& config) {
+  return config.impact.velocity * std::cos(config.impact.angle * units::kPi / 180.0);
+}
+
+double contact_start_time(const ImpactConfig& config) {
+  return config.impact.gap / normal_velocity(config);
 }
 
 double contact_effective_modulus(const ImpactConfig& config) {

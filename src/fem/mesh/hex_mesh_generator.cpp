@@ -170,8 +170,7 @@ void validate(const HexMeshOptions& o) {
 
 HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   ImpactConfig normal = config;
-  normal.impact.velocity =
-      config.impact.velocity * std::cos(config.impact.angle * units::kPi / 180.0);
+  normal.impact.velocity = normal_velocity(config);
   const double a = predicted_contact_radius(normal);
   HexMeshOptions o;
   o.sphere_radius = config.sphere.radius;

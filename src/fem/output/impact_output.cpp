@@ -109,7 +109,7 @@ std::string listed(std::vector<double> times, std::size_t all) {
 std::string unreached_output_times(const ImpactConfig& config, const ImpactResult& result) {
   // The run starts when the sphere reaches the substrate: the gap is crossed in exact free flight
   // (impact_model.cpp, t_start), so no step falls before it.
-  const double start = config.impact.gap / config.impact.velocity;
+  const double start = contact_start_time(config);
   std::vector<double> early;
   std::vector<double> late;
   for (const double t : config.output.field_times) {
@@ -120,7 +120,7 @@ std::string unreached_output_times(const ImpactConfig& config, const ImpactResul
   std::string text;
   if (!early.empty()) {
     text = fmt::format(
-        "output.times {} before the run's start at {:.6g} s (gap / velocity): the first step's "
+        "output.times {} before the run's start at {:.6g} s (gap / normal speed): the first step's "
         "field file stands for {}",
         listed(early, all), start, early.size() == 1 ? "it" : "them");
   }

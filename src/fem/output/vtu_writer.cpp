@@ -116,6 +116,24 @@ void write_vtu(const std::filesystem::path& file,
       point_fields, cell_fields);
 }
 
+namespace {
+
+// The element fields of either snapshot, empty ones skipped.
+std::vector<VtuField> stress_fields(const std::vector<double>& von_mises,
+                                    const std::vector<double>& pressure,
+                                    const std::vector<double>& plastic_strain) {
+  std::vector<VtuField> cells;
+  auto scalar_field = [&](const char* name, const std::vector<double>& a) {
+    if (!a.empty()) cells.push_back(VtuField{name, 1, a});
+  };
+  scalar_field("von_mises", von_mises);
+  scalar_field("pressure", pressure);
+  scalar_field("plastic_strain", plastic_strain);
+  return cells;
+}
+
+}  // namespace
+
 void write_vtu(const std::filesystem::path& file, const FieldSnapshot& s) {
   std::vector<VtuField> points;
   auto vector_field = [&](const char* name, const std::vector<double>& a,
@@ -135,14 +153,14 @@ void write_vtu(const std::filesystem::path& file, const FieldSnapshot& s) {
   };
   vector_field("displacement", s.displacement_r, s.displacement_z);
   vector_field("velocity", s.velocity_r, s.velocity_z);
-  std::vector<VtuField> cells;
-  auto scalar_field = [&](const char* name, const std::vector<double>& a) {
-    if (!a.empty()) cells.push_back(VtuField{name, 1, a});
-  };
-  scalar_field("von_mises", s.von_mises);
-  scalar_field("pressure", s.pressure);
-  scalar_field("plastic_strain", s.plastic_strain);
-  write_vtu(file, s.mesh, points, cells);
+  write_vtu(file, s.mesh, points, stress_fields(s.von_mises, s.pressure, s.plastic_strain));
+}
+
+void write_vtu(const std::filesystem::path& file, const HexFieldSnapshot& s) {
+  std::vector<VtuField> points;
+  if (!s.displacement.empty()) points.push_back(VtuField{"displacement", 3, s.displacement});
+  if (!s.velocity.empty()) points.push_back(VtuField{"velocity", 3, s.velocity});
+  write_vtu(file, s.mesh, points, stress_fields(s.von_mises, s.pressure, s.plastic_strain));
 }
 
 }  // namespace corlab::fem

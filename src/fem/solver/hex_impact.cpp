@@ -5,6 +5,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "corlab/fem/kernels/hex8.hpp"
 #include "corlab/fem/kernels/j2_plasticity.hpp"
 #include "corlab/fem/kernels/penalty_contact.hpp"
+#include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
@@ -89,7 +91,7 @@ void index_elements(HexModel& m) {
 HexModel make_model(const ImpactConfig& config) {
   HexModel m;
   const double theta = config.impact.angle * units::kPi / 180.0;
-  m.v_normal = config.impact.velocity * std::cos(theta);
+  m.v_normal = normal_velocity(config);
   m.v_tangent = config.impact.velocity * std::sin(theta);
   m.friction = config.contact.friction;
   const HexMeshOptions options = hex_mesh_options_for(config);
@@ -129,7 +131,9 @@ HexModel make_model(const ImpactConfig& config) {
   const HertzReference hertz =
       hertz_reference(config.sphere.radius, contact_effective_modulus(config),
                       config.sphere.material.density, m.v_normal);
-  m.t_max = config.solver.t_max > 0.0 ? config.solver.t_max : 20.0 * hertz.contact_time;
+  // The loop's clock starts at the first contact; solver.t_max counts from the release.
+  m.t_start = contact_start_time(config);
+  m.t_max = config.solver.t_max > 0.0 ? config.solver.t_max - m.t_start : 20.0 * hertz.contact_time;
   m.t_expected = 1.5 * hertz.contact_time;
   m.solver = &config.solver;
   return m;
@@ -238,6 +242,57 @@ VelocitySums update_velocities(const HexModel& m, HexState& s, double dt_avg) {
   return sums;
 }
 
+// The fields now, for VTU output; t_release: the time from the release [s].
+HexFieldSnapshot snapshot(const HexModel& m, const HexState& s, double t_release) {
+  HexFieldSnapshot f;
+  f.time = t_release;
+  f.mesh = m.mesh;
+  const std::size_t nn = s.node.size();
+  f.displacement.reserve(3 * nn);
+  f.velocity.reserve(3 * nn);
+  for (std::size_t n = 0; n < nn; ++n) {
+    const NodeKinematics& k = s.node[n];
+    f.mesh.x[n] = k.x;
+    f.mesh.y[n] = k.y;
+    f.mesh.z[n] = k.z;
+    f.displacement.insert(f.displacement.end(),
+                          {k.x - m.mesh.x[n], k.y - m.mesh.y[n], k.z - m.mesh.z[n]});
+    f.velocity.insert(f.velocity.end(), {k.vx, k.vy, k.vz});
+  }
+  const std::size_t ne = s.eps_p.size();
+  f.von_mises.resize(ne);
+  f.pressure.resize(ne);
+  f.plastic_strain = s.eps_p;
+  for (std::size_t e = 0; e < ne; ++e) {
+    const SymTensor3 st{s.stress[0][e], s.stress[1][e], s.stress[2][e],
+                        s.stress[3][e], s.stress[4][e], s.stress[5][e]};
+    f.von_mises[e] = von_mises(st);
+    f.pressure[e] = -trace(st) / 3.0;
+  }
+  return f;
+}
+
+// Calls on_hex_fields at each output.times that the clock has passed.
+class FieldTimes {
+ public:
+  FieldTimes(const ImpactConfig& config, const SimulationControl& control)
+      : times_(config.output.field_times), on_fields_(control.on_hex_fields) {
+    std::sort(times_.begin(), times_.end());
+  }
+  void poll(const HexModel& m, const HexState& s) {
+    const double t = m.t_start + s.t;
+    while (next_ < times_.size() && t >= times_[next_]) {
+      if (on_fields_) on_fields_(t, snapshot(m, s, t));
+      ++next_;
+    }
+  }
+
+ private:
+  std::vector<double> times_;
+  const std::function<void(double, const HexFieldSnapshot&)>& on_fields_;
+  std::size_t next_ = 0;
+};
+
 void finish(const HexModel& m, const HexState& s, HexImpactResult& r) {
   const Motion mo = sphere_motion(m, s);
   r.vx_final = mo.vx;
@@ -249,6 +304,8 @@ void finish(const HexModel& m, const HexState& s, HexImpactResult& r) {
   r.energy_friction = 2.0 * s.w_friction;
   r.energy_dissipated_plastic = 2.0 * s.w_plastic;
   r.energy_hourglass = 2.0 * s.w_hourglass;
+  r.energy_viscous = 2.0 * s.w_viscous;
+  r.end_time = m.t_start + s.t;
   r.plastic_strain_max = s.eps_p_max;
   r.penetration_max = s.penetration_max;
   r.steps = s.steps;
@@ -264,11 +321,14 @@ HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationContr
   r.elements = m.mesh.num_elements();
   r.nodes = m.mesh.num_nodes();
   r.h_contact = m.h_contact;
+  r.simd = std::string(to_string(m.simd));
   r.time_step = m.dt_initial;
   const double v0 = config.impact.velocity;
   const double energy0 = 0.5 * m.total_mass * v0 * v0;
   r.energy_initial = 2.0 * energy0;
   SeparationRule rule(m.t_wave, m.v_normal);
+  FieldTimes fields(config, control);
+  fields.poll(m, s);  // times before the first contact: the state at contact stands for them
   double dt_prev = 0.0;
   while (true) {
     const double dt = s.dt;
@@ -290,6 +350,7 @@ HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationContr
       break;
     }
     r.energy_balance_error = std::max(r.energy_balance_error, std::abs(balance) / energy0);
+    fields.poll(m, s);
     rule.accumulate(mo.kinetic, dt);
     const auto decision = rule.update(s.t, dt_prev, penetrating, mo.vz);
     dt_prev = dt;

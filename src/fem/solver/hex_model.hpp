@@ -52,7 +52,8 @@ struct HexModel {
   double v_tangent = 0.0;                  // [m/s] (towards +x)
   double friction = 0.0;                   // mu [-]
   double dt_initial = 0.0;                 // [s]
-  double t_max = 0.0;                      // [s]
+  double t_start = 0.0;                    // release to first contact (the clock's origin) [s]
+  double t_max = 0.0;                      // from the first contact [s]
   double t_wave = 0.0;                     // 4 R / c_d [s]
   double t_expected = 0.0;                 // expected end: 1.5 Hertz contact times [s]
   double h_contact = 0.0;                  // [m]

@@ -341,7 +341,7 @@ void set_time_scales(const ImpactConfig& config, ImpactModel& m) {
   m.velocity = config.impact.velocity;
   m.safety_factor = sc.safety_factor;
   m.dt_initial = sc.safety_factor * m.dt_critical;
-  m.t_start = config.impact.gap / m.velocity;
+  m.t_start = contact_start_time(config);
   const double t_hertz = hertz_reference(config).contact_time;
   m.t_max = sc.t_max > 0.0 ? sc.t_max : m.t_start + kDefaultDurationInContactTimes * t_hertz;
   m.t_wave = kWaveTransits * config.sphere.radius / m.sphere.wave_speed;

@@ -34,6 +34,8 @@ ImpactResult result_of(const HexImpactResult& h) {
   r.energy_initial = h.energy_initial;
   r.energy_dissipated_plastic = h.energy_dissipated_plastic;
   r.energy_hourglass = h.energy_hourglass;
+  r.energy_viscous = h.energy_viscous;
+  r.end_time = h.end_time;
   r.energy_balance_error = h.energy_balance_error;
   r.penetration_max = h.penetration_max;
   r.elements = h.elements;
@@ -43,6 +45,7 @@ ImpactResult result_of(const HexImpactResult& h) {
   r.h_contact = h.h_contact;
   r.time_step = h.time_step;
   r.sphere_velocity_final = h.vz_final;
+  r.simd = h.simd;
   r.wall_s = h.wall_s;
   r.element_steps_per_s = h.wall_s > 0.0 ? static_cast<double>(r.element_updates) / h.wall_s : 0.0;
   return r;

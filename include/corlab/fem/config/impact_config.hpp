@@ -155,6 +155,13 @@ inline bool sphere_target(const ImpactConfig& config) {
   return config.substrate.shape == SubstrateShape::kSphere;
 }
 
+/// Normal approach speed v cos(impact.angle) [m/s].
+double normal_velocity(const ImpactConfig& config);
+
+/// Time from the release at impact.gap to the first contact, gap / normal speed [s]: the origin
+/// of output.times and of the run's end_time is the release, in both models.
+double contact_start_time(const ImpactConfig& config);
+
 /// E* of the contact [Pa]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, the second term 0 for the
 /// rigid flat.
 double contact_effective_modulus(const ImpactConfig& config);

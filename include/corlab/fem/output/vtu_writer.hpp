@@ -39,4 +39,7 @@ void write_vtu(const std::filesystem::path& file,
 /// Empty snapshot vectors are skipped.
 void write_vtu(const std::filesystem::path& file, const FieldSnapshot& snapshot);
 
+/// The same for the 3-D half model: "displacement" and "velocity" with components (x, y, z).
+void write_vtu(const std::filesystem::path& file, const HexFieldSnapshot& snapshot);
+
 }  // namespace corlab::fem

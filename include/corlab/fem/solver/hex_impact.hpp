@@ -11,6 +11,8 @@
 /// axisymmetric solver's stop rule (separation_rule.hpp) on the normal velocity. The second
 /// sphere (substrate.shape = sphere) is not modelled in 3-D yet.
 
+#include <string>
+
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/solver/run_status.hpp"
 #include "corlab/fem/solver/simulate.hpp"
@@ -33,11 +35,14 @@ struct HexImpactResult {
   double energy_friction = 0.0;  ///< frictional dissipation, whole sphere [J]
   double energy_dissipated_plastic = 0.0;  ///< [J]
   double energy_hourglass = 0.0;           ///< at the end [J]
+  double energy_viscous = 0.0;             ///< bulk-viscosity dissipation [J]
   double energy_balance_error = 0.0;       ///< max over the run of |balance| / initial [-]
   double plastic_strain_max = 0.0;         ///< [-]
   double penetration_max = 0.0;            ///< deepest slave penetration [m]
   double h_contact = 0.0;                  ///< element size at the lowest point [m]
   double time_step = 0.0;                  ///< initial step [s]
+  double end_time = 0.0;                   ///< simulated time at the end, from the release [s]
+  std::string simd;                        ///< the element pass's SIMD level
   int elements = 0;                        ///< of the half model
   int nodes = 0;
   long long steps = 0;
@@ -48,7 +53,8 @@ struct HexImpactResult {
 /// material, radius and depth; rigid: the plane z = 0): impact.velocity at impact.angle with
 /// contact.friction; the mesh and solver keys apply. The config must have passed validate()
 /// (which refuses what the 3-D model lacks: a second sphere, repeats, mesh files). From `control`:
-/// cancel (status cancelled) and progress (the fraction of the expected simulated time).
+/// cancel (status cancelled), progress (the fraction of the expected simulated time) and
+/// on_hex_fields (at each output.times, counted from the release at impact.gap).
 HexImpactResult simulate_hex_impact(const ImpactConfig& config,
                                     const SimulationControl& control = {});
 

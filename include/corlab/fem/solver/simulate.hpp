@@ -21,8 +21,10 @@ struct SimulationControl {
   /// Stop at maximum compression (the sphere's c.o.m. velocity turns from approach to rebound),
   /// with status kMaxCompression: yield-onset probes need only the loading half.
   bool stop_at_max_compression = false;
-  /// Called at each requested field time with the current mesh and fields (for VTU output).
-  std::function<void(double time, const struct FieldSnapshot&)> on_fields;
+  /// Called at each requested field time (output.times) with the current mesh and fields (for
+  /// VTU output): on_fields by the axisymmetric model, on_hex_fields by the 3-D one.
+  std::function<void(double time, const FieldSnapshot&)> on_fields;
+  std::function<void(double time, const HexFieldSnapshot&)> on_hex_fields;
   /// The caller already ran validate() on this very config (the CLI before it creates the output
   /// directory, a sweep spec for each of its runs), so simulate() does not check it again:
   /// a config is validated once, where it enters.

@@ -106,8 +106,7 @@ TEST(VtuWriter, RejectsMisSizedFields) {
   EXPECT_THROW(write_vtu(out_dir() / "no_such_dir" / "x.vtu", m), InputError);
 }
 
-// The 3-D half model: hexahedra (VTK type 12), eight nodes each, 3-D points.
-TEST(VtuWriter, WritesTheHexahedralMesh) {
+HexMesh small_hex_mesh() {
   HexMeshOptions o;
   o.sphere_radius = 10e-3;
   o.h_contact = 0.5e-3;
@@ -118,7 +117,12 @@ TEST(VtuWriter, WritesTheHexahedralMesh) {
   o.block = true;
   o.block_half_width = 10e-3;
   o.block_depth = 10e-3;
-  const HexMesh m = generate_hex_impact_mesh(o);
+  return generate_hex_impact_mesh(o);
+}
+
+// The 3-D half model: hexahedra (VTK type 12), eight nodes each, 3-D points.
+TEST(VtuWriter, WritesTheHexahedralMesh) {
+  const HexMesh m = small_hex_mesh();
   const auto file = out_dir() / "hex.vtu";
   write_vtu(file, m);
   const std::string text = slurp(file);
@@ -133,6 +137,29 @@ TEST(VtuWriter, WritesTheHexahedralMesh) {
   const std::vector<double> body = array_values(text, "body");
   EXPECT_EQ(body.front(), 0.0);
   EXPECT_EQ(body.back(), 1.0);
+}
+
+// A 3-D snapshot: its vectors keep their three components in order; a mis-sized one is refused.
+TEST(VtuWriter, WritesAHexSnapshot) {
+  HexFieldSnapshot snap;
+  snap.mesh = small_hex_mesh();
+  const auto nn = static_cast<std::size_t>(snap.mesh.num_nodes());
+  const auto ne = static_cast<std::size_t>(snap.mesh.num_elements());
+  for (std::size_t n = 0; n < nn; ++n) snap.velocity.insert(snap.velocity.end(), {1.0, 2.0, -3.0});
+  snap.von_mises.assign(ne, 2e8);
+  snap.pressure.assign(ne, -1e8);
+  const auto file = out_dir() / "hex_snapshot.vtu";
+  write_vtu(file, snap);
+  const std::string text = slurp(file);
+  const std::vector<double> velocity = array_values(text, "velocity");
+  ASSERT_EQ(velocity.size(), 3 * nn);
+  EXPECT_EQ(velocity[3 * nn - 3], 1.0);
+  EXPECT_EQ(velocity[3 * nn - 2], 2.0);
+  EXPECT_EQ(velocity[3 * nn - 1], -3.0);
+  EXPECT_EQ(array_values(text, "pressure").size(), ne);
+  EXPECT_EQ(text.find("displacement"), std::string::npos);  // empty fields are skipped
+  snap.displacement.assign(nn, 0.0);                         // one component per node: refused
+  EXPECT_THROW(write_vtu(file, snap), InputError);
 }
 
 }  // namespace
