@@ -7,7 +7,8 @@ import os
 
 def read_vtu(path):
     """An ASCII .vtu of corlab's writer (include/corlab/fem/output/vtu_writer.hpp) as a dict:
-    ``points`` (N x 3, deformed (r, z, 0) [m]), ``quads`` (M x 4 node indices), ``cells``
+    ``points`` (N x 3, deformed: (r, z, 0) of the axisymmetric model, (x, y, z) of the 3-D one
+    [m]), ``quads`` (M x 4 node indices) or ``hexes`` (M x 8, the 3-D model), ``cells``
     {name: (M,) or (M x k)} and ``point_data`` {name: (N,) or (N x k)}."""
     import xml.etree.ElementTree as ET
 
@@ -31,10 +32,12 @@ def read_vtu(path):
     points = values(piece.find("Points/DataArray"), n_points)
     cells = {a.get("Name"): a for a in piece.findall("Cells/DataArray")}
     offsets = values(cells["offsets"], n_cells)
-    if not np.array_equal(offsets, 4 * np.arange(1, n_cells + 1)):
-        raise ValueError(f"{path}: only quadrilateral cells are supported")
-    quads = values(cells["connectivity"], 4 * n_cells).reshape(n_cells, 4)
-    return {"points": points.reshape(n_points, 3), "quads": quads,
+    shape = {4: "quads", 8: "hexes"}
+    per_cell = int(offsets[0]) if n_cells else 4
+    if per_cell not in shape or not np.array_equal(offsets, per_cell * np.arange(1, n_cells + 1)):
+        raise ValueError(f"{path}: only quadrilateral or hexahedral cells are supported")
+    nodes = values(cells["connectivity"], per_cell * n_cells).reshape(n_cells, per_cell)
+    return {"points": points.reshape(n_points, 3), shape[per_cell]: nodes,
             "cells": {a.get("Name"): values(a, n_cells)
                       for a in piece.findall("CellData/DataArray")},
             "point_data": {a.get("Name"): values(a, n_points)

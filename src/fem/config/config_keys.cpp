@@ -171,8 +171,13 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
   t.push_back(entry(
       "solver.hourglass", "[-]",
       closed(0.0, 0.15, "LS-DYNA: stiffness hourglass above 0.15 may be unstable"),
-      "Flanagan-Belytschko stiffness hourglass coefficient",
+      "Flanagan-Belytschko stiffness hourglass coefficient (axisymmetric quads)",
       +[](ImpactConfig& c) { return &c.solver.hourglass; }));
+  t.push_back(entry(
+      "solver.hourglass_3d", "[-]",
+      closed(0.0, 0.15, "LS-DYNA: stiffness hourglass above 0.15 may be unstable"),
+      "the same for the 3-D model's hexahedra",
+      +[](ImpactConfig& c) { return &c.solver.hourglass_3d; }));
   t.push_back(entry(
       "solver.bulk_viscosity_linear", "[-]",
       closed(0.0, 0.12, "2 x the ABAQUS/Explicit and LS-DYNA default 0.06"),

@@ -204,7 +204,7 @@ struct HexBlockState {
   const SolverConfig& sc = *m.solver;
   return HexBody{
       b.material,  b.density, b.wave_speed, sc.bulk_viscosity_linear, sc.bulk_viscosity_quadratic,
-      sc.hourglass};
+      sc.hourglass_3d};
 }
 
 [[gnu::always_inline]] inline HexElementSums pass_body(const HexModel& m, HexState& s, double dt) {

@@ -103,6 +103,9 @@ struct SolverConfig {
   SolverModel model = SolverModel::kAxisymmetric;
   double safety_factor = 0.8;  ///< dt = safety_factor x stable step estimate [-]
   double hourglass = 0.05;     ///< stiffness hourglass coefficient (Flanagan-Belytschko) [-]
+  /// The same for the 3-D model's hexahedra [-]: 0.05 lets a contact sliding over the deformable
+  /// flat pump energy into the flat's hourglass modes (docs/theory/solver3d.md).
+  double hourglass_3d = 0.15;
   double bulk_viscosity_linear = 0.06;    ///< b1 [-] (ABAQUS/Explicit default)
   double bulk_viscosity_quadratic = 1.2;  ///< b2 [-] (ABAQUS/Explicit default)
   /// Contact penalty k = penalty_scale x m_eff (2 / dt_crit)^2, dt_crit = the initial stable step
