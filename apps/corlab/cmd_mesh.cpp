@@ -61,7 +61,7 @@ void print_explicit_cost(const fem::Mesh& mesh,
 // The 3-D model's mesh: its options, element counts and DIR/mesh.vtu.
 int write_hex_mesh(const fem::ImpactConfig& config, const std::string& out) {
   const fem::HexMeshOptions o = fem::hex_mesh_options_for(config);
-  const fem::HexMesh mesh = fem::generate_hex_impact_mesh(o);
+  const fem::HexMesh mesh = fem::build_hex_impact_mesh(config);
   int sphere = 0;
   for (const fem::Body b : mesh.element_body) sphere += b == fem::Body::kSphere ? 1 : 0;
   fmt::print(

@@ -51,7 +51,9 @@ void check_geometry(const ImpactConfig& c) {
   if (c.mesh.transitions != 0.0 && c.mesh.transitions != 1.0) {
     throw_invalid("mesh.transitions", c.mesh.transitions, "0 (off) or 1 (on)");
   }
-  if (!c.mesh.file.empty()) {
+  // The axisymmetric model takes both bodies from mesh.file; the 3-D model only its half sphere,
+  // and builds the flat from these keys.
+  if (!c.mesh.file.empty() && !uses_3d_model(c)) {
     if (rigid_target(c)) {
       throw_invalid("substrate.shape", "rigid",
                     "flat with mesh.file (the rigid flat is for the built-in sphere mesh)");
@@ -121,8 +123,6 @@ void check_model(const ImpactConfig& c) {
                   "second sphere is not built yet");
   if (c.impact.repeats != 1)
     throw_invalid("impact.repeats", c.impact.repeats, "1 with the 3-D model");
-  if (!c.mesh.file.empty())
-    throw_invalid("mesh.file", c.mesh.file.string(), "empty with the 3-D model (its own mesh)");
   try {
     validate(hex_mesh_options_for(c));
   } catch (const InputError& err) {

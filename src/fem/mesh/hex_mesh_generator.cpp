@@ -13,6 +13,7 @@
 #include "corlab/core/units.hpp"
 #include "corlab/fem/kernels/hex8.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/gmsh_hex_reader.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 
 namespace corlab::fem {
@@ -273,6 +274,14 @@ HexMesh generate_hex_sphere(const HexMeshOptions& o) {
 
 HexMesh generate_hex_impact_mesh(const HexMeshOptions& o) {
   HexMesh mesh = generate_hex_sphere(o);
+  if (o.block) append_hex_block(o, mesh);
+  return mesh;
+}
+
+HexMesh build_hex_impact_mesh(const ImpactConfig& config) {
+  const HexMeshOptions o = hex_mesh_options_for(config);
+  if (config.mesh.file.empty()) return generate_hex_impact_mesh(o);
+  HexMesh mesh = read_gmsh_hex_sphere(config.mesh.file, config.sphere.radius);
   if (o.block) append_hex_block(o, mesh);
   return mesh;
 }

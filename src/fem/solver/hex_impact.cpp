@@ -96,7 +96,7 @@ HexModel make_model(const ImpactConfig& config) {
   m.friction = config.contact.friction;
   const HexMeshOptions options = hex_mesh_options_for(config);
   m.h_contact = options.h_contact;
-  m.mesh = generate_hex_impact_mesh(options);
+  m.mesh = build_hex_impact_mesh(config);
   m.deformable_target = options.block;
   for (const Body b : {Body::kSphere, Body::kSubstrate}) {
     const Material& mat = b == Body::kSphere ? config.sphere.material : config.substrate.material;

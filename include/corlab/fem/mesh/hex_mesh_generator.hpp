@@ -63,4 +63,8 @@ HexMesh generate_hex_sphere(const HexMeshOptions& options);
 /// The impact's mesh: the half sphere, and the flat's half block when options.block.
 HexMesh generate_hex_impact_mesh(const HexMeshOptions& options);
 
+/// The impact's mesh of a configuration: the half sphere built in, or read from mesh.file
+/// (gmsh_hex_reader.hpp), and the flat's half block of hex_mesh_options_for(config).
+HexMesh build_hex_impact_mesh(const ImpactConfig& config);
+
 }  // namespace corlab::fem
