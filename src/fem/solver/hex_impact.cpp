@@ -313,6 +313,15 @@ void finish(const HexModel& m, const HexState& s, HexImpactResult& r) {
 
 }  // namespace
 
+RunCost estimate_hex_run_cost(const ImpactConfig& config) {
+  const HexModel m = make_model(config);
+  RunCost cost;
+  cost.elements = m.mesh.num_elements();
+  cost.time_step = m.dt_initial;
+  cost.expected_steps = m.t_expected / m.dt_initial;
+  return cost;
+}
+
 HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
   const auto start = std::chrono::steady_clock::now();
   const HexModel m = make_model(config);

@@ -14,6 +14,7 @@
 #include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/mesh/hex_mesh.hpp"
 #include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/fem/solver/run_cost.hpp"
 #include "corlab/fem/solver/simd_level.hpp"
 
 namespace corlab::fem::hex_solver {
@@ -101,6 +102,10 @@ std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, lon
 /// contact forces to s.force, books the stored energy and the frictional work. Returns whether any
 /// slave penetrates.
 bool contact_forces(const HexModel& m, HexState& s, double dt);
+
+/// The 3-D run's a-priori cost (estimate_run_cost for the 3-D model): its mesh, first step and
+/// the steps to the expected end, 1.5 Hertz contact times.
+RunCost estimate_hex_run_cost(const ImpactConfig& config);
 
 /// The run (simulate_hex_impact's body).
 HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control);

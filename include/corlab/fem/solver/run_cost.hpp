@@ -2,7 +2,8 @@
 /// @file run_cost.hpp
 /// A-priori cost of one impact run, for scheduling (longest first) and budgets: the mesh the run
 /// would use, its smallest stable step, and the expected number of steps to the end of a
-/// rebound (1.3 Hertz contact times + 4 sphere wave transits, as the progress estimate).
+/// rebound (1.3 Hertz contact times + 4 sphere wave transits, as the progress estimate; 1.5 Hertz
+/// contact times for the 3-D model).
 
 #include "corlab/fem/config/impact_config.hpp"
 
