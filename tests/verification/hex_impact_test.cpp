@@ -95,14 +95,16 @@ TEST(HexImpact, FieldSnapshotsAreTakenFromTheRelease) {
     std::size_t centre = 0;
     std::size_t bottom = 0;
     auto from_centre = [&](std::size_t n) {
-      return std::hypot(f.mesh.x[n] - f.displacement[3 * n], f.mesh.y[n] - f.displacement[3 * n + 1],
+      return std::hypot(f.mesh.x[n] - f.displacement[3 * n],
+                        f.mesh.y[n] - f.displacement[3 * n + 1],
                         f.mesh.z[n] - f.displacement[3 * n + 2] - c.sphere.radius);
     };
     for (std::size_t n = 0; n < nn; ++n) {
       if (from_centre(n) < from_centre(centre)) centre = n;
       if (f.mesh.node_body[n] == Body::kSphere && f.mesh.z[n] < f.mesh.z[bottom]) bottom = n;
     }
-    const double slid = f.displacement[3 * centre] / (v_t * (t - deepest + 0.5 * hertz.contact_time));
+    const double slid =
+        f.displacement[3 * centre] / (v_t * (t - deepest + 0.5 * hertz.contact_time));
     EXPECT_LE(slid, 1.0);
     EXPECT_GT(slid, 1.0 - c.contact.friction * 2.0 / std::tan(theta));
     EXPECT_GT(-f.displacement[3 * centre + 2] / hertz.max_overlap, 1.0);
@@ -212,8 +214,8 @@ TEST(HexImpact, FrictionlessSlidingOnTheDeformableFlatKeepsItsEnergy) {
   const HexImpactResult r = simulate_hex_impact(c);
   ASSERT_EQ(r.status, RunStatus::kSeparated);
   EXPECT_LT(r.energy_balance_error, 1e-3);  // measured 1.1e-4
-  EXPECT_NEAR(r.e_t, 1.0, 1.5e-3);           // 1.0005
-  EXPECT_NEAR(r.e_n, 0.998, 3e-3);           // 0.9982: the flat's waves keep a little
+  EXPECT_NEAR(r.e_t, 1.0, 1.5e-3);          // 1.0005
+  EXPECT_NEAR(r.e_n, 0.998, 3e-3);          // 0.9982: the flat's waves keep a little
   EXPECT_LT(std::abs(r.omega) * c.sphere.radius, 2e-3 * c.impact.velocity);  // 1.2e-3
   EXPECT_LT(r.energy_hourglass, 1e-4 * r.energy_initial);
 }

@@ -51,7 +51,8 @@ std::vector<int> group_nodes(int tag,
   std::vector<int> nodes;
   for (const std::size_t t : tags) {
     const auto it = index.find(t);
-    if (it == index.end()) refuse(file, "physical group \"" + name + "\" has nodes outside \"sphere\"");
+    if (it == index.end())
+      refuse(file, "physical group \"" + name + "\" has nodes outside \"sphere\"");
     nodes.push_back(it->second);
   }
   if (nodes.empty()) refuse(file, "physical group \"" + name + "\" has no nodes");
@@ -135,9 +136,8 @@ HexMesh read_opened_hex_sphere(const std::filesystem::path& file, double radius)
   const int contact_tag = gmsh_io::require_group(groups2, "sphere_contact", 2, file);
   const int symmetry_tag = gmsh_io::require_group(groups2, "symmetry", 2, file);
   std::unordered_map<std::size_t, int> index;
-  HexMesh mesh =
-      sphere_body(gmsh_io::group_elements(3, sphere_tag, kHex8, "sphere", file),
-                  gmsh_io::node_coordinates(), index);
+  HexMesh mesh = sphere_body(gmsh_io::group_elements(3, sphere_tag, kHex8, "sphere", file),
+                             gmsh_io::node_coordinates(), index);
   mesh.sphere_surface_nodes = group_nodes(contact_tag, "sphere_contact", index, file);
   mesh.symmetry_nodes = group_nodes(symmetry_tag, "symmetry", index, file);
   check_half_sphere(mesh, radius, file);

@@ -202,9 +202,12 @@ struct HexBlockState {
 [[gnu::always_inline]] inline HexBody body_constants(const HexModel& m, Body body) {
   const BodyMaterial& b = m.bodies[static_cast<std::size_t>(body)];
   const SolverConfig& sc = *m.solver;
-  return HexBody{
-      b.material,  b.density, b.wave_speed, sc.bulk_viscosity_linear, sc.bulk_viscosity_quadratic,
-      sc.hourglass_3d};
+  return HexBody{b.material,
+                 b.density,
+                 b.wave_speed,
+                 sc.bulk_viscosity_linear,
+                 sc.bulk_viscosity_quadratic,
+                 sc.hourglass_3d};
 }
 
 [[gnu::always_inline]] inline HexElementSums pass_body(const HexModel& m, HexState& s, double dt) {

@@ -163,9 +163,9 @@ TEST(GmshHexReader, RefusesWhatIsNotTheHalfSphere) {
   };
   const auto good = write_msh("good.msh", built);
   expect(good, 2.0 * r, "sphere.radius = 0.07 m asks for 0.14 m");
-  const std::string inverted = fmt::format("5 2 1 1 {} {} {} {} {} {} {} {}", hex[4] + 1,
-                                           hex[5] + 1, hex[6] + 1, hex[7] + 1, hex[0] + 1,
-                                           hex[1] + 1, hex[2] + 1, hex[3] + 1);
+  const std::string inverted =
+      fmt::format("5 2 1 1 {} {} {} {} {} {} {} {}", hex[4] + 1, hex[5] + 1, hex[6] + 1, hex[7] + 1,
+                  hex[0] + 1, hex[1] + 1, hex[2] + 1, hex[3] + 1);
   expect(write_msh("inverted.msh", built, inverted), r, "hexahedron 1 of \"sphere\" is inverted");
   const std::string tetra =
       fmt::format("4 2 1 1 {} {} {} {}", hex[0] + 1, hex[1] + 1, hex[3] + 1, hex[4] + 1);

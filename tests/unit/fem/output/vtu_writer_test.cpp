@@ -158,7 +158,7 @@ TEST(VtuWriter, WritesAHexSnapshot) {
   EXPECT_EQ(velocity[3 * nn - 1], -3.0);
   EXPECT_EQ(array_values(text, "pressure").size(), ne);
   EXPECT_EQ(text.find("displacement"), std::string::npos);  // empty fields are skipped
-  snap.displacement.assign(nn, 0.0);                         // one component per node: refused
+  snap.displacement.assign(nn, 0.0);                        // one component per node: refused
   EXPECT_THROW(write_vtu(file, snap), InputError);
 }
 
