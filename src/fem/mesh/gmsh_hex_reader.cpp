@@ -52,7 +52,7 @@ std::vector<int> group_nodes(int tag,
   for (const std::size_t t : tags) {
     const auto it = index.find(t);
     if (it == index.end())
-      refuse(file, "physical group \"" + name + "\" has nodes outside \"sphere\"");
+      refuse(file, "physical group \"" + name + R"(" has nodes outside "sphere")");
     nodes.push_back(it->second);
   }
   if (nodes.empty()) refuse(file, "physical group \"" + name + "\" has no nodes");
