@@ -12,6 +12,7 @@
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/solver/simulate.hpp"
 #include "corlab/restitution/oblique_impact.hpp"
+#include "support/hex_cases.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -34,9 +35,7 @@ ImpactConfig rigid_flat(double velocity, double h) {
 // follows from the same impulse, omega = mu (1 + e_n) v_n m R / I (5/2 mu (1 + e_n) v_n / R for
 // the solid sphere's I = 2/5 m R^2).
 TEST(HexImpact, SlidingContactObeysTheRigidBodyIdentity) {
-  ImpactConfig c = rigid_flat(1.0, 1.5e-3);
-  c.impact.angle = 60.0;
-  c.contact.friction = 0.1;
+  const ImpactConfig c = test::sliding_on_rigid_flat();
   const double theta = c.impact.angle * M_PI / 180.0;
   const HexImpactResult r = simulate_hex_impact(c);
   ASSERT_EQ(r.status, RunStatus::kSeparated);
@@ -70,9 +69,7 @@ TEST(HexImpact, SlidingContactObeysTheRigidBodyIdentity) {
 // Hertz's delta_max (this coarse mesh, a / h = 0.75, is softer than Hertz), and the lowest node is
 // in the flat by the penalty's penetration, near the run's deepest.
 TEST(HexImpact, FieldSnapshotsAreTakenFromTheRelease) {
-  ImpactConfig c = rigid_flat(1.0, 1.5e-3);
-  c.impact.angle = 60.0;
-  c.contact.friction = 0.1;
+  ImpactConfig c = test::sliding_on_rigid_flat();
   const double theta = c.impact.angle * M_PI / 180.0;
   const double v_n = normal_velocity(c);
   const double v_t = c.impact.velocity * std::sin(theta);
@@ -166,15 +163,7 @@ TEST(HexImpact, ElasticPlasticNormalImpactMatchesTheAxisymmetricSolver) {
 // h = 1.5 mm; the normal force is Hertz's with both bodies' compliance (like materials: friction
 // does not change the pressure, Johnson 1985 section 7.1), within 5 % at this coarse mesh.
 TEST(HexImpact, SlidingOnTheDeformableFlatObeysTheIdentity) {
-  ImpactConfig c;
-  c.sphere.material.yield_stress.reset();
-  c.substrate.material.yield_stress.reset();
-  c.impact.velocity = 10.0;
-  c.impact.angle = 60.0;
-  c.contact.friction = 0.1;
-  c.mesh.h_min = 1.5e-3;
-  c.mesh.contact_elements = 0.0;
-  validate(c);
+  const ImpactConfig c = test::sliding_on_elastic_flat(0.1, 1.5e-3);
   ASSERT_TRUE(uses_3d_model(c));
   const HexImpactResult r = simulate_hex_impact(c);
   ASSERT_EQ(r.status, RunStatus::kSeparated);
@@ -203,14 +192,7 @@ TEST(HexImpact, SlidingOnTheDeformableFlatObeysTheIdentity) {
 // contact pumps energy into the flat's hourglass modes: the balance was off by 1.8 % of E0,
 // e_n 1.019, e_t 0.989 (docs/theory/solver3d.md).
 TEST(HexImpact, FrictionlessSlidingOnTheDeformableFlatKeepsItsEnergy) {
-  ImpactConfig c;
-  c.sphere.material.yield_stress.reset();
-  c.substrate.material.yield_stress.reset();
-  c.impact.velocity = 10.0;
-  c.impact.angle = 60.0;
-  c.mesh.h_min = 1e-3;
-  c.mesh.contact_elements = 0.0;
-  validate(c);
+  const ImpactConfig c = test::sliding_on_elastic_flat(0.0, 1e-3);
   const HexImpactResult r = simulate_hex_impact(c);
   ASSERT_EQ(r.status, RunStatus::kSeparated);
   EXPECT_LT(r.energy_balance_error, 1e-3);  // measured 1.1e-4

@@ -18,16 +18,11 @@
 #include "corlab/fem/mesh/gmsh_reader.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "corlab/fem/solver/hex_impact.hpp"
+#include "support/hex_cases.hpp"
 #include "support/scratch_files.hpp"
 
 namespace corlab::fem {
 namespace {
-
-std::filesystem::path out_dir() {
-  const auto dir = std::filesystem::path(CORLAB_BINARY_DIR) / "test_output" / "gmsh_hex_reader";
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 // The sphere's hexahedra's faces whose four nodes all lie in `nodes` (each face once), as Gmsh
 // quads.
@@ -81,23 +76,12 @@ std::filesystem::path write_msh(const std::string& name,
   for (std::size_t k = 0; k < elements.size(); ++k)
     text += fmt::format("{} {}\n", k + 1, elements[k]);
   text += "$EndElements\n";
-  const auto path = out_dir() / name;
+  const auto path = test::fresh_dir(name) / name;  // one folder per file: all stay readable
   test::spit(path, text);
   return path;
 }
 
-// The paper's 35 mm sphere on the rigid flat at 60 deg, coarse (h = 1.5 mm).
-ImpactConfig oblique_on_rigid_flat() {
-  ImpactConfig c;
-  c.substrate.shape = SubstrateShape::kRigid;
-  c.sphere.material.yield_stress.reset();
-  c.impact.velocity = 1.0;
-  c.impact.angle = 60.0;
-  c.contact.friction = 0.1;
-  c.mesh.h_min = 1.5e-3;
-  c.mesh.contact_elements = 0.0;
-  return c;
-}
+using test::sliding_on_rigid_flat;
 
 std::vector<int> sorted(std::vector<int> v) {
   std::sort(v.begin(), v.end());
@@ -106,7 +90,7 @@ std::vector<int> sorted(std::vector<int> v) {
 
 TEST(GmshHexReader, ReadsCorlabsOwnSphereBack) {
   if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
-  const ImpactConfig c = oblique_on_rigid_flat();
+  const ImpactConfig c = sliding_on_rigid_flat();
   const HexMesh built = build_hex_impact_mesh(c);
   const HexMesh read = read_gmsh_hex_sphere(write_msh("sphere.msh", built), c.sphere.radius);
   EXPECT_EQ(read.x, built.x);
@@ -120,7 +104,7 @@ TEST(GmshHexReader, ReadsCorlabsOwnSphereBack) {
 // mesh.file takes the sphere; the deformable flat's block is appended as for the built-in one.
 TEST(GmshHexReader, GivesTheBuiltInRunAndBlock) {
   if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
-  ImpactConfig c = oblique_on_rigid_flat();
+  ImpactConfig c = sliding_on_rigid_flat();
   const HexImpactResult built = simulate_hex_impact(c);
   c.mesh.file = write_msh("run.msh", build_hex_impact_mesh(c));
   validate(c);
@@ -152,7 +136,7 @@ std::string refusal(const std::filesystem::path& file, double radius) {
 
 TEST(GmshHexReader, RefusesWhatIsNotTheHalfSphere) {
   if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
-  const ImpactConfig c = oblique_on_rigid_flat();
+  const ImpactConfig c = sliding_on_rigid_flat();
   const double r = c.sphere.radius;
   const HexMesh built = build_hex_impact_mesh(c);
   const auto& hex = built.hexes.front();

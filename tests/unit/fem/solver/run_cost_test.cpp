@@ -6,6 +6,7 @@
 #include "corlab/core/error.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/hex_impact.hpp"
+#include "support/hex_cases.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -30,13 +31,7 @@ TEST(RunCost, MatchesTheMeshAndGrowsAtLowSpeed) {
 // The 3-D model's cost is its own hexahedral mesh's (it once came from the axisymmetric mesh,
 // 200 times too low): the elements of the run, and steps to within a factor of two of it.
 TEST(RunCost, TheThreeDModelCountsItsHexahedra) {
-  ImpactConfig c;
-  c.substrate.shape = SubstrateShape::kRigid;
-  c.sphere.material.yield_stress.reset();
-  c.impact.velocity = 1.0;
-  c.impact.angle = 60.0;
-  c.mesh.h_min = 1.5e-3;
-  c.mesh.contact_elements = 0.0;
+  const ImpactConfig c = test::sliding_on_rigid_flat();
   const RunCost cost = estimate_run_cost(c);
   const HexImpactResult run = simulate_hex_impact(c);
   EXPECT_EQ(cost.elements, run.elements);
