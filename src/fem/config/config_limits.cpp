@@ -99,10 +99,10 @@ void check_solver(const ImpactConfig& c) {
                               "penalty stiffens the fastest mode)",
                               max_safety));
   }
-  const double t_contact = c.impact.gap / c.impact.velocity;
+  const double t_contact = contact_start_time(c);
   if (c.solver.t_max > 0.0 && !(c.solver.t_max > t_contact)) {
     throw_invalid("solver.t_max", c.solver.t_max,
-                  fmt::format("0 (automatic) or > impact.gap / impact.velocity = {:.4g} [s], the "
+                  fmt::format("0 (automatic) or > impact.gap / the normal speed = {:.4g} [s], the "
                               "moment of contact",
                               t_contact));
   }
@@ -161,7 +161,7 @@ RunEstimate estimate_run(const ImpactConfig& c) {
   e.time_step =
       c.solver.safety_factor * h / lattice / e.wave_speed * (std::sqrt(1.0 + b1 * b1) - b1);
   // Default t_max: 20 Hertz contact times after contact (explicit_solver.cpp).
-  e.simulated_time = c.solver.t_max > 0.0 ? c.solver.t_max - c.impact.gap / c.impact.velocity
+  e.simulated_time = c.solver.t_max > 0.0 ? c.solver.t_max - contact_start_time(c)
                                           : 20.0 * hertz_reference(c).contact_time;
   e.simulated_time *= c.impact.repeats;
   e.steps = e.simulated_time / e.time_step;
