@@ -149,13 +149,38 @@ TEST(HexImpact, ElasticPlasticNormalImpactMatchesTheAxisymmetricSolver) {
   axi.mesh.h_min = 0.25e-3;
   const ImpactResult axisymmetric = simulate(axi);
   ASSERT_EQ(axisymmetric.status, RunStatus::kSeparated);
-  // R/h = 35: 1.4 % below the axisymmetric e at h = 0.25 mm (docs/theory/solver3d.md has the
-  // convergence of both).
-  EXPECT_NEAR(three_d.e / axisymmetric.e, 1.0, 0.02);
+  // R/h = 35: 0.4 % below the axisymmetric e at h = 0.25 mm (1.4 % with 0.4.0's hourglass
+  // default; docs/theory/solver3d.md has the convergence of both).
+  EXPECT_NEAR(three_d.e / axisymmetric.e, 1.0, 0.01);
   EXPECT_EQ(three_d.e_n, three_d.e);
   EXPECT_EQ(axisymmetric.e_n, axisymmetric.e);
   EXPECT_GT(three_d.plastic_strain_max, 0.05);
   EXPECT_LT(three_d.energy_balance_error, 5e-3);
+}
+
+// The paper's pair (the elastic sphere on the steel flat that yields) at 5 and 30 m/s, the 3-D
+// model at h = 1 mm against the axisymmetric one at h = 0.25 mm: +1.4 % and +0.8 %. The finer
+// 3-D meshes that come within 1 % at 1, 5 and 30 m/s are too slow for CI; their table and the
+// command that reruns it (studies/oblique/normal_3d_vs_axisymmetric.toml) are in solver3d.md.
+TEST(HexImpact, ThePapersPairMatchesTheAxisymmetricSolver) {
+  for (const double v : {5.0, 30.0}) {
+    SCOPED_TRACE(v);
+    ImpactConfig c;
+    c.impact.velocity = v;
+    c.solver.model = SolverModel::kThreeD;
+    c.mesh.h_min = 1e-3;
+    c.mesh.contact_elements = 0.0;
+    validate(c);
+    const ImpactResult three_d = simulate(c);
+    ASSERT_EQ(three_d.status, RunStatus::kSeparated);
+    ImpactConfig axi = c;
+    axi.solver.model = SolverModel::kAxisymmetric;
+    axi.mesh.h_min = 0.25e-3;
+    const ImpactResult axisymmetric = simulate(axi);
+    ASSERT_EQ(axisymmetric.status, RunStatus::kSeparated);
+    EXPECT_NEAR(three_d.e / axisymmetric.e, 1.0, 0.02);
+    EXPECT_LT(three_d.energy_balance_error, 5e-3);
+  }
 }
 
 // The same identity on the deformable flat (the paper's steel, elastic): the impulses on the
