@@ -1,0 +1,75 @@
+// The 3-D model's contact with the deformable flat (hex_contact.cpp): a slave finds the facet under
+// it after the flat's top has moved sideways by more than one face, as a yielding flat's does at
+// 30 m/s (about 1 mm for the paper's pair, two faces at h = 0.5 mm).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
+#include "fem/solver/hex_model.hpp"
+
+namespace corlab::fem::hex_solver {
+namespace {
+
+constexpr double kH = 1e-3;  // the top's face size in the fine zone [m]
+
+// A half block with 1 mm faces around the origin, and one slave node of the sphere.
+HexModel block_and_slave() {
+  HexMeshOptions o;
+  o.block = true;
+  o.block_half_width = 10e-3;
+  o.block_depth = 5e-3;
+  o.h_contact = kH;
+  o.zone_radius = 6e-3;
+  o.zone_depth = 2e-3;
+  o.h_max = 2e-3;
+  HexModel m;
+  append_hex_block(o, m.mesh);
+  m.mesh.x.push_back(0.3e-3);
+  m.mesh.y.push_back(0.4e-3);
+  m.mesh.z.push_back(0.0);
+  m.mesh.node_body.push_back(Body::kSphere);
+  m.mesh.sphere_surface_nodes = {m.mesh.num_nodes() - 1};
+  m.deformable_target = true;
+  m.h_contact = kH;
+  m.penalty = {1e9};
+  return m;
+}
+
+// The flat shifted by `shift` [m] along x, the slave `depth` [m] below its top.
+HexState shifted(const HexModel& m, double shift, double depth) {
+  HexState s;
+  const auto nn = static_cast<std::size_t>(m.mesh.num_nodes());
+  for (std::size_t n = 0; n < nn; ++n)
+    s.node.push_back({m.mesh.x[n], m.mesh.y[n], m.mesh.z[n], 0.0, 0.0, 0.0});
+  for (std::size_t n = 0; n + 1 < nn; ++n) s.node[n].x += shift;
+  s.node.back().z = -depth;
+  s.force.assign(nn, NodeForce{0.0, 0.0, 0.0});
+  s.traction.assign(1, {0.0, 0.0, 0.0});
+  return s;
+}
+
+TEST(HexContact, FindsTheFacetAfterTheTopMovedSideways) {
+  const HexModel m = block_and_slave();
+  for (const double shift : {0.0, 0.5 * kH, 2.5 * kH, 3.5 * kH}) {
+    SCOPED_TRACE(shift);
+    HexState s = shifted(m, shift, 1e-6);
+    ASSERT_TRUE(contact_forces(m, s, 1e-8));
+    const NodeForce& slave = s.force.back();
+    EXPECT_NEAR(slave.z, 1e9 * 1e-6, 1e-6);  // a flat facet: the full penalty, straight up
+    EXPECT_NEAR(slave.x, 0.0, 1e-9);
+    // The reaction lands on the four corners around the slave, wherever the grid now lies.
+    double reaction = 0.0;
+    for (std::size_t n = 0; n + 1 < s.force.size(); ++n) {
+      if (s.force[n].z == 0.0) continue;
+      reaction += s.force[n].z;
+      EXPECT_LE(std::abs(s.node[n].x - s.node.back().x), kH);
+      EXPECT_LE(std::abs(s.node[n].y - s.node.back().y), kH);
+    }
+    EXPECT_NEAR(reaction, -slave.z, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace corlab::fem::hex_solver
