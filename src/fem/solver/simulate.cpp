@@ -7,6 +7,7 @@
 #include "corlab/fem/mesh/mesh_generator.hpp"
 #include "corlab/fem/solver/explicit_solver.hpp"
 #include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/fem/solver/run_quality.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -48,6 +49,9 @@ ImpactResult result_of(const HexImpactResult& h) {
   r.simd = h.simd;
   r.wall_s = h.wall_s;
   r.element_steps_per_s = h.wall_s > 0.0 ? static_cast<double>(r.element_updates) / h.wall_s : 0.0;
+  // The quality guards of the axisymmetric runs; the penetration guard needs delta_max, which the
+  // 3-D model does not have yet.
+  if (r.separated) r.suspect = suspect_reason(r);
   return r;
 }
 

@@ -1,6 +1,6 @@
 // The 3-D model's contact with the deformable flat (hex_contact.cpp): a slave finds the facet under
-// it after the flat's top has moved sideways by more than one face, as a yielding flat's does at
-// 30 m/s (about 1 mm for the paper's pair, two faces at h = 0.5 mm).
+// it after the flat's top has moved sideways by more than one face or risen above z = 0, as a
+// yielding flat's does at 30 m/s (about 1 mm sideways and 0.5 mm up for the paper's pair).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,14 +37,17 @@ HexModel block_and_slave() {
   return m;
 }
 
-// The flat shifted by `shift` [m] along x, the slave `depth` [m] below its top.
-HexState shifted(const HexModel& m, double shift, double depth) {
+// The flat shifted by `shift` [m] along x and `lift` [m] up, the slave `depth` [m] below its top.
+HexState shifted(const HexModel& m, double shift, double depth, double lift = 0.0) {
   HexState s;
   const auto nn = static_cast<std::size_t>(m.mesh.num_nodes());
   for (std::size_t n = 0; n < nn; ++n)
     s.node.push_back({m.mesh.x[n], m.mesh.y[n], m.mesh.z[n], 0.0, 0.0, 0.0});
-  for (std::size_t n = 0; n + 1 < nn; ++n) s.node[n].x += shift;
-  s.node.back().z = -depth;
+  for (std::size_t n = 0; n + 1 < nn; ++n) {
+    s.node[n].x += shift;
+    s.node[n].z += lift;
+  }
+  s.node.back().z = lift - depth;
   s.force.assign(nn, NodeForce{0.0, 0.0, 0.0});
   s.traction.assign(1, {0.0, 0.0, 0.0});
   return s;
@@ -69,6 +72,15 @@ TEST(HexContact, FindsTheFacetAfterTheTopMovedSideways) {
     }
     EXPECT_NEAR(reaction, -slave.z, 1e-9);
   }
+}
+
+// A flat that piles up around the contact lifts its top above z = 0 (about 0.5 mm at 30 m/s): a
+// slave sinking into it higher than half a face above z = 0 still touches it.
+TEST(HexContact, TouchesAFlatThatRoseAboveItsStart) {
+  const HexModel m = block_and_slave();
+  HexState s = shifted(m, 0.0, 1e-6, 0.8 * kH);
+  ASSERT_TRUE(contact_forces(m, s, 1e-8));
+  EXPECT_NEAR(s.force.back().z, 1e9 * 1e-6, 1e-6);
 }
 
 }  // namespace
