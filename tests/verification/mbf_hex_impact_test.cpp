@@ -44,16 +44,16 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   ASSERT_EQ(r.status, RunStatus::kSeparated);
   EXPECT_NEAR(r.e_n, 1.0, 5e-3);
 
-  const restitution::MbfRebound mbf = restitution::mbf_rebound(
-      {.radius = c.sphere.radius,
-       .density = c.sphere.material.density,
-       .sphere_modulus = c.sphere.material.youngs_modulus,
-       .sphere_poisson = nu,
-       .flat_modulus = c.substrate.material.youngs_modulus,
-       .flat_poisson = c.substrate.material.poisson_ratio,
-       .velocity = c.impact.velocity,
-       .angle = c.impact.angle,
-       .friction = kMu});
+  const restitution::MbfRebound mbf =
+      restitution::mbf_rebound({.radius = c.sphere.radius,
+                                .density = c.sphere.material.density,
+                                .sphere_modulus = c.sphere.material.youngs_modulus,
+                                .sphere_poisson = nu,
+                                .flat_modulus = c.substrate.material.youngs_modulus,
+                                .flat_poisson = c.substrate.material.poisson_ratio,
+                                .velocity = c.impact.velocity,
+                                .angle = c.impact.angle,
+                                .friction = kMu});
   ASSERT_NEAR(mbf.psi1, kPsi1, 1e-12);
   ASSERT_FALSE(mbf.gross_sliding);
   // The FE's contact point at rebound, normalised with its own rebound normal velocity (e_n
@@ -61,13 +61,16 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   const double v_t = c.impact.velocity * std::sin(theta);
   const double slip = r.e_t * v_t - c.sphere.radius * r.omega;
   const double psi2 = kappa * slip / (kMu * r.e_n * kNormalVelocity);
-  // Measured at this mesh: e_t 0.5862 vs 0.5947, omega 214.09 vs 210.93 rad/s, psi2 -0.887 vs
-  // -0.837. Bounds: a sixth of the distance to the nearest rigid-body answer (rolling: e_t =
-  // 5/7, 0.12 away) for e_t; 3 % in omega (the mesh's inertia is 0.5 % below 2/5 m R^2); 0.1
-  // in psi2 (rolling's 0 is 0.84 away).
-  EXPECT_NEAR(r.e_t, mbf.tangential_restitution, 0.02);
-  EXPECT_NEAR(r.omega / mbf.spin, 1.0, 0.03);
-  EXPECT_NEAR(psi2, mbf.psi2, 0.1);
+  // Measured: e_t 0.5704 vs 0.5947, omega 222.3 vs 210.93 rad/s (+5.4 %), psi2 -0.996 vs -0.837.
+  // The FE has converged there: at h = 1 and 0.75 mm e_t is 0.5718 and 0.5721, omega 222.1 and
+  // 221.8, psi2 -0.991 and -0.987, so the difference is the FE's against MBF's quasi-static
+  // Mindlin-Deresiewicz theory, not the mesh's. (0.4.0's closer 0.5862 came with the hourglass
+  // coefficient 0.05, which pumps energy at finer meshes: e_n 0.849 at h = 1 mm.) Bounds: a
+  // quarter of the distance to the nearest rigid-body answer (rolling: e_t = 5/7, 0.12 away) for
+  // e_t; 7 % in omega; 0.2 in psi2 (rolling's 0 is 0.84 away).
+  EXPECT_NEAR(r.e_t, mbf.tangential_restitution, 0.03);
+  EXPECT_NEAR(r.omega / mbf.spin, 1.0, 0.07);
+  EXPECT_NEAR(psi2, mbf.psi2, 0.2);
   EXPECT_LT(psi2, -0.5);  // the contact point's velocity has reversed
   EXPECT_LT(r.energy_balance_error, 5e-3);
 }
