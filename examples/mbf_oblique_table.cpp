@@ -31,18 +31,8 @@ using corlab::restitution::MbfImpact;
 
 constexpr double kDegreesPerRadian = 57.295779513082320877;
 
-// Alumina (E = 380 GPa, nu = 0.23, rho = 4000 kg/m^3) on glass (E = 70 GPa, nu = 0.25).
-MbfImpact kharaz(double angle_deg) {
-  return {.radius = 2.5e-3,
-          .density = 4000.0,
-          .sphere_modulus = 380e9,
-          .sphere_poisson = 0.23,
-          .flat_modulus = 70e9,
-          .flat_poisson = 0.25,
-          .velocity = 3.9,
-          .angle = angle_deg,
-          .friction = 0.092};
-}
+// Kharaz et al.'s alumina on glass (mbf_oblique.hpp).
+MbfImpact kharaz(double angle_deg) { return corlab::restitution::kharaz2001_impact(angle_deg); }
 
 void table() {
   const MbfImpact base = kharaz(10.0);

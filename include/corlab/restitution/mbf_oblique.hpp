@@ -59,16 +59,16 @@ double mbf_chi(double stiffness_ratio, double gyration);
 
 /// A sphere hitting a flat [SI].
 struct MbfImpact {
-  double radius = 0.0;                ///< R [m]
-  double density = 0.0;               ///< sphere's density [kg/m^3]
-  double sphere_modulus = 0.0;        ///< E_1 [Pa]
-  double sphere_poisson = 0.0;        ///< nu_1 [-]
-  double flat_modulus = 0.0;          ///< E_2 [Pa]; +infinity: the rigid flat
-  double flat_poisson = 0.0;          ///< nu_2 [-]
-  double velocity = 0.0;              ///< impact speed |v| [m/s]
-  double angle = 0.0;                 ///< theta from the normal, in (0, 90) [deg]
-  double friction = 0.0;              ///< Coulomb mu > 0 [-]
-  double gyration = 0.4;              ///< k = I/(m R^2) in (0, 1] [-]
+  double radius = 0.0;          ///< R [m]
+  double density = 0.0;         ///< sphere's density [kg/m^3]
+  double sphere_modulus = 0.0;  ///< E_1 [Pa]
+  double sphere_poisson = 0.0;  ///< nu_1 [-]
+  double flat_modulus = 0.0;    ///< E_2 [Pa]; +infinity: the rigid flat
+  double flat_poisson = 0.0;    ///< nu_2 [-]
+  double velocity = 0.0;        ///< impact speed |v| [m/s]
+  double angle = 0.0;           ///< theta from the normal, in (0, 90) [deg]
+  double friction = 0.0;        ///< Coulomb mu > 0 [-]
+  double gyration = 0.4;        ///< k = I/(m R^2) in (0, 1] [-]
 };
 
 /// The rebound of an MbfImpact [SI unless stated].
@@ -90,5 +90,20 @@ struct MbfRebound {
 
 /// The MBF rebound of `impact`. InputError naming the field for a value out of range.
 MbfRebound mbf_rebound(const MbfImpact& impact, const MbfDiscretisation& d = {});
+
+/// Kharaz, Gorham & Salman (2001)'s case at `angle_deg` [deg from the normal]: an alumina sphere
+/// (E 380 GPa, nu 0.23, rho 4000 kg/m^3, R 2.5 mm) on soda-lime glass (E 70 GPa, nu 0.25) at
+/// 3.9 m/s with mu = 0.092 (data/kharaz2001/README.md).
+inline MbfImpact kharaz2001_impact(double angle_deg) {
+  return {.radius = 2.5e-3,
+          .density = 4000.0,
+          .sphere_modulus = 380e9,
+          .sphere_poisson = 0.23,
+          .flat_modulus = 70e9,
+          .flat_poisson = 0.25,
+          .velocity = 3.9,
+          .angle = angle_deg,
+          .friction = 0.092};
+}
 
 }  // namespace corlab::restitution

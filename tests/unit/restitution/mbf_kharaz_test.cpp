@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "corlab/restitution/mbf_oblique.hpp"
-#include "support/kharaz2001_mbf.hpp"
 
 namespace corlab::restitution {
 namespace {
@@ -47,7 +46,9 @@ std::vector<Point> measured() {
   return points;
 }
 
-MbfRebound kharaz(double angle_deg) { return mbf_rebound(test::kharaz2001_mbf_impact(angle_deg)); }
+MbfRebound kharaz(double angle_deg) {
+  return mbf_rebound(restitution::kharaz2001_impact(angle_deg));
+}
 
 // The contact point's rebound angle atan(u' / v_n') [deg].
 double contact_point_angle(const MbfRebound& r, double angle_deg) {

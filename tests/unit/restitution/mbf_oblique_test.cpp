@@ -10,7 +10,6 @@
 #include <limits>
 
 #include "corlab/core/error.hpp"
-#include "support/kharaz2001_mbf.hpp"
 
 namespace corlab::restitution {
 namespace {
@@ -18,7 +17,7 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 constexpr double kChiDisc = 1.2558;  // MBF 1981's diametral slice of a sphere (nu = 0.28)
 
-MbfImpact kharaz(double angle_deg) { return test::kharaz2001_mbf_impact(angle_deg); }
+MbfImpact kharaz(double angle_deg) { return restitution::kharaz2001_impact(angle_deg); }
 
 double kharaz_chi() { return mbf_chi(mbf_stiffness_ratio(380e9, 0.23, 70e9, 0.25), 0.4); }
 
