@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "corlab/fem/kernels/coulomb_friction.hpp"
 #include "corlab/fem/kernels/facet_contact.hpp"
@@ -17,6 +18,14 @@ std::size_t face_under(const HexMesh& mesh, double x, double y, long di, long dj
     return static_cast<std::size_t>(std::clamp(i, 0L, static_cast<long>(lines.size()) - 2));
   };
   return cell(mesh.top_y, y, dj) * (mesh.top_x.size() - 1) + cell(mesh.top_x, x, di);
+}
+
+std::vector<int> block_top_nodes(const HexMesh& mesh) {
+  std::vector<int> nodes;
+  for (const auto& face : mesh.top_faces) nodes.insert(nodes.end(), face.begin(), face.end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
 }
 
 namespace {
@@ -80,9 +89,7 @@ namespace {
 // around the contact, about 0.5 mm for the paper's pair at 30 m/s.
 double top_height(const HexModel& m, const HexState& s) {
   double z = 0.0;
-  if (!m.deformable_target) return z;
-  for (const auto& face : m.mesh.top_faces)
-    for (const int n : face) z = std::max(z, s.node[static_cast<std::size_t>(n)].z);
+  for (const int n : m.top_nodes) z = std::max(z, s.node[static_cast<std::size_t>(n)].z);
   return z;
 }
 

@@ -123,6 +123,7 @@ HexModel make_model(const ImpactConfig& config) {
     const auto i = static_cast<std::size_t>(n);
     m.free_x[i] = m.free_y[i] = m.free_z[i] = 0.0;
   }
+  m.top_nodes = block_top_nodes(m.mesh);
   set_penalties(m, config.solver.penalty_scale, dt_critical);
   index_elements(m);
   m.simd = simd_level();

@@ -46,6 +46,7 @@ struct HexModel {
   Vec mass, inv_mass;                      // lumped [kg], [1/kg]
   Vec free_x, free_y, free_z;              // 0 where the dof is held (symmetry plane, base) [-]
   Vec penalty;                             // per slave [N/m]
+  std::vector<int> top_nodes;              // the block's top nodes, each once (none: rigid)
   std::size_t sphere_nodes = 0;            // nodes [0, n) are the sphere's
   bool deformable_target = false;          // the flat's block (else the rigid flat z = 0)
   double total_mass = 0.0;                 // half sphere [kg]
@@ -97,6 +98,9 @@ struct HexState {
 // The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
 // clamped to the grid.
 std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, long dj = 0);
+
+// The block's top nodes (of mesh.top_faces), each once, sorted.
+std::vector<int> block_top_nodes(const HexMesh& mesh);
 
 /// Penalty contact (the rigid flat z = 0 or the block's top) and Coulomb friction: adds the
 /// contact forces to s.force, books the stored energy and the frictional work. Returns whether any

@@ -31,6 +31,7 @@ HexModel block_and_slave() {
   m.mesh.z.push_back(0.0);
   m.mesh.node_body.push_back(Body::kSphere);
   m.mesh.sphere_surface_nodes = {m.mesh.num_nodes() - 1};
+  m.top_nodes = block_top_nodes(m.mesh);
   m.deformable_target = true;
   m.h_contact = kH;
   m.penalty = {1e9};
