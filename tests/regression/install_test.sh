@@ -17,7 +17,7 @@ data="$prefix/share/corlab"
 for f in bin/corlab include/corlab/restitution/registry.hpp include/corlab/corlab_dem.h \
   share/corlab/materials.toml share/corlab/fe_restitution/dataset.csv \
   share/corlab/fe_restitution_pairs/dataset.csv share/corlab/kharaz2001/fe_oblique.csv \
-  share/corlab/oblique_studies/steel_pair.csv \
+  share/corlab/oblique_studies/steel_pair.csv share/corlab/oblique_studies/alumina_aluminium.csv \
   share/corlab/studies/paper/table2.toml lib/cmake/corlab/corlabConfig.cmake \
   lib/pkgconfig/corlab.pc lib/pkgconfig/corlab-cxx.pc "$pydir/corlab/__init__.py" \
   "$pydir/corlab/dem.py" "$pydir/corlab/_core.pyi" "$pydir/corlab/dem.pyi" "$pydir/corlab/py.typed"; do
