@@ -42,11 +42,17 @@ def regime(velocity_ratio):
     return out
 
 
-def material_specs(table, i):
-    """The sphere and substrate of row i as corlab material specs."""
+def material_specs(table, i, reduced=False):
+    """The sphere and substrate of row i as corlab material specs. reduced: for a row of a pair
+    dataset, the sphere of the pair's density rho* (effective_density) that gives the pair's
+    Hertz impact on a flat of the other body, which is how a sphere-on-flat model is scored on
+    two spheres (R* and m*; the models depend on the radius only through v / v_y)."""
     def spec(body):
+        rho = table[body + "_rho"][i]
+        if reduced and body == "sphere" and "effective_density" in table:
+            rho = table["effective_density"][i]
         text = (f"E={table[body + '_E'][i]!r},nu={table[body + '_nu'][i]!r},"
-                f"rho={table[body + '_rho'][i]!r}")
+                f"rho={rho!r}")
         sy = table[body + "_sigma_y"][i]
         if math.isfinite(sy):
             text += f",sy={sy!r},H={table[body + '_H'][i]!r}"
@@ -69,17 +75,31 @@ def predict_rows(model, spheres, substrates, velocities):
 
 
 def predictions(table, model):
-    """e of `model` at every row of a dataset table (nan where it cannot be evaluated)."""
-    specs = [material_specs(table, i) for i in range(len(table["e"]))]
+    """e of `model` at every row of a dataset table (nan where it cannot be evaluated); a pair
+    row as its reduced sphere on a flat (material_specs)."""
+    specs = [material_specs(table, i, reduced=True) for i in range(len(table["e"]))]
     return predict_rows(model, [s[0] for s in specs], [s[1] for s in specs], table["velocity"])
 
 
+def in_box(table, box):
+    """Rows of a dataset table inside a design box (_core.dataset_box) in the ratios that tell
+    the datasets apart: the modulus and density ratios and, for a box of flats only, a flat."""
+    def inside(column, bounds, rtol=1e-9):
+        low, high = bounds
+        return (table[column] >= low * (1 - rtol)) & (table[column] <= high * (1 + rtol))
+    ok = inside("modulus_ratio", box["modulus_ratio"])
+    ok &= inside("density_ratio", box["density_ratio"])
+    if box["flat_fraction"] >= 1.0 and "radius_ratio" in table:
+        ok &= table["radius_ratio"] == 0.0
+    return ok
+
+
 def in_model_box(table, info):
-    """Rows inside a model's own validity: the whole dataset for corlab's own model (status
-    verified-dataset: fitted to this box); else an elastic sphere, a perfectly plastic substrate
+    """Rows inside a model's own validity: for corlab's own model (status verified-dataset) the
+    flat dataset's box it was fitted to; else an elastic sphere, a perfectly plastic substrate
     (H/E < PERFECTLY_PLASTIC) and, when the model has one, its calibration box in (k1, k2)."""
     if info["status"] == "verified-dataset":
-        return np.ones(len(table["e"]), dtype=bool)
+        return in_box(table, _core.dataset_box("flat"))
     ok = ~np.isfinite(table["sphere_sigma_y"])
     ok &= table["hardening_ratio_substrate"] < PERFECTLY_PLASTIC
     box = info.get("calibrated")

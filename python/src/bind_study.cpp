@@ -9,6 +9,8 @@
 #include <thread>
 
 #include "bindings.hpp"
+#include "corlab/core/error.hpp"
+#include "corlab/dataset/impact_box.hpp"
 #include "corlab/study/results_table.hpp"
 #include "corlab/study/sweep.hpp"
 #include "corlab/study/sweep_spec.hpp"
@@ -44,6 +46,29 @@ py::dict spec_dict(const study::SweepSpec& spec) {
     runs.append(r);
   }
   d["runs"] = runs;
+  return d;
+}
+
+py::list range_list(const dataset::Range& r) {
+  py::list l;
+  l.append(r.min);
+  l.append(r.max);
+  return l;
+}
+
+// The ranges of a dataset's design box (impact_box.hpp), each [min, max] [-].
+py::dict box_dict(const dataset::ImpactBox& box) {
+  py::dict d;
+  d["k2"] = range_list(box.k2);
+  d["modulus_ratio"] = range_list(box.modulus_ratio);
+  d["sphere_yield_ratio"] = range_list(box.sphere_yield_ratio);
+  d["nu"] = range_list(box.nu);
+  d["hardening_ratio"] = range_list(box.hardening_ratio);
+  d["density_ratio"] = range_list(box.density_ratio);
+  d["radius_ratio"] = range_list(box.radius_ratio);
+  d["flat_fraction"] = box.flat_fraction;
+  d["velocity_ratio_min"] = box.velocity_ratio_min;
+  d["damage_number_max"] = box.damage_number_max;
   return d;
 }
 
@@ -114,6 +139,19 @@ void bind_study(py::module_& m) {
       py::arg("spec_path"), py::arg("out_dir"), py::arg("jobs") = 0, py::arg("progress") = false,
       "Run every case of the spec with the impact solver into out_dir/results.csv (resumes a "
       "previous run). jobs = cases at a time (0 = all cores). Returns the summary as a dict.");
+
+  m.def(
+      "dataset_box",
+      [](const std::string& name) -> py::dict {
+        if (name == "flat") return box_dict(dataset::ImpactBox{});
+        if (name == "pairs") return box_dict(dataset::pair_box());
+        throw_invalid("name", name, "flat or pairs (the dataset's design box)");
+      },
+      py::arg("name"),
+      "The design box of corlab's FE dataset `name` (flat: data/fe_restitution, pairs: "
+      "data/fe_restitution_pairs), each input's [min, max] [-] (docs/theory/dataset.md): k2, "
+      "modulus_ratio, sphere_yield_ratio, nu, hardening_ratio, density_ratio, radius_ratio (of "
+      "the second spheres), and flat_fraction, velocity_ratio_min, damage_number_max.");
 
   m.def(
       "read_results",

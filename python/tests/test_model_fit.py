@@ -154,3 +154,29 @@ def test_pair_inputs_reduce_to_the_flat_models_for_equal_densities():
     assert second["radius_ratio"] == 0.5
     with pytest.raises(ValueError):
         corlab.corlab2026p_inputs(dense, light, 20.0, radius_ratio=-1.0)
+
+
+def test_models_are_scored_on_pair_rows_through_the_reduced_sphere():
+    """A sphere-on-flat model sees a pair row as the sphere of density rho* on a flat of the
+    other body; corlab2026's own box is the flat dataset's box, so no row of the pair box but a
+    flat of equal densities with E ratio 0.2-5."""
+    pairs = dataset.read(PAIRS / "dataset.csv")
+    spheres = np.flatnonzero(np.array(pairs["substrate_shape"]) == "sphere")
+    i = int(spheres[0])
+    sphere, other = dataset.material_specs(pairs, i, reduced=True)
+    assert f"rho={pairs['effective_density'][i]!r}" in sphere
+    assert f"rho={pairs['sphere_rho'][i]!r}" in dataset.material_specs(pairs, i)[0]
+    e = dataset.predictions({k: (v[[i]] if isinstance(v, np.ndarray) else [v[i]])
+                             for k, v in pairs.items()}, "corlab2026")
+    assert e[0] == corlab.predict("corlab2026", sphere, other, float(pairs["velocity"][i]))
+    info = next(m for m in corlab._core.models() if m["name"] == "corlab2026")
+    flat = dataset.read(DATA / "dataset.csv")
+    assert dataset.in_model_box(flat, info).all()
+    box = dataset.in_model_box(pairs, info)
+    expected = ((np.array(pairs["substrate_shape"]) == "flat")
+                & np.isclose(pairs["density_ratio"], 1.0, rtol=1e-9, atol=0)
+                & (pairs["modulus_ratio"] >= 0.2) & (pairs["modulus_ratio"] <= 5.0))
+    assert np.array_equal(box, expected)
+    assert corlab._core.dataset_box("flat")["density_ratio"] == [1.0, 1.0]
+    with pytest.raises(ValueError, match="flat or pairs"):
+        corlab._core.dataset_box("cubes")
