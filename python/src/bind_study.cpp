@@ -1,4 +1,4 @@
-// Parametric sweeps: load_spec, run_sweep, read_results.
+// Parametric sweeps and the datasets they make: load_spec, run_sweep, read_results, dataset_box.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -87,9 +87,26 @@ py::dict summary_dict(const study::SweepSummary& s) {
   return d;
 }
 
+// corlab.dataset_box(name): the design box of a shipped dataset.
+void def_dataset_box(py::module_& m) {
+  m.def(
+      "dataset_box",
+      [](const std::string& name) -> py::dict {
+        if (name == "flat") return box_dict(dataset::ImpactBox{});
+        if (name == "pairs") return box_dict(dataset::pair_box());
+        throw_invalid("name", name, "flat or pairs (the dataset's design box)");
+      },
+      py::arg("name"),
+      "The design box of corlab's FE dataset `name` (flat: data/fe_restitution, pairs: "
+      "data/fe_restitution_pairs), each input's [min, max] [-] (docs/theory/dataset.md): k2, "
+      "modulus_ratio, sphere_yield_ratio, nu, hardening_ratio, density_ratio, radius_ratio (of "
+      "the second spheres), and flat_fraction, velocity_ratio_min, damage_number_max.");
+}
+
 }  // namespace
 
 void bind_study(py::module_& m) {
+  def_dataset_box(m);
   m.def(
       "load_spec", [](const std::string& path) { return spec_dict(study::load_sweep_spec(path)); },
       py::arg("path"),
@@ -139,19 +156,6 @@ void bind_study(py::module_& m) {
       py::arg("spec_path"), py::arg("out_dir"), py::arg("jobs") = 0, py::arg("progress") = false,
       "Run every case of the spec with the impact solver into out_dir/results.csv (resumes a "
       "previous run). jobs = cases at a time (0 = all cores). Returns the summary as a dict.");
-
-  m.def(
-      "dataset_box",
-      [](const std::string& name) -> py::dict {
-        if (name == "flat") return box_dict(dataset::ImpactBox{});
-        if (name == "pairs") return box_dict(dataset::pair_box());
-        throw_invalid("name", name, "flat or pairs (the dataset's design box)");
-      },
-      py::arg("name"),
-      "The design box of corlab's FE dataset `name` (flat: data/fe_restitution, pairs: "
-      "data/fe_restitution_pairs), each input's [min, max] [-] (docs/theory/dataset.md): k2, "
-      "modulus_ratio, sphere_yield_ratio, nu, hardening_ratio, density_ratio, radius_ratio (of "
-      "the second spheres), and flat_fraction, velocity_ratio_min, damage_number_max.");
 
   m.def(
       "read_results",
