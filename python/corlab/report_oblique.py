@@ -83,6 +83,7 @@ def studies_section(data_dir, out_dir):
         names = []
     if not names:
         return "<p><i>No elastic-plastic oblique tables found (data/oblique_studies).</i></p>"
+    os.makedirs(os.path.join(out_dir, "figures"), exist_ok=True)
     parts = []
     for name in names:
         stem = name[:-4]
