@@ -6,9 +6,10 @@ pair datasets (a random 20 % by case id and the corners E ratio > 10, density ra
 out). Then a gradient-boosted tree ensemble (scikit-learn's HistGradientBoostingRegressor) learns
 the fitted model's log residual ln(e_FE / e_model) on the training rows from every input the
 model sees and more (both Poisson's ratios, the density and modulus ratios, k2), and corrects the
-held-out rows. If the corrected held-out errors stay far above the FE's own error bars, the
-residual is a function of the inputs (dimensional analysis) that this much data cannot pin down:
-no closed form fitted to it will do better. Prints a Markdown table: RMS / worst / bias in %.
+held-out rows. If the learner brings the fitted rows near the FE's own error bars but the
+held-out rows stay far above them, the residual is a function of the inputs (dimensional
+analysis) that this much data does not pin down. Prints a Markdown table: RMS / worst / bias in %
+by set and by regime (corlab.dataset's regimes of v / v_y).
 
 Exploration only (not run by the tests); needs Debian's python3-sklearn:
 
@@ -21,11 +22,8 @@ import argparse
 import numpy as np
 from sklearn.ensemble import HistGradientBoostingRegressor
 
-from corlab import model_fit
-
-#: Regimes by v / v_y of the body that yields first [-] (model_fit.py's names).
-REGIMES = (("near-yield", 1.0, 10.0), ("elastic-plastic", 10.0, 100.0),
-           ("fully plastic", 100.0, np.inf))
+from candidates import cell  # this folder's scorer: RMS / worst / bias (rows)
+from corlab import dataset, model_fit
 
 
 def features(table, inputs):
@@ -48,13 +46,6 @@ def features(table, inputs):
     return list(columns), np.column_stack(list(columns.values()))
 
 
-def cell(rel):
-    if rel.size == 0:
-        return "–"
-    return (f"{100 * np.sqrt(np.mean(rel ** 2)):.2f} / {100 * rel[np.argmax(abs(rel))]:+.1f} / "
-            f"{100 * rel.mean():+.2f} ({rel.size})")
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("datasets", nargs="+", help="dataset.csv files (corlab dataset export)")
@@ -73,20 +64,20 @@ def main():
     e_corrected = e_model * np.exp(learner.predict(x))
     sets = {"fitted": train, "random 20 % held out": random_out,
             **model_fit.corners(table, "corlab2026p")}
-    ratio = np.asarray(inputs["velocity_ratio"])
+    regimes = np.array(dataset.regime(table["velocity_ratio"]))
     bar = np.asarray(table["e_error"]) / table["e"]
     print(f"{train.sum()} training rows; {len(names)} learner inputs: {', '.join(names)}\n")
     print("| set | regime | FE error bar e_error/e: median / 95th pct | corlab2026p | "
           "corlab2026p x learned correction |\n|---|---|---|---|---|")
     for set_name, mask in sets.items():
-        for regime, low, high in (("all", 0.0, np.inf),) + REGIMES:
-            m = mask & (ratio >= low) & (ratio < high)
+        for regime in ("all",) + tuple(name for name, _ in dataset.REGIMES):
+            m = mask & ((regimes == regime) | (regime == "all"))
             if not m.any():
                 continue
             print(f"| {set_name} | {regime} | {100 * np.median(bar[m]):.2f} / "
                   f"{100 * np.quantile(bar[m], 0.95):.2f} | "
-                  f"{cell((e_model[m] - table['e'][m]) / table['e'][m])} | "
-                  f"{cell((e_corrected[m] - table['e'][m]) / table['e'][m])} |")
+                  f"{cell((e_model - table['e']) / table['e'], m)} | "
+                  f"{cell((e_corrected - table['e']) / table['e'], m)} |")
 
 
 if __name__ == "__main__":
