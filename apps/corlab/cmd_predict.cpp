@@ -35,6 +35,7 @@ struct PredictOptions {
   std::string format = "csv";
   std::string clamp = "default";
   double radius = 1.0;
+  double radius_ratio = 0.0;  ///< R1/R2 of a free second sphere of the substrate's material [-]
 };
 
 /// Most velocities one `predict` evaluates: a million points, each model's e and k1 held in
@@ -147,6 +148,7 @@ int run_predict(const PredictOptions& o) {
   }
   restitution::ModelOptions options;
   options.radius = o.radius;
+  options.radius_ratio = o.radius_ratio;
   if (o.clamp == "on") options.clamp = true;
   if (o.clamp == "off") options.clamp = false;
 
@@ -162,7 +164,10 @@ int run_predict(const PredictOptions& o) {
   }
   const double e_star = effective_modulus(sphere, substrate);
   const double sy = *substrate.yield_stress;
-  require_finite_k1(velocities.front(), e_star, sphere.density);  // k1 falls with v
+  // k1 at the pair's rho* [kg/m^3] (the sphere's own density on a flat).
+  const double rho =
+      pair_effective_density(o.radius_ratio, sphere.density, sphere.density / substrate.density);
+  require_finite_k1(velocities.front(), e_star, rho);  // k1 falls with v
   warn_outside_validity(models, velocities, sphere, substrate);
   std::vector<double> e(velocities.size());
   if (o.format == "json") {
@@ -180,7 +185,7 @@ int run_predict(const PredictOptions& o) {
       m.cor(velocities, e);
       std::vector<double> k1s(velocities.size());
       for (std::size_t j = 0; j < velocities.size(); ++j) {
-        k1s[j] = k1(e_star, sphere.density, velocities[j]);
+        k1s[j] = k1(e_star, rho, velocities[j]);
       }
       const nlohmann::json model{{"model", m.info().name},
                                  {"status", restitution::to_string(m.info().status)},
@@ -192,7 +197,8 @@ int run_predict(const PredictOptions& o) {
                                  {"e", e}};
       fmt::print("{}\n    {}", i == 0 ? "" : ",", indented(model.dump(2), "    "));
     }
-    fmt::print("{}],\n  \"sphere\": {},\n  \"substrate\": {}\n}}\n", models.empty() ? "" : "\n  ",
+    fmt::print("{}],\n  \"radius_ratio\": {},\n  \"sphere\": {},\n  \"substrate\": {}\n}}\n",
+               models.empty() ? "" : "\n  ", nlohmann::json(o.radius_ratio).dump(),
                head["sphere"].dump(), head["substrate"].dump());
     return 0;
   }
@@ -203,7 +209,7 @@ int run_predict(const PredictOptions& o) {
     const auto status = restitution::to_string(m.info().status);
     for (std::size_t i = 0; i < velocities.size(); ++i) {
       fmt::print("{},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{}\n", m.info().name, velocities[i],
-                 e[i], k1(e_star, sphere.density, velocities[i]), k2(sy, e_star), vy, status);
+                 e[i], k1(e_star, rho, velocities[i]), k2(sy, e_star), vy, status);
     }
   }
   return 0;
@@ -231,6 +237,9 @@ const CommandRegistration kRegistration{Command{
           ->check(CLI::IsMember({"default", "on", "off"}));
       sub.add_option("--radius", o->radius,
                      "sphere radius [m] for the energy models (e is R-independent)");
+      sub.add_option("--radius-ratio", o->radius_ratio,
+                     "R1/R2, the sphere's radius over the substrate's: the substrate is a free "
+                     "second sphere at rest (0, the default: a flat) [-]");
       return [o] { return run_predict(*o); };
     },
     21}};

@@ -19,6 +19,11 @@ from . import _core
 #: 2005's fully plastic limit, with delta ~ v^(4/5)) the contact is fully plastic.
 REGIMES = (("near-yield", 3.0), ("elastic-plastic", 300.0), ("fully plastic", math.inf))
 
+#: The pair dataset's corners, held out of corlab2026p's fit (issue 26): (column, rows above
+#: this value [-]).
+PAIR_CORNERS = (("modulus_ratio", 10.0), ("density_ratio", 5.0))
+#: The design box (_core.dataset_box) each of corlab's own models was fitted over.
+FITTED_BOX = {"corlab2026": "flat", "corlab2026p": "pairs"}
 #: Perfect plasticity for the analytic models' own box: H / E below this [-].
 PERFECTLY_PLASTIC = 0.005
 
@@ -60,15 +65,20 @@ def material_specs(table, i, reduced=False):
     return spec("sphere"), spec("substrate")
 
 
-def predict_rows(model, spheres, substrates, velocities):
-    """e of `model` for each (sphere spec, substrate spec, v) (nan where it cannot be
-    evaluated); unverified models and calibration warnings are scored all the same."""
+def predict_rows(model, spheres, substrates, velocities, radius_ratios=None):
+    """e of `model` for each (sphere spec, substrate spec, v, R1/R2: 0 or None a flat) (nan
+    where it cannot be evaluated); unverified models and calibration warnings are scored all the
+    same."""
     out = np.full(len(velocities), np.nan)
+    if radius_ratios is None:
+        radius_ratios = np.zeros(len(velocities))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)
-        for i, (sphere, substrate, v) in enumerate(zip(spheres, substrates, velocities)):
+        for i, (sphere, substrate, v, r) in enumerate(
+                zip(spheres, substrates, velocities, radius_ratios)):
             try:
-                out[i] = _core.predict(model, sphere, substrate, float(v))
+                out[i] = _core.predict(model, sphere, substrate, float(v),
+                                       radius_ratio=float(r))
             except ValueError:
                 pass
     return out
@@ -76,9 +86,11 @@ def predict_rows(model, spheres, substrates, velocities):
 
 def predictions(table, model):
     """e of `model` at every row of a dataset table (nan where it cannot be evaluated); a pair
-    row as its reduced sphere on a flat (material_specs)."""
-    specs = [material_specs(table, i, reduced=True) for i in range(len(table["e"]))]
-    return predict_rows(model, [s[0] for s in specs], [s[1] for s in specs], table["velocity"])
+    row with its radius_ratio (a sphere-on-flat model sees the reduced sphere of material_specs,
+    corlab2026p the pair)."""
+    specs = [material_specs(table, i) for i in range(len(table["e"]))]
+    return predict_rows(model, [s[0] for s in specs], [s[1] for s in specs], table["velocity"],
+                        table.get("radius_ratio"))
 
 
 def in_box(table, box):
@@ -99,7 +111,7 @@ def in_model_box(table, info):
     flat dataset's box it was fitted to; else an elastic sphere, a perfectly plastic substrate
     (H/E < PERFECTLY_PLASTIC) and, when the model has one, its calibration box in (k1, k2)."""
     if info["status"] == "verified-dataset":
-        return in_box(table, _core.dataset_box("flat"))
+        return in_box(table, _core.dataset_box(FITTED_BOX[info["name"]]))
     ok = ~np.isfinite(table["sphere_sigma_y"])
     ok &= table["hardening_ratio_substrate"] < PERFECTLY_PLASTIC
     box = info.get("calibrated")
@@ -122,14 +134,25 @@ def score(table, e_model, mask=None):
     return out
 
 
+def corner_masks(table):
+    """{name: rows} of the pair dataset's corners (PAIR_CORNERS); none for the flat dataset."""
+    if "radius_ratio" not in table:
+        return {}
+    return {f"{column} > {bound:g}": table[column] > bound for column, bound in PAIR_CORNERS}
+
+
 def score_models(table, names=None):
-    """{model: {"all cases": score, "own box": score}} for the registered models (or `names`)."""
+    """{model: {"all cases": score, "own box": score, "corners": {name: score}}} for the
+    registered models (or `names`); corners only on a pair dataset (corner_masks)."""
     infos = {m["name"]: m for m in _core.models()}
     out = {}
     for name in names or list(infos):
         e = predictions(table, name)
         own = in_model_box(table, infos[name])
         out[name] = {"all cases": score(table, e), "own box": score(table, e, own)}
+        corners = corner_masks(table)
+        if corners:
+            out[name]["corners"] = {c: score(table, e, rows) for c, rows in corners.items()}
     return out
 
 
@@ -171,13 +194,17 @@ def markdown_table(scores):
             return "-"
         return f"{100 * s['rms']:.1f} / {100 * s['worst']:+.0f} / {100 * s['bias']:+.1f}"
     regimes = [name for name, _ in REGIMES]
-    lines = ["| model | all cases (n) | " + " | ".join(regimes) + " | own box (n) |",
-             "|---" * (3 + len(regimes)) + "|"]
+    corners = list(next(iter(scores.values())).get("corners", {}))
+    lines = ["| model | all cases (n) | " + " | ".join(regimes) + " | own box (n) |"
+             + "".join(f" {c} (n) |" for c in corners),
+             "|---" * (3 + len(regimes) + len(corners)) + "|"]
     for name, s in scores.items():
         a, own = s["all cases"], s["own box"]["all"]
         lines.append(f"| `{name}` | {cell(a['all'])} ({a['all']['n']}) | "
                      + " | ".join(cell(a[r]) for r in regimes)
-                     + f" | {cell(own)} ({own['n']}) |")
+                     + f" | {cell(own)} ({own['n']}) |"
+                     + "".join(f" {cell(s['corners'][c]['all'])} ({s['corners'][c]['all']['n']}) |"
+                               for c in corners))
     return "\n".join(lines) + "\n"
 
 

@@ -50,8 +50,8 @@ NAMES = tuple(p[0] for p in PARAMETERS)
 #: The held-out corner: modulus ratios above this [-].
 CORNER_MODULUS_RATIO = 4.0
 #: corlab2026p's held-out corners (issue 26): (name, column, rows above this value [-]).
-PAIR_CORNERS = (("corner holdout modulus_ratio > 10", "modulus_ratio", 10.0),
-                ("corner holdout density_ratio > 5", "density_ratio", 5.0))
+PAIR_CORNERS = tuple((f"corner holdout {column} > {bound:g}", column, bound)
+                     for column, bound in dataset.PAIR_CORNERS)
 MODELS = ("corlab2026", "corlab2026p")
 #: Bootstrap resamples for the coefficients' confidence intervals.
 BOOTSTRAP = 200

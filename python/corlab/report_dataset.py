@@ -1,5 +1,6 @@
-"""The report's "beyond the paper" section: corlab's FE dataset (data/fe_restitution), its model
-corlab2026 and every registered model's scores on it, and corlab2026 against Ma eq. 19 on the
+"""The report's "beyond the paper" section: corlab's FE datasets (data/fe_restitution and
+data/fe_restitution_pairs), its models corlab2026 and corlab2026p and every registered model's
+scores on them, and corlab2026 against Ma eq. 19 on the
 Table 2 runs of the report's directory. The numbers come from model_fit.json, model_scores.json
 and fit.json (written by the C++), the figure's from the C++ models and relative errors
 (corlab._core): no formula or material constant lives here."""
@@ -25,6 +26,36 @@ def table2_versus_eq19(fit):
     rows = [[esc("corlab2026"), *_score_cells(t2["corlab2026"])],
             [esc("ma2023 (eq. 19)"), *_score_cells(t2["ma2023"])]]
     return rows, t2["corlab2026_at_least_as_close"], t2["cases"]
+
+
+def pairs_section(folder):
+    """The particle-pair dataset (data/fe_restitution_pairs, beside the flat one): every model's
+    scores on it and on its two corners, and corlab2026p's held-out errors."""
+    try:
+        with open(os.path.join(folder, "model_fit.json")) as f:
+            model = json.load(f)
+        with open(os.path.join(folder, "model_scores.json")) as f:
+            scores = json.load(f)
+    except OSError:
+        return "<p><i>No particle-pair dataset found (data/fe_restitution_pairs).</i></p>"
+    rows = []
+    for name, s in scores["scores"].items():
+        rows.append([esc(f"{name} (all rows)"), *_score_cells(s["all cases"]["all"])])
+        for corner, c in s.get("corners", {}).items():
+            rows.append([esc(f"{name} ({corner})"), *_score_cells(c["all"])])
+    skip = ("all", "train", "corner holdout")  # the fitted rows, and both corners together
+    held = [[esc(f"{scope}: {regime}"), *_score_cells(s)]
+            for scope, regimes in model["scores"].items() if scope not in skip
+            for regime, s in regimes.items()]
+    return f"""<h3>Particle pairs</h3><p>{scores['rows']} FE runs of the particle-pair dataset
+(<code>{esc(folder)}</code>): a sphere on a flat or on a free second sphere over the modulus
+ratios 0.05-20, density ratios 0.1-10 and R1/R2 0-1. A sphere-on-flat model sees a pair as the
+sphere of the pair's density rho* on a flat; <code>corlab2026p</code> sees the pair and is
+fitted on {model['rows_train']} rows of both datasets, with a random {model['rows_random_holdout']}
+and the corners ({esc(model['corner'])}, {model['rows_corner_holdout']} rows) held out.</p>
+{table(["model (rows)", "cases", "RMS", "worst", "bias"], rows)}
+<h3>corlab2026p: held-out errors by regime</h3>
+{table(["held-out set: regime", "cases", "RMS", "worst", "bias"], held)}"""
 
 
 def dataset_section(fit, out_dir):
@@ -77,4 +108,5 @@ is its calibration box and its assumptions (elastic sphere, perfectly plastic su
 <p>95 % prediction interval: +-{pct(model['prediction_interval_95'], 1)} of e.</p>
 <h3>corlab2026 coefficients (95 % bootstrap intervals)</h3>
 {table(["coefficient", "value", "95 % interval"], coef)}
-{t2}"""
+{t2}
+{pairs_section(os.path.join(os.path.dirname(folder), "fe_restitution_pairs"))}"""

@@ -55,10 +55,12 @@ restitution::Model bind_model(const std::string& model,
                               const MaterialArg& sphere,
                               const MaterialArg& substrate,
                               std::optional<bool> clamp,
-                              double radius) {
+                              double radius,
+                              double radius_ratio = 0.0) {
   restitution::ModelOptions options;
   options.clamp = clamp;
   options.radius = radius;
+  options.radius_ratio = radius_ratio;
   auto bound = restitution::make_model(model, to_material(sphere, "sphere"),
                                        to_material(substrate, "substrate"), options);
   warn_if_unverified(bound);
@@ -221,16 +223,17 @@ void bind_models(py::module_& m) {
   m.def(
       "predict",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
-         double v, std::optional<bool> clamp, double radius) {
-        const auto bound = bind_model(model, sphere, substrate, clamp, radius);
+         double v, std::optional<bool> clamp, double radius, double radius_ratio) {
+        const auto bound = bind_model(model, sphere, substrate, clamp, radius, radius_ratio);
         const double e = bound.cor(v);
         warn_if_outside(bound, sphere, substrate, std::span<const double>(&v, 1));
         return e;
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
-      py::arg("clamp") = py::none(), py::arg("radius") = 1.0,
+      py::arg("clamp") = py::none(), py::arg("radius") = 1.0, py::arg("radius_ratio") = 0.0,
       "CoR e [-] of `model` for a sphere hitting a substrate at speed v [m/s]. sphere and "
       "substrate are Material objects or specs ('alumina_ma2023', 'E=..,nu=..,rho=..,sy=..'). "
+      "radius_ratio = R1/R2 > 0: the substrate is a free second sphere at rest (0: a flat). "
       "v may be a float (returns a float) or a numpy array (returns an array of the same "
       "shape). clamp: None = model default. Raises ValueError on bad input; warns "
       "(UserWarning) when the model is unverified.");
@@ -238,8 +241,8 @@ void bind_models(py::module_& m) {
       "predict",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
          const py::array_t<double, py::array::c_style | py::array::forcecast>& v,
-         std::optional<bool> clamp, double radius) {
-        const auto bound = bind_model(model, sphere, substrate, clamp, radius);
+         std::optional<bool> clamp, double radius, double radius_ratio) {
+        const auto bound = bind_model(model, sphere, substrate, clamp, radius, radius_ratio);
         py::array_t<double> out(v.request().shape);
         const std::span<const double> in(v.data(), static_cast<std::size_t>(v.size()));
         const std::span<double> res(out.mutable_data(), static_cast<std::size_t>(out.size()));
@@ -251,7 +254,7 @@ void bind_models(py::module_& m) {
         return out;
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
-      py::arg("clamp") = py::none(), py::arg("radius") = 1.0);
+      py::arg("clamp") = py::none(), py::arg("radius") = 1.0, py::arg("radius_ratio") = 0.0);
   m.def(
       "yield_velocity",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate) {

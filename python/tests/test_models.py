@@ -144,6 +144,27 @@ def test_cli_predict_takes_a_velocity_list(corlab_bin):
         assert "velocity" in done.stderr
 
 
+def test_cli_predict_takes_a_second_sphere(corlab_bin):
+    """--radius-ratio R1/R2: the substrate is a free second sphere; corlab2026p reads the pair,
+    k1 is at the pair's rho*; a negative ratio is the one-line error and exit 2."""
+    import subprocess
+    wc, al = "E=600e9,nu=0.24,rho=15000", "E=70e9,nu=0.33,rho=2700,sy=100e6"
+    args = [corlab_bin, "predict", "--model", "corlab2026p", "--sphere", wc, "--substrate", al,
+            "--velocity", "20", "--radius-ratio"]
+    done = subprocess.run(args + ["0.5"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    row = done.stdout.splitlines()[1].split(",")
+    assert float(row[2]) == pytest.approx(
+        corlab.predict("corlab2026p", wc, al, 20.0, radius_ratio=0.5), rel=1e-9)
+    assert float(row[2]) != pytest.approx(corlab.predict("corlab2026p", wc, al, 20.0), rel=1e-3)
+    rho_star = 15000 * 1.5 ** 3 / (1 + (15000 / 2700) * 0.125)
+    e_star = 1 / ((1 - 0.24 ** 2) / 600e9 + (1 - 0.33 ** 2) / 70e9)
+    assert float(row[3]) == pytest.approx(e_star / (rho_star * 400.0), rel=1e-8)
+    done = subprocess.run(args + ["-1"], capture_output=True, text=True)
+    assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+    assert "radius_ratio = -1" in done.stderr
+
+
 def test_oblique_rebound_slides_by_the_coulomb_identity():
     """corlab.oblique_rebound is the C++ rigid-body theory (oblique_impact.hpp)."""
     theta = math.radians(60.0)

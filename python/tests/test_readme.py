@@ -73,6 +73,11 @@ def test_model_scores_are_the_datasets():
     want = table_rows(scores, "| model | all cases (n) |")
     got = table_rows(README, "| model | all cases (n) |")
     assert [row[:6] for row in got] == want
+    # The pair columns: all rows and the two corners of the pair dataset's scores.
+    pairs = (ROOT / "data" / "fe_restitution_pairs" / "model_scores.md").read_text()
+    want = [[row[0], row[1], row[6], row[7]]
+            for row in table_rows(pairs, "| model | all cases (n) |")]
+    assert [row[:1] + row[6:9] for row in got] == want
 
 
 def fake_paper_fit():

@@ -363,3 +363,19 @@ def test_reproduce_end_to_end_on_a_tiny_spec_and_resume(tiny_reproduction):
     assert fit2["studies"]["table2"]["ran"] == 0
     assert fit2["studies"]["table2"]["already_done"] == 6
     assert fit2["fits"]["restitution_law"]["slope"]["value"] == law["slope"]["value"]
+
+
+def test_pairs_section_scores_every_model_on_the_pair_dataset(tmp_path):
+    """The particle-pair part of "beyond the paper": each registered model on all pair rows and
+    on both corners (model_scores.json as shipped), corlab2026p's held-out sets by regime; without
+    the dataset, a note."""
+    folder = os.path.join(os.path.dirname(__file__), "..", "..", "data", "fe_restitution_pairs")
+    with open(os.path.join(folder, "model_scores.json")) as f:
+        scores = json.load(f)
+    html = report_dataset.pairs_section(folder)
+    assert html.count("<tr>") == 2 + 3 * len(scores["scores"]) + 3 * 4
+    cell = scores["scores"]["corlab2026p"]["corners"]["density_ratio > 5"]["all"]
+    assert (f"<td>corlab2026p (density_ratio &gt; 5)</td><td>{cell['n']}</td>"
+            f"<td>{100 * cell['rms']:.1f} %</td>") in html
+    assert "<td>random holdout: fully plastic</td>" in html
+    assert "No particle-pair dataset" in report_dataset.pairs_section(str(tmp_path))

@@ -161,8 +161,10 @@ void validate_pair_targets(const ExportSpec& spec) {
 // that of a sphere of density rho* = 3 m*/(4 pi R*^3) on a flat of the same E*, and every model
 // depends on the sphere only through E* and its density (k1 = E*/(rho v^2), Thornton's v_y), not
 // its radius. So the body with a yield stress (the softer if both) is the model's flat, the other
-// its sphere, and the sphere gets the pair's rho* (c.effective_density): 4 rho for two identical
-// spheres, the particle's own density against the rigid wall.
+// its sphere, and the sphere gets the pair's rho* (c.effective_density; make_model's radius_ratio
+// for two particles): 4 rho for two identical spheres, the particle's own density against the
+// wall. corlab2026p reads the pair whole (which body is curved: R1/R2; a particle on the wall, or
+// the wall on a yielding particle, as a flat).
 RestitutionCurve model_curve(const ExportSpec& spec,
                              const PairCalibration& c,
                              const Material& a,
@@ -194,8 +196,15 @@ RestitutionCurve model_curve(const ExportSpec& spec,
     description += fmt::format(", sphere density rho* = {:.6g} kg/m^3", c.effective_density);
   }
   description += ")";
-  sphere.density = c.effective_density;
-  auto model = restitution::make_model(spec.model, sphere, flat);
+  restitution::ModelOptions options;
+  if (c.type_j == 0) {
+    sphere.density = c.effective_density;  // the particle's, also for a wall on a particle
+  } else {  // make_model puts rho* on the sphere; corlab2026p reads R1/R2 whole
+    const double ri = spec.types[static_cast<std::size_t>(c.type_i - 1)].radius;
+    const double rj = spec.types[static_cast<std::size_t>(c.type_j - 1)].radius;
+    options.radius_ratio = b_is_flat ? ri / rj : rj / ri;
+  }
+  auto model = restitution::make_model(spec.model, sphere, flat, options);
   return [model](double v) { return model.cor(v); };
 }
 
@@ -257,8 +266,8 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
     other = &tj.material;
     c.effective_radius = ti.radius * tj.radius / (ti.radius + tj.radius);
     c.effective_mass = sphere_mass(ti) * sphere_mass(tj) / (sphere_mass(ti) + sphere_mass(tj));
-    c.effective_density = pair_effective_density(
-        ti.radius / tj.radius, ti.material.density, ti.material.density / tj.material.density);
+    c.effective_density = pair_effective_density(ti.radius / tj.radius, ti.material.density,
+                                                 ti.material.density / tj.material.density);
   }
   c.effective_modulus = corlab::effective_modulus(ti.material, *other);
   c.hertz_stiffness = hertz_stiffness(c.effective_modulus, c.effective_radius);

@@ -36,9 +36,7 @@ static_assert(each_coefficient_fitted_once(),
 Corlab2026Pair corlab2026p_pair(const Material& sphere,
                                 const Material& other,
                                 double radius_ratio) {
-  if (!(std::isfinite(radius_ratio) && radius_ratio >= 0.0)) {
-    throw_invalid("radius_ratio", radius_ratio, ">= 0 and finite (R1/R2, 0 for a flat) [-]");
-  }
+  require_radius_ratio(radius_ratio);
   // The pair's Hertz impact is a sphere of density rho* [kg/m^3] on a flat.
   Material effective = sphere;
   effective.density =

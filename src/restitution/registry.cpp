@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "corlab/core/error.hpp"
+#include "corlab/restitution/corlab2026p.hpp"
 
 namespace corlab::restitution {
 
@@ -39,11 +40,13 @@ constexpr const char* kJgFitEquation =
     "V_c = 1.5605 (C S_y)^2.5/(E*^2 sqrt(rho)), C = 1.295 exp(0.736 nu); e = 1 for V' <= 1";
 
 /// What a model is bound to besides the pair quantities: the options and both materials (a model
-/// of a yielding sphere or of hardening reads them whole).
+/// of a yielding sphere or of hardening reads them whole). `sphere` is the pair's reduced sphere
+/// (density rho*, the sphere itself on a flat); `impactor` the sphere as given.
 struct FactoryContext {
   const ModelOptions& options;
   const Material& sphere;
   const Material& substrate;
+  const Material& impactor;
 };
 
 /// Builds a model's kernel for a material pair (`clamp` already resolved from the options).
@@ -274,6 +277,36 @@ void add_corlab2026(std::vector<Registration>& r) {
        }});
 }
 
+void add_corlab2026p(std::vector<Registration>& r) {
+  r.push_back(
+      {ModelInfo{
+           .name = "corlab2026p",
+           .title = "corlab 2026 for particle pairs: corlab2026's form over a flat or a free "
+                    "second sphere of any density, fitted to both FE datasets",
+           .citation = "corlab project, docs/theory/corlab_model.md (Particle pairs); fitted to "
+                       "data/fe_restitution and data/fe_restitution_pairs (coefficients: "
+                       "data/fe_restitution_pairs/model_fit.json)",
+           .equation =
+               "corlab2026's e(v) with v_y and v_y,o at the pair's rho* = 3 m*/(4 pi R*^3), "
+               "the damage number D_y = rho_w v_y^2/p_y on the density of the body w "
+               "that yields first, and Jackson-Green's cap of a curved body w at a/R_w = "
+               "(a/R*)(R*/R_w); radius_ratio = R1/R2 (0: a flat)",
+           .validity = "the pair dataset's box: E_sphere/E_other 0.05-20, rho_sphere/rho_other "
+                       "0.1-10, R1/R2 0-1, sigma_y/E* 1e-3-1.5e-2, v from 1.1 v_y to 100 m/s and "
+                       "rho* v^2/sigma_y <= 0.26, nu 0.2-0.45, H/E 0-0.05",
+           .status = Status::kVerifiedDataset,
+           .status_note =
+               "fitted by this project to its own FE datasets; held-out errors in "
+               "data/fe_restitution_pairs/model_fit.json and the README (random 20 % "
+               "and the corners E ratio > 10, density ratio > 5 held out). Short of "
+               "issue 26's target worst <= 6 %: worst held-out rows -15 % (random 20 %) and "
+               "+46 % (density ratio > 5), all fully plastic",
+           .clamped_by_default = true},
+       [](const ImpactPair&, bool, const FactoryContext& ctx) -> Model::Kernel {
+         return corlab2026p(ctx.impactor, ctx.substrate, ctx.options.radius_ratio);
+       }});
+}
+
 /// The registry: one entry per model, in catalog order. Adding a model is one entry here.
 const std::vector<Registration>& registry() {
   static const std::vector<Registration> entries = [] {
@@ -283,6 +316,7 @@ const std::vector<Registration>& registry() {
     add_jackson_green2010(r);
     add_wu2003_johnson1985(r);
     add_corlab2026(r);
+    add_corlab2026p(r);
     return r;
   }();
   return entries;
@@ -352,9 +386,16 @@ Model make_model(std::string_view name,
                  const ModelOptions& options) {
   const ModelInfo& info = model_info(name);
   require_positive("radius", options.radius, "[m]");
-  const ImpactPair pair = make_impact_pair(sphere, substrate, info.name);
+  const double r = options.radius_ratio;
+  require_radius_ratio(r);
+  make_impact_pair(sphere, substrate, info.name);  // validates both materials first
+  Material reduced = sphere;  // the pair's Hertz impact: a sphere of density rho* on a flat
+  if (r > 0.0) {
+    reduced.density = pair_effective_density(r, sphere.density, sphere.density / substrate.density);
+  }
+  const ImpactPair pair = make_impact_pair(reduced, substrate, info.name);
   const bool clamp = options.clamp.value_or(info.clamped_by_default);
-  const FactoryContext ctx{options, sphere, substrate};
+  const FactoryContext ctx{options, reduced, substrate, sphere};
   return {info, registry()[index_of(name)].factory(pair, clamp, ctx), clamp};
 }
 

@@ -56,6 +56,9 @@ double k1(double effective_modulus, double sphere_density, double velocity);
 /// @param density_ratio rho1/rho2 [-]
 double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio);
 
+/// Throws InputError naming "radius_ratio" unless R1/R2 [-] is >= 0 and finite (0: a flat).
+void require_radius_ratio(double radius_ratio);
+
 /// Ma et al. 2023 eq. 6: k2 = sigma_y / E* [-], sigma_y = substrate yield stress [Pa].
 double k2(double yield_stress, double effective_modulus);
 

@@ -16,7 +16,7 @@
 /// The coefficients are fitted to the union of data/fe_restitution and data/fe_restitution_pairs
 /// (python/corlab/model_fit.py --model corlab2026p); they live in
 /// data/fe_restitution_pairs/model_fit.json, generated into corlab2026p_fitted() at configure time.
-/// Not yet in the model registry: its held-out errors do not meet issue 26's targets yet.
+/// Registered as "corlab2026p" (registry.hpp; ModelOptions::radius_ratio is R1/R2).
 
 #include "corlab/materials/material.hpp"
 #include "corlab/restitution/corlab2026.hpp"

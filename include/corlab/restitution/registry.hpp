@@ -29,6 +29,11 @@ namespace corlab::restitution {
 struct ModelOptions {
   std::optional<bool> clamp;  ///< clamp e to [0, 1]; empty = the model's default
   double radius = 1.0;        ///< sphere radius R [m] (energy models only; e is R-independent)
+  /// R1/R2 [-] of a sphere hitting a free second sphere of the substrate's material at rest;
+  /// 0 (the default) is a flat. A sphere-on-flat model sees the pair as a sphere of density
+  /// rho* = 3 m*/(4 pi R*^3) on a flat (pair_effective_density, material.hpp), the same Hertz
+  /// impact; corlab2026p reads the pair whole (corlab2026p.hpp).
+  double radius_ratio = 0.0;
 };
 
 /// A model bound to a material pair. Cheap to copy.
@@ -76,7 +81,8 @@ std::vector<std::string> model_names();
 const ModelInfo& model_info(std::string_view name);
 
 /// Binds model `name` to a sphere and a substrate (validated; the substrate needs a yield
-/// stress). Throws InputError for an unknown name or bad materials/options.
+/// stress), a flat or, for options.radius_ratio > 0, a free second sphere. Throws InputError for
+/// an unknown name or bad materials/options.
 Model make_model(std::string_view name,
                  const Material& sphere,
                  const Material& substrate,

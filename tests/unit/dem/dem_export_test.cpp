@@ -14,6 +14,7 @@
 #include "corlab/dem/lammps_mapping.hpp"
 #include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "corlab/restitution/corlab2026p.hpp"
 #include "corlab/restitution/registry.hpp"
 
 namespace corlab::dem {
@@ -166,6 +167,30 @@ TEST(DemExport, UnequalPairsAndWallPairsDensities) {
   wall_as_sphere.density = aluminium.density;
   const auto swapped = restitution::make_model("thornton1997", wall_as_sphere, aluminium);
   EXPECT_DOUBLE_EQ(pairs[4].curve(1.0), swapped.cor(1.0));
+}
+
+// corlab2026p reads the pair whole: both densities and R1/R2 of the model's sphere over its flat
+// (the yielding body); against the wall, a flat (R1/R2 = 0).
+TEST(DemExport, Corlab2026pTakesThePairsRadiusRatio) {
+  const Material& aluminium = material("aluminium_ma2023");
+  const Material& alumina = material("alumina_ma2023");
+  ExportSpec spec;
+  spec.types = {{alumina, 0.002, ""}, {aluminium, 0.005, ""}};
+  spec.wall = aluminium;
+  spec.model = "corlab2026p";
+  spec.pair_restitution = {parse_pair_restitution("1/1=1")};
+  spec.v_min = 0.3;
+  spec.v_max = 3.0;
+  const auto pairs = calibrate_pairs(spec);
+  ASSERT_EQ(pairs.size(), 5u);  // 1-1, 1-2, 2-2, 1-wall, 2-wall
+  const auto unequal = restitution::corlab2026p(alumina, aluminium, 0.4);
+  const auto equal = restitution::corlab2026p(aluminium, aluminium, 1.0);
+  const auto on_wall = restitution::corlab2026p(aluminium, aluminium, 0.0);
+  for (const double v : {0.3, 3.0}) {
+    EXPECT_DOUBLE_EQ(pairs[1].curve(v), unequal.cor(v)) << v;
+    EXPECT_DOUBLE_EQ(pairs[2].curve(v), equal.cor(v)) << v;
+    EXPECT_DOUBLE_EQ(pairs[4].curve(v), on_wall.cor(v)) << v;
+  }
 }
 
 // --pair-table: one pair's own e(v) (an FE run of those two spheres); the other pairs keep the

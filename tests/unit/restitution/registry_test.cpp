@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "corlab/core/error.hpp"
+#include "corlab/materials/material.hpp"
+#include "corlab/restitution/corlab2026p.hpp"
 #include "pairs.hpp"
 #include "support/input_errors.hpp"
 
@@ -30,9 +32,9 @@ std::vector<double> log_grid(double lo, double hi, int n) {
 
 TEST(Registry, CatalogNamesAndMetadata) {
   const std::vector<std::string> expected = {
-      "ma2023",          "ma2023-exact", "thornton1997", "thornton1997-cnu",
-      "thornton1997-sy", "jg1",          "jg2",          "jg2010-fit",
-      "jg2010-fit-c",    "wu2003",       "johnson1985",  "corlab2026"};
+      "ma2023",      "ma2023-exact", "thornton1997", "thornton1997-cnu", "thornton1997-sy",
+      "jg1",         "jg2",          "jg2010-fit",   "jg2010-fit-c",     "wu2003",
+      "johnson1985", "corlab2026",   "corlab2026p"};
   EXPECT_EQ(model_names(), expected);
   for (const auto& info : model_catalog()) {
     EXPECT_FALSE(info.title.empty()) << info.name;
@@ -56,8 +58,40 @@ TEST(Registry, UnknownModelMessage) {
   expect_input_error([] { (void)model_info("foo"); },
                      "invalid model = 'foo': must be one of [ma2023, ma2023-exact, thornton1997, "
                      "thornton1997-cnu, thornton1997-sy, jg1, jg2, jg2010-fit, jg2010-fit-c, "
-                     "wu2003, johnson1985, corlab2026]");
+                     "wu2003, johnson1985, corlab2026, corlab2026p]");
   EXPECT_THROW((void)make_model("", alumina(), aluminium()), InputError);
+}
+
+// A pair of spheres (radius_ratio > 0): a sphere-on-flat model sees the sphere of density rho*
+// on a flat, corlab2026p the pair whole; 0 (the default) is the flat, bit for bit.
+TEST(Registry, RadiusRatioBindsAPairOfSpheres) {
+  const Material sphere = alumina();
+  const Material other = aluminium();
+  ModelOptions pair;
+  pair.radius_ratio = 0.5;
+  Material reduced = sphere;
+  reduced.density = pair_effective_density(0.5, sphere.density, sphere.density / other.density);
+  for (const auto& name : {"ma2023", "thornton1997", "jg2", "johnson1985", "corlab2026"}) {
+    EXPECT_EQ(make_model(name, sphere, other, pair).cor(7.0),
+              make_model(name, reduced, other).cor(7.0))
+        << name;
+  }
+  EXPECT_EQ(make_model("corlab2026p", sphere, other, pair).cor(7.0),
+            corlab2026p(sphere, other, 0.5).cor(7.0));
+  EXPECT_EQ(make_model("corlab2026p", sphere, other).cor(7.0),
+            corlab2026p(sphere, other, 0.0).cor(7.0));
+  // Two spheres are stiffer in inertia than one on a flat (rho* > rho): a lower e.
+  EXPECT_LT(make_model("corlab2026p", sphere, other, pair).cor(7.0),
+            make_model("corlab2026p", sphere, other).cor(7.0));
+  pair.radius_ratio = -0.1;
+  expect_input_error([&] { (void)make_model("jg2", sphere, other, pair); },
+                     "invalid radius_ratio = -0.1: must be >= 0 and finite (R1/R2, 0 for a flat) "
+                     "[-]");
+  for (const double bad :
+       {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    pair.radius_ratio = bad;
+    EXPECT_THROW((void)make_model("corlab2026p", sphere, other, pair), InputError);
+  }
 }
 
 // The registry is one table of {info, factory}: each name builds its own model (no name falls
