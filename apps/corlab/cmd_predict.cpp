@@ -164,11 +164,11 @@ int run_predict(const PredictOptions& o) {
   }
   const double e_star = effective_modulus(sphere, substrate);
   const double sy = *substrate.yield_stress;
-  // k1 at the pair's rho* [kg/m^3] (the sphere's own density on a flat).
-  const double rho =
-      pair_effective_density(o.radius_ratio, sphere.density, sphere.density / substrate.density);
+  // k1 and the validity boxes at the pair's rho* [kg/m^3] (the sphere's own density on a flat).
+  const Material reduced = pair_reduced_sphere(sphere, substrate, o.radius_ratio);
+  const double rho = reduced.density;
   require_finite_k1(velocities.front(), e_star, rho);  // k1 falls with v
-  warn_outside_validity(models, velocities, sphere, substrate);
+  warn_outside_validity(models, velocities, reduced, substrate);
   std::vector<double> e(velocities.size());
   if (o.format == "json") {
     // The document of out.dump(2), written one model at a time (a million points of every model

@@ -8,7 +8,7 @@ import json
 import os
 import sys
 
-from . import dataset
+from . import _core, dataset
 from .html_table import esc, fmt, pct, table
 
 
@@ -28,16 +28,29 @@ def table2_versus_eq19(fit):
     return rows, t2["corlab2026_at_least_as_close"], t2["cases"]
 
 
-def pairs_section(folder):
-    """The particle-pair dataset (data/fe_restitution_pairs, beside the flat one): every model's
-    scores on it and on its two corners, and corlab2026p's held-out errors."""
+def _span(bounds):
+    return f"{bounds[0]:g}-{bounds[1]:g}"
+
+
+def _model_and_scores(folder):
+    """(model_fit.json, model_scores.json) of a dataset folder, None if either is missing."""
     try:
         with open(os.path.join(folder, "model_fit.json")) as f:
             model = json.load(f)
         with open(os.path.join(folder, "model_scores.json")) as f:
-            scores = json.load(f)
+            return model, json.load(f)
     except OSError:
+        return None
+
+
+def pairs_section(folder):
+    """The particle-pair dataset (data/fe_restitution_pairs, beside the flat one): every model's
+    scores on it and on its two corners, and corlab2026p's held-out errors."""
+    loaded = _model_and_scores(folder)
+    if loaded is None:
         return "<p><i>No particle-pair dataset found (data/fe_restitution_pairs).</i></p>"
+    model, scores = loaded
+    box = _core.dataset_box("pairs")
     rows = []
     for name, s in scores["scores"].items():
         rows.append([esc(f"{name} (all rows)"), *_score_cells(s["all cases"]["all"])])
@@ -49,7 +62,8 @@ def pairs_section(folder):
             for regime, s in regimes.items()]
     return f"""<h3>Particle pairs</h3><p>{scores['rows']} FE runs of the particle-pair dataset
 (<code>{esc(folder)}</code>): a sphere on a flat or on a free second sphere over the modulus
-ratios 0.05-20, density ratios 0.1-10 and R1/R2 0-1. A sphere-on-flat model sees a pair as the
+ratios {_span(box["modulus_ratio"])}, density ratios {_span(box["density_ratio"])} and R1/R2 0
+(a flat) or {_span(box["radius_ratio"])}. A sphere-on-flat model sees a pair as the
 sphere of the pair's density rho* on a flat; <code>corlab2026p</code> sees the pair and is
 fitted on {model['rows_train']} rows of both datasets, with a random {model['rows_random_holdout']}
 and the corners ({esc(model['corner'])}, {model['rows_corner_holdout']} rows) held out.</p>
@@ -61,13 +75,10 @@ and the corners ({esc(model['corner'])}, {model['rows_corner_holdout']} rows) he
 def dataset_section(fit, out_dir):
     """Beyond the paper: corlab's FE dataset, its model and every model's scores on it."""
     folder = fit.get("dataset_dir") or ""
-    try:
-        with open(os.path.join(folder, "model_fit.json")) as f:
-            model = json.load(f)
-        with open(os.path.join(folder, "model_scores.json")) as f:
-            scores = json.load(f)
-    except OSError:
+    loaded = _model_and_scores(folder)
+    if loaded is None:
         return "<p><i>No FE dataset found (data/fe_restitution).</i></p>"
+    model, scores = loaded
     head = ["model", "cases", "RMS", "worst", "bias"]
     rows = []
     for name, s in scores["scores"].items():

@@ -43,10 +43,11 @@ void warn_if_unverified(const restitution::Model& bound) {
 void warn_if_outside(const restitution::Model& bound,
                      const MaterialArg& sphere,
                      const MaterialArg& substrate,
-                     std::span<const double> velocities) {
-  for (const auto& w :
-       restitution::validity_warnings(bound.info(), velocities, to_material(sphere, "sphere"),
-                                      to_material(substrate, "substrate"))) {
+                     std::span<const double> velocities,
+                     double radius_ratio) {
+  const Material other = to_material(substrate, "substrate");
+  const Material reduced = pair_reduced_sphere(to_material(sphere, "sphere"), other, radius_ratio);
+  for (const auto& w : restitution::validity_warnings(bound.info(), velocities, reduced, other)) {
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
   }
 }
@@ -226,7 +227,7 @@ void bind_models(py::module_& m) {
          double v, std::optional<bool> clamp, double radius, double radius_ratio) {
         const auto bound = bind_model(model, sphere, substrate, clamp, radius, radius_ratio);
         const double e = bound.cor(v);
-        warn_if_outside(bound, sphere, substrate, std::span<const double>(&v, 1));
+        warn_if_outside(bound, sphere, substrate, std::span<const double>(&v, 1), radius_ratio);
         return e;
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
@@ -250,7 +251,7 @@ void bind_models(py::module_& m) {
           py::gil_scoped_release release;
           bound.cor(in, res);
         }
-        warn_if_outside(bound, sphere, substrate, in);
+        warn_if_outside(bound, sphere, substrate, in, radius_ratio);
         return out;
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),

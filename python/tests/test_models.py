@@ -78,7 +78,6 @@ def test_wu_unclamped_by_default_and_clamp_option():
 
 
 def test_unverified_models_warn_and_verified_do_not():
-    import warnings
     for info in corlab.models():
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
@@ -163,6 +162,17 @@ def test_cli_predict_takes_a_second_sphere(corlab_bin):
     done = subprocess.run(args + ["-1"], capture_output=True, text=True)
     assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
     assert "radius_ratio = -1" in done.stderr
+
+
+def test_a_second_sphere_is_checked_at_the_pairs_density():
+    """ma2023's k1 box holds k1 = E*/(rho v^2) at the pair's rho*: two identical steel spheres
+    (rho* = 4 rho) at 60 m/s fall below k1_min = E*/(15700 70^2) where one on a flat does not."""
+    steel = "E=210e9,nu=0.3,rho=7850,sy=500e6"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        corlab.predict("ma2023", steel, steel, 60.0)
+    with pytest.warns(UserWarning, match="extrapolates"):
+        corlab.predict("ma2023", steel, steel, 60.0, radius_ratio=1.0)
 
 
 def test_oblique_rebound_slides_by_the_coulomb_identity():

@@ -56,10 +56,16 @@ double pair_effective_density(double radius_ratio, double sphere_density, double
   return sphere_density * std::pow(1.0 + radius_ratio, 3) / (1.0 + density_ratio * r3);
 }
 
-void require_radius_ratio(double radius_ratio) {
+Material pair_reduced_sphere(const Material& sphere, const Material& other, double radius_ratio) {
   if (!(std::isfinite(radius_ratio) && radius_ratio >= 0.0)) {
     throw_invalid("radius_ratio", radius_ratio, ">= 0 and finite (R1/R2, 0 for a flat) [-]");
   }
+  Material reduced = sphere;
+  if (radius_ratio > 0.0) {
+    reduced.density =
+        pair_effective_density(radius_ratio, sphere.density, sphere.density / other.density);
+  }
+  return reduced;
 }
 
 double k2(double yield_stress, double effective_modulus) {

@@ -36,11 +36,8 @@ static_assert(each_coefficient_fitted_once(),
 Corlab2026Pair corlab2026p_pair(const Material& sphere,
                                 const Material& other,
                                 double radius_ratio) {
-  require_radius_ratio(radius_ratio);
   // The pair's Hertz impact is a sphere of density rho* [kg/m^3] on a flat.
-  Material effective = sphere;
-  effective.density =
-      pair_effective_density(radius_ratio, sphere.density, sphere.density / other.density);
+  const Material effective = pair_reduced_sphere(sphere, other, radius_ratio);
   Corlab2026Pair pair = corlab2026_pair(effective, other);
   // Johnson's damage number on the density [kg/m^3] of the body that yields first (the one
   // cratered): corlab2026_pair() put rho* there.

@@ -298,9 +298,9 @@ void add_corlab2026p(std::vector<Registration>& r) {
            .status_note =
                "fitted by this project to its own FE datasets; held-out errors in "
                "data/fe_restitution_pairs/model_fit.json and the README (random 20 % "
-               "and the corners E ratio > 10, density ratio > 5 held out). Short of "
-               "issue 26's target worst <= 6 %: worst held-out rows -15 % (random 20 %) and "
-               "+46 % (density ratio > 5), all fully plastic",
+               "and the corners E ratio > 10, density ratio > 5 held out): RMS <= 2 %, "
+               "worst -10 %, up to a damage number rho* v^2/sigma_y of 0.003; beyond it, "
+               "worst -15 % (random 20 %) and +46 % (density ratio > 5)",
            .clamped_by_default = true},
        [](const ImpactPair&, bool, const FactoryContext& ctx) -> Model::Kernel {
          return corlab2026p(ctx.impactor, ctx.substrate, ctx.options.radius_ratio);
@@ -386,13 +386,9 @@ Model make_model(std::string_view name,
                  const ModelOptions& options) {
   const ModelInfo& info = model_info(name);
   require_positive("radius", options.radius, "[m]");
-  const double r = options.radius_ratio;
-  require_radius_ratio(r);
   make_impact_pair(sphere, substrate, info.name);  // validates both materials first
-  Material reduced = sphere;  // the pair's Hertz impact: a sphere of density rho* on a flat
-  if (r > 0.0) {
-    reduced.density = pair_effective_density(r, sphere.density, sphere.density / substrate.density);
-  }
+  // The pair's Hertz impact: a sphere of density rho* on a flat.
+  const Material reduced = pair_reduced_sphere(sphere, substrate, options.radius_ratio);
   const ImpactPair pair = make_impact_pair(reduced, substrate, info.name);
   const bool clamp = options.clamp.value_or(info.clamped_by_default);
   const FactoryContext ctx{options, reduced, substrate, sphere};

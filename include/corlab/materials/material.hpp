@@ -56,8 +56,10 @@ double k1(double effective_modulus, double sphere_density, double velocity);
 /// @param density_ratio rho1/rho2 [-]
 double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio);
 
-/// Throws InputError naming "radius_ratio" unless R1/R2 [-] is >= 0 and finite (0: a flat).
-void require_radius_ratio(double radius_ratio);
+/// The sphere whose impact on a flat of `other` is the pair's Hertz impact: `sphere` with the
+/// density rho* of pair_effective_density() for R1/R2 = radius_ratio [-] (itself for 0, a
+/// flat). Throws InputError naming "radius_ratio" unless it is >= 0 and finite.
+Material pair_reduced_sphere(const Material& sphere, const Material& other, double radius_ratio);
 
 /// Ma et al. 2023 eq. 6: k2 = sigma_y / E* [-], sigma_y = substrate yield stress [Pa].
 double k2(double yield_stress, double effective_modulus);

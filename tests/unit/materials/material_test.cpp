@@ -45,6 +45,29 @@ TEST(Material, EffectiveModulusAndGroups) {
   EXPECT_DOUBLE_EQ(k2(500e6, 100e9), 0.005);
 }
 
+// rho* = 3 m*/(4 pi R*^3) from the masses and radii themselves: 4 rho for two identical spheres,
+// the sphere's own density on a flat (bit for bit), and an unequal pair.
+TEST(Material, PairReducedSphereHasTheDensityOfThePairsHertzImpact) {
+  const Material sphere = steel();
+  Material other = steel();
+  other.density = 2700.0;
+  EXPECT_EQ(pair_reduced_sphere(sphere, other, 0.0).density, sphere.density);
+  EXPECT_DOUBLE_EQ(pair_reduced_sphere(sphere, sphere, 1.0).density, 4.0 * sphere.density);
+  const double r1 = 0.002;
+  const double r2 = 0.005;
+  const double m1 = sphere.density * r1 * r1 * r1;  // the 4 pi / 3 cancels
+  const double m2 = other.density * r2 * r2 * r2;
+  const double r_star = r1 * r2 / (r1 + r2);
+  const double rho_star = m1 * m2 / (m1 + m2) / (r_star * r_star * r_star);
+  const Material reduced = pair_reduced_sphere(sphere, other, r1 / r2);
+  EXPECT_NEAR(reduced.density / rho_star, 1.0, 1e-14);
+  EXPECT_EQ(reduced.youngs_modulus, sphere.youngs_modulus);
+  expect_input_error([&] { (void)pair_reduced_sphere(sphere, other, -0.5); },
+                     "invalid radius_ratio = -0.5: must be >= 0 and finite (R1/R2, 0 for a flat) "
+                     "[-]");
+  EXPECT_THROW((void)pair_reduced_sphere(sphere, other, std::nan("")), InputError);
+}
+
 TEST(Material, ValidateAcceptsGoodMaterials) {
   EXPECT_NO_THROW(validate(steel(), "m", true));
   Material elastic = steel();
