@@ -34,7 +34,10 @@ nlohmann::json model_info_json(const ModelInfo& info) {
           {"status", std::string(to_string(info.status))},
           {"status_note", info.status_note},
           {"clamped_by_default", info.clamped_by_default},
-          {"calibrated", box}};
+          {"calibrated", box},
+          {"accurate_damage_number", info.accurate_damage_number
+                                         ? nlohmann::json(*info.accurate_damage_number)
+                                         : nlohmann::json(nullptr)}};
 }
 
 }  // namespace corlab::restitution

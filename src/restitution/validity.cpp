@@ -39,6 +39,20 @@ std::vector<std::string> validity_warnings(const ModelInfo& info,
         "impact: no equation of state, no quasi-static contact)",
         info.name, v_max, kMaxModelVelocity));
   }
+  if (info.accurate_damage_number && substrate.yield_stress) {
+    // Johnson's damage number rho v^2/sigma_y [-] grows with v: the largest is at v_max.
+    const double damage = sphere.density * v_max * v_max / *substrate.yield_stress;
+    if (damage > *info.accurate_damage_number) {
+      const auto above = std::count_if(velocities.begin(), velocities.end(), [&](double v) {
+        return sphere.density * v * v / *substrate.yield_stress > *info.accurate_damage_number;
+      });
+      out.push_back(fmt::format(
+          "model '{}' is less accurate: {} of {} velocities give a damage number rho v^2/sigma_y "
+          "above {:g} (up to {:.3g}), where its held-out errors grow beyond 2 % RMS "
+          "(docs/theory/corlab_model.md)",
+          info.name, above, velocities.size(), *info.accurate_damage_number, damage));
+    }
+  }
   const CalibrationCheck check = calibration_check(info, velocities, sphere, substrate);
   if (!check.known) return out;
   const DimensionlessBox& box = *info.calibrated;

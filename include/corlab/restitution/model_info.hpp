@@ -49,10 +49,15 @@ struct ModelInfo {
   bool clamped_by_default = true;  ///< whether e is clamped to [0, 1] unless told otherwise
   /// Where the model was calibrated, when known numerically (`corlab predict` warns outside).
   std::optional<DimensionlessBox> calibrated = std::nullopt;
+  /// Largest Johnson damage number rho v^2 / sigma_y,substrate [-] up to which the model's
+  /// held-out errors were measured within 2 % RMS (`corlab predict` warns above); empty = none
+  /// measured.
+  std::optional<double> accurate_damage_number = std::nullopt;
 };
 
 /// The model's description as JSON: name, title, citation, equation, validity, status,
-/// status_note, clamped_by_default, calibrated ({k1_min, k1_max, k2_min, k2_max} or null). The one
+/// status_note, clamped_by_default, calibrated ({k1_min, k1_max, k2_min, k2_max} or null),
+/// accurate_damage_number (or null). The one
 /// serialisation of a ModelInfo: `corlab models --format json`, the explorer's catalog and
 /// Python's `corlab.models()`.
 nlohmann::json model_info_json(const ModelInfo& info);

@@ -34,7 +34,9 @@ CalibrationCheck calibration_check(const ModelInfo& info,
                                    const Material& substrate);
 
 /// One-line warnings for `info` evaluated at `velocities` [m/s] for the pair (the substrate has a
-/// yield stress); empty when every velocity is inside the model's known validity.
+/// yield stress; a second sphere as its reduced sphere, pair_reduced_sphere): speeds beyond every
+/// model, the calibration box, a damage number above ModelInfo::accurate_damage_number. Empty
+/// when every velocity is inside the model's known validity.
 std::vector<std::string> validity_warnings(const ModelInfo& info,
                                            std::span<const double> velocities,
                                            const Material& sphere,

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "corlab/materials/material_database.hpp"
@@ -61,6 +62,27 @@ TEST(ValidityWarnings, CountTheSpeedsTheCheckFlags) {
   const auto beyond = validity_warnings(model_info("thornton1997"), fast, steel(5e8), steel(5e8));
   ASSERT_EQ(beyond.size(), 1U);
   EXPECT_NE(beyond[0].find("beyond 1000 m/s"), std::string::npos) << beyond[0];
+}
+
+// corlab2026p warns where its held-out errors exceed 2 % RMS: above Johnson's damage number
+// rho v^2/sigma_y = 0.003; steel (7850 kg/m^3) on a 500 MPa steel reaches it at 13.8 m/s. Models
+// without a measured limit never warn for it.
+TEST(ValidityWarnings, ADamageNumberAboveTheMeasuredAccuracy) {
+  const double limit = *model_info("corlab2026p").accurate_damage_number;
+  EXPECT_EQ(limit, 0.003);
+  const double v_limit = std::sqrt(limit * 5e8 / 7850.0);
+  const std::vector<double> below = {1.0, 0.99 * v_limit};
+  EXPECT_TRUE(validity_warnings(model_info("corlab2026p"), below, steel(5e8), steel(5e8)).empty());
+  const std::vector<double> speeds = {1.0, 20.0, 40.0};
+  const auto warnings =
+      validity_warnings(model_info("corlab2026p"), speeds, steel(5e8), steel(5e8));
+  ASSERT_EQ(warnings.size(), 1U);
+  EXPECT_NE(warnings[0].find("model 'corlab2026p' is less accurate: 2 of 3 velocities give a "
+                             "damage number rho v^2/sigma_y above 0.003 (up to 0.0251)"),
+            std::string::npos)
+      << warnings[0];
+  EXPECT_FALSE(model_info("corlab2026").accurate_damage_number.has_value());
+  EXPECT_TRUE(validity_warnings(model_info("corlab2026"), speeds, steel(5e8), steel(5e8)).empty());
 }
 
 }  // namespace
