@@ -145,12 +145,12 @@ def score_models(table, names=None):
     """{model: {"all cases": score, "own box": score, "corners": {name: score}}} for the
     registered models (or `names`); corners only on a pair dataset (corner_masks)."""
     infos = {m["name"]: m for m in _core.models()}
+    corners = corner_masks(table)
     out = {}
     for name in names or list(infos):
         e = predictions(table, name)
         own = in_model_box(table, infos[name])
         out[name] = {"all cases": score(table, e), "own box": score(table, e, own)}
-        corners = corner_masks(table)
         if corners:
             out[name]["corners"] = {c: score(table, e, rows) for c, rows in corners.items()}
     return out
