@@ -28,12 +28,8 @@ DAMAGE_LIMITS = (0.003, 0.01, 0.05, math.inf)
 
 def rho_star_inputs(table):
     """corlab2026's inputs with the sphere's density replaced by the pair's rho*."""
-    rho = table.get("effective_density", table["sphere_rho"])
-    rows = []
-    for i, v in enumerate(table["velocity"]):
-        sphere, other = dataset.material_specs(table, i)
-        sphere = sphere.replace(f"rho={table['sphere_rho'][i]!r}", f"rho={rho[i]!r}")
-        rows.append(corlab.corlab2026_inputs(sphere, other, float(v)))
+    rows = [corlab.corlab2026_inputs(*dataset.material_specs(table, i, reduced=True), float(v))
+            for i, v in enumerate(table["velocity"])]
     return {k: np.array([row[k] for row in rows]) for k in rows[0]}
 
 

@@ -40,7 +40,8 @@ constexpr const char* kJgFitEquation =
     "V_c = 1.5605 (C S_y)^2.5/(E*^2 sqrt(rho)), C = 1.295 exp(0.736 nu); e = 1 for V' <= 1";
 
 // corlab2026p's held-out RMS is <= 2 % on the random 20 % and both corners up to this damage
-// number rho* v^2/sigma_y [-] (scripts/corlab2026p_scores.py; docs/theory/corlab_model.md).
+// number rho* v^2/sigma_y [-] (scripts/corlab2026p_scores.py, docs/theory/corlab_model.md;
+// python/tests/test_model_fit.py checks it against the shipped datasets).
 constexpr double kCorlab2026pAccurateDamageNumber = 0.003;
 
 /// What a model is bound to besides the pair quantities: the options and both materials (a model

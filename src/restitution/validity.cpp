@@ -41,16 +41,16 @@ std::vector<std::string> validity_warnings(const ModelInfo& info,
   }
   if (info.accurate_damage_number && substrate.yield_stress) {
     // Johnson's damage number rho v^2/sigma_y [-] grows with v: the largest is at v_max.
-    const double damage = sphere.density * v_max * v_max / *substrate.yield_stress;
-    if (damage > *info.accurate_damage_number) {
-      const auto above = std::count_if(velocities.begin(), velocities.end(), [&](double v) {
-        return sphere.density * v * v / *substrate.yield_stress > *info.accurate_damage_number;
-      });
+    const auto damage = [&](double v) { return sphere.density * v * v / *substrate.yield_stress; };
+    const auto above = std::count_if(velocities.begin(), velocities.end(), [&](double v) {
+      return damage(v) > *info.accurate_damage_number;
+    });
+    if (above > 0) {
       out.push_back(fmt::format(
           "model '{}' is less accurate: {} of {} velocities give a damage number rho v^2/sigma_y "
           "above {:g} (up to {:.3g}), where its held-out errors grow beyond 2 % RMS "
           "(docs/theory/corlab_model.md)",
-          info.name, above, velocities.size(), *info.accurate_damage_number, damage));
+          info.name, above, velocities.size(), *info.accurate_damage_number, damage(v_max)));
     }
   }
   const CalibrationCheck check = calibration_check(info, velocities, sphere, substrate);

@@ -131,18 +131,30 @@ TEST(DemExport, ParticlePairsTakeTheModelAtTheEffectiveDensity) {
   }
 }
 
+// A 2 mm alumina type and a 5 mm aluminium type (aluminium first if asked) against `wall`, their
+// e(v) from `model` over 0.3-3 m/s; the elastic alumina pair is given e = 1.
+ExportSpec alumina_and_aluminium(const std::string& model,
+                                 const Material& wall,
+                                 bool aluminium_first) {
+  const ParticleType alumina{material("alumina_ma2023"), 0.002, ""};
+  const ParticleType aluminium{material("aluminium_ma2023"), 0.005, ""};
+  ExportSpec spec;
+  spec.types = aluminium_first ? std::vector{aluminium, alumina} : std::vector{alumina, aluminium};
+  spec.wall = wall;
+  spec.model = model;
+  spec.pair_restitution = {parse_pair_restitution(aluminium_first ? "2/2=1" : "1/1=1")};
+  spec.v_min = 0.3;
+  spec.v_max = 3.0;
+  return spec;
+}
+
 // Unequal spheres: the JSON's R* and m* are the pair's, and the model sees rho* = 3 m*/(4 pi R*^3);
 // a wall pair keeps the particle's own density, also when the particle is the body that yields.
 TEST(DemExport, UnequalPairsAndWallPairsDensities) {
   const Material& aluminium = material("aluminium_ma2023");
   const Material& alumina = material("alumina_ma2023");
-  ExportSpec spec;
-  spec.types = {{alumina, 0.002, ""}, {aluminium, 0.005, ""}};
-  spec.wall = alumina;
-  spec.model = "thornton1997";
-  spec.pair_restitution = {parse_pair_restitution("1/1=1"), parse_pair_restitution("1/wall=1")};
-  spec.v_min = 0.3;
-  spec.v_max = 3.0;
+  ExportSpec spec = alumina_and_aluminium("thornton1997", alumina, false);
+  spec.pair_restitution.push_back(parse_pair_restitution("1/wall=1"));
   const auto pairs = calibrate_pairs(spec);
   ASSERT_EQ(pairs.size(), 5u);  // 1-1, 1-2, 2-2, 1-wall, 2-wall
   const double m1 = 4.0 / 3.0 * units::kPi * std::pow(0.002, 3) * alumina.density;
@@ -174,22 +186,21 @@ TEST(DemExport, UnequalPairsAndWallPairsDensities) {
 TEST(DemExport, Corlab2026pTakesThePairsRadiusRatio) {
   const Material& aluminium = material("aluminium_ma2023");
   const Material& alumina = material("alumina_ma2023");
-  ExportSpec spec;
-  spec.types = {{alumina, 0.002, ""}, {aluminium, 0.005, ""}};
-  spec.wall = aluminium;
-  spec.model = "corlab2026p";
-  spec.pair_restitution = {parse_pair_restitution("1/1=1")};
-  spec.v_min = 0.3;
-  spec.v_max = 3.0;
-  const auto pairs = calibrate_pairs(spec);
-  ASSERT_EQ(pairs.size(), 5u);  // 1-1, 1-2, 2-2, 1-wall, 2-wall
   const auto unequal = restitution::corlab2026p(alumina, aluminium, 0.4);
   const auto equal = restitution::corlab2026p(aluminium, aluminium, 1.0);
   const auto on_wall = restitution::corlab2026p(aluminium, aluminium, 0.0);
-  for (const double v : {0.3, 3.0}) {
-    EXPECT_DOUBLE_EQ(pairs[1].curve(v), unequal.cor(v)) << v;
-    EXPECT_DOUBLE_EQ(pairs[2].curve(v), equal.cor(v)) << v;
-    EXPECT_DOUBLE_EQ(pairs[4].curve(v), on_wall.cor(v)) << v;
+  // Types in either order: the yielding aluminium is the model's flat, the alumina its sphere.
+  for (const bool aluminium_first : {false, true}) {
+    const auto pairs =
+        calibrate_pairs(alumina_and_aluminium("corlab2026p", aluminium, aluminium_first));
+    ASSERT_EQ(pairs.size(), 5u);  // 1-1, 1-2, 2-2, 1-wall, 2-wall
+    const std::size_t al_al = aluminium_first ? 0 : 2;
+    const std::size_t al_wall = aluminium_first ? 3 : 4;
+    for (const double v : {0.3, 3.0}) {
+      EXPECT_DOUBLE_EQ(pairs[1].curve(v), unequal.cor(v)) << v << " " << aluminium_first;
+      EXPECT_DOUBLE_EQ(pairs[al_al].curve(v), equal.cor(v)) << v << " " << aluminium_first;
+      EXPECT_DOUBLE_EQ(pairs[al_wall].curve(v), on_wall.cor(v)) << v << " " << aluminium_first;
+    }
   }
 }
 
