@@ -13,6 +13,7 @@
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
@@ -30,7 +31,7 @@ struct MeshArgs {
 };
 
 void print_quality(const char* name, const fem::MeshQuality& q) {
-  constexpr double kDeg = 180.0 / std::numbers::pi;
+  constexpr double kDeg = 1.0 / units::kDegree;
   fmt::print(
       "{:<10} elements {:>6}  nodes {:>6}  min_angle {:6.2f} deg  max_angle {:6.2f} deg  "
       "max_aspect {:6.2f}  min_jacobian {:.3e} m^2  min_char_length {:.4e} m  min_width {:.4e} m  "

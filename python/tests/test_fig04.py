@@ -97,7 +97,8 @@ def test_3d_snapshots_read_back_as_hexahedra(tmp_path, corlab_bin):
     impact velocity before the contact has slowed it."""
     out = tmp_path / "oblique"
     cmd = [corlab_bin, "simulate", "--quiet", "--out", str(out),
-           "--set", "substrate.shape=rigid", "--set", "impact.angle=60",
+           "--set", "solver.model=3d", "--set", "substrate.shape=rigid",
+           "--set", "impact.angle=60",
            "--set", "contact.friction=0.1", "--set", "sphere.sigma_y=none",
            "--set", "impact.velocity=1", "--set", "mesh.h_min=1.5e-3",
            "--set", "mesh.contact_elements=0", "--set", "output.times=2e-4"]

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "corlab/core/error.hpp"
+#include "corlab/materials/material.hpp"
 
 namespace corlab::dem {
 
@@ -38,7 +39,7 @@ double hertz_contact_time(double stiffness, double effective_mass, double veloci
   require_positive("velocity", velocity, "[m/s]");
   const double delta_max =
       std::pow(5.0 * effective_mass * velocity * velocity / (4.0 * stiffness), 0.4);
-  return 2.9432 * delta_max / velocity;
+  return hertz_contact_time_factor() * delta_max / velocity;
 }
 
 }  // namespace corlab::dem

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
 
 namespace corlab {
 
@@ -49,6 +50,11 @@ double effective_modulus(const Material& sphere, const Material& substrate) {
 
 double k1(double effective_modulus, double sphere_density, double velocity) {
   return effective_modulus / (sphere_density * velocity * velocity);
+}
+
+double hertz_contact_time_factor() {
+  // 2 int_0^1 (1 - x^(5/2))^(-1/2) dx = 2 (2/5) B(2/5, 1/2) = (4/5) sqrt(pi) G(2/5) / G(9/10).
+  return 0.8 * std::sqrt(units::kPi) * std::tgamma(0.4) / std::tgamma(0.9);
 }
 
 double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio) {

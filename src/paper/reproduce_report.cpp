@@ -93,7 +93,7 @@ json hertz_run(const HistoryRun& run, const json& paper) {
               {"max_force", h.max_force},
               {"contact_radius", h.contact_radius},
               {"contact_time", h.contact_time},
-              {"contact_time_factor", fem::hertz_contact_time_factor()}}}};
+              {"contact_time_factor", hertz_contact_time_factor()}}}};
   if (r["elastic"].get<bool>()) {
     r["F_max"] = number(s, "F_max");
     r["delta_max"] = number(s, "delta_max");

@@ -6,15 +6,14 @@
 #include <vector>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
+#include "corlab/materials/material.hpp"
 
 namespace corlab::restitution {
 namespace {
 
-// (not std::numbers: the explorer's emscripten libc++ builds this directory too)
-constexpr double kDegreesPerRadian = 57.295779513082320877;
-constexpr double kPi = 3.14159265358979323846;
-// Hertz's contact time in alpha_max / v_n: 2 int_0^1 (1 - x^(5/2))^(-1/2) dx = (4/5) B(2/5, 1/2).
-constexpr double kHertzContactTime = 2.9432704;
+using units::kDegree;
+using units::kPi;
 
 void check(const char* field, double value, bool ok, const char* constraint) {
   if (std::isnan(value) || !ok) throw_invalid(field, value, constraint);
@@ -49,7 +48,8 @@ class Annuli {
       const double trial = force_[j] + length * slide;
       if (coulomb) {
         // The Coulomb bound: the annulus's share of the normal force, exactly integrated.
-        const double bound = x_new * (hi_new - lo) - (hi_new * hi_new * hi_new - lo * lo * lo) / 3.0;
+        const double bound =
+            x_new * (hi_new - lo) - (hi_new * hi_new * hi_new - lo * lo * lo) / 3.0;
         force_[j] = std::clamp(trial, -bound, bound);
         if (std::abs(trial) <= bound) all_slip = false;
       } else {
@@ -81,7 +81,8 @@ MbfNormalised mbf_normalised(double chi, double psi1, const MbfDiscretisation& d
   check("time_steps", d.time_steps, d.time_steps >= 100, ">= 100");
   // Normalised time tau = t v_n / alpha_max: x'' = -(5/4) x^(3/2) (Hertz, x' = 1 at x = 0) and
   // u'' = -(15/4) chi F, u = kappa (v_t - R omega) / (mu v_n), F the annuli's force sum.
-  const double dt = kHertzContactTime / d.time_steps;
+  // Hertz's contact time in alpha_max / v_n over the steps.
+  const double dt = hertz_contact_time_factor() / d.time_steps;
   Annuli annuli(d.annuli);
   double x = 0.0;
   double x_rate = 1.0;  // at the half steps (the force vanishes at x = 0)
@@ -150,7 +151,7 @@ MbfRebound mbf_rebound(const MbfImpact& in, const MbfDiscretisation& d) {
   out.stiffness_ratio =
       mbf_stiffness_ratio(in.sphere_modulus, in.sphere_poisson, in.flat_modulus, in.flat_poisson);
   out.chi = mbf_chi(out.stiffness_ratio, in.gyration);
-  const double theta = in.angle / kDegreesPerRadian;
+  const double theta = in.angle * kDegree;
   const double v_n = in.velocity * std::cos(theta);
   const double v_t = in.velocity * std::sin(theta);
   out.psi1 = out.stiffness_ratio * v_t / (in.friction * v_n);
@@ -160,13 +161,14 @@ MbfRebound mbf_rebound(const MbfImpact& in, const MbfDiscretisation& d) {
   out.force_reversals = n.force_reversals;
   out.gross_sliding = n.gross_sliding;
   // The contact point's velocity change gives the impulse per unit mass [m/s].
-  out.contact_slip_velocity = n.psi2 * n.normal_restitution * in.friction * v_n / out.stiffness_ratio;
+  out.contact_slip_velocity =
+      n.psi2 * n.normal_restitution * in.friction * v_n / out.stiffness_ratio;
   const double impulse = (v_t - out.contact_slip_velocity) / (1.0 + 1.0 / in.gyration);
   const double mass = 4.0 / 3.0 * kPi * in.radius * in.radius * in.radius * in.density;
   out.tangential_impulse = mass * impulse;
   out.tangential_restitution = (v_t - impulse) / v_t;
   out.spin = impulse / (in.gyration * in.radius);
-  out.rebound_angle = std::atan2(v_t - impulse, n.normal_restitution * v_n) * kDegreesPerRadian;
+  out.rebound_angle = std::atan2(v_t - impulse, n.normal_restitution * v_n) / kDegree;
   // Hertz: alpha_max = (15 m v_n^2 / (16 E* sqrt(R)))^(2/5).
   const double flat_compliance = std::isinf(in.flat_modulus)
                                      ? 0.0

@@ -2,8 +2,9 @@
 // are pinned in tests/golden/golden.json, run at every SIMD level this CPU has (simd_level.hpp).
 //
 //   golden_test                      check (what ctest runs), one test per case
-//   golden_test --rebaseline [FILE]  rerun every case, print old and new side by side (for the
-//                                    commit message) and rewrite FILE (default: the source's)
+//   golden_test --rebaseline [FILE [CASE...]]  rerun every case (or the CASEs named), print old
+//                                    and new side by side (for the commit message) and rewrite
+//                                    FILE (default: the source's); a case not named keeps its pins
 //
 // Built as golden.json's `exact_build` (compiler and build type), every value must be the pinned
 // one bit for bit, at each level: a solver change of one ulp in a constant moves the energy
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -144,12 +146,14 @@ class GoldenCase : public ::testing::Test {
 };
 
 /// Prints old and new pins side by side and returns the file with the new ones.
-json rebaseline(json file) {
+json rebaseline(json file, const std::vector<std::string>& only) {
   const std::vector<SimdLevel> levels = supported_simd_levels();
   fmt::print("golden rebaseline, build {} (was {})\n", kBuild, file.value("exact_build", "?"));
   fmt::print("{:<28} {:<10} {:<21} {:>24} {:>24} {:>10}\n", "case", "level", "value", "old", "new",
              "rel. change");
   for (json& c : file.at("cases")) {
+    const std::string case_name = c.at("name").get<std::string>();
+    if (!only.empty() && std::find(only.begin(), only.end(), case_name) == only.end()) continue;
     json fresh = json::object();
     for (const SimdLevel level : levels) {
       const std::string name(to_string(level));
@@ -186,7 +190,8 @@ int main(int argc, char** argv) {
   try {
     if (argc >= 2 && std::strcmp(argv[1], "--rebaseline") == 0) {
       const std::filesystem::path file = argc >= 3 ? argv[2] : corlab::fem::default_file();
-      const json updated = corlab::fem::rebaseline(corlab::fem::read_file(file));
+      const std::vector<std::string> only(argv + std::min(argc, 3), argv + argc);
+      const json updated = corlab::fem::rebaseline(corlab::fem::read_file(file), only);
       corlab::write_file_atomically(file, updated.dump(2) + '\n');
       fmt::print("wrote {}\n", file.string());
       return 0;

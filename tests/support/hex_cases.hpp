@@ -12,7 +12,8 @@ inline fem::ImpactConfig sliding_on_rigid_flat() {
   c.substrate.shape = fem::SubstrateShape::kRigid;
   c.sphere.material.yield_stress.reset();
   c.impact.velocity = 1.0;
-  c.impact.angle = 60.0;
+  c.solver.model = fem::SolverModel::kThreeD;
+  c.impact.angle = fem::PlaneAngle::degrees(60.0);
   c.contact.friction = 0.1;
   c.mesh.h_min = 1.5e-3;
   c.mesh.contact_elements = 0.0;
@@ -27,7 +28,8 @@ inline fem::ImpactConfig sliding_on_elastic_flat(double mu, double h) {
   c.sphere.material.yield_stress.reset();
   c.substrate.material.yield_stress.reset();
   c.impact.velocity = 10.0;
-  c.impact.angle = 60.0;
+  c.solver.model = fem::SolverModel::kThreeD;
+  c.impact.angle = fem::PlaneAngle::degrees(60.0);
   c.contact.friction = mu;
   c.mesh.h_min = h;
   c.mesh.contact_elements = 0.0;

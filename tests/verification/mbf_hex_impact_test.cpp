@@ -14,13 +14,12 @@
 
 #include <cmath>
 
-#include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/core/units.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 #include "corlab/restitution/mbf_oblique.hpp"
 
 namespace corlab::fem {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   constexpr double kMu = 0.3;
@@ -34,13 +33,13 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   ASSERT_EQ(c.sphere.material.youngs_modulus, c.substrate.material.youngs_modulus);
   const double kappa = 2.0 * (1.0 - nu) / (2.0 - nu);
   const double theta = std::atan(kPsi1 * kMu / kappa);
-  c.impact.angle = theta / kDeg;
+  c.impact.angle = PlaneAngle{theta};
   c.impact.velocity = kNormalVelocity / std::cos(theta);
   c.contact.friction = kMu;
   c.mesh.h_min = 1.5e-3;
   c.mesh.contact_elements = 0.0;
   validate(c);
-  const HexImpactResult r = simulate_hex_impact(c);
+  const ImpactResult r = simulate(c);
   ASSERT_EQ(r.status, RunStatus::kSeparated);
   EXPECT_NEAR(r.e_n, 1.0, 5e-3);
 
@@ -52,7 +51,7 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
                                 .flat_modulus = c.substrate.material.youngs_modulus,
                                 .flat_poisson = c.substrate.material.poisson_ratio,
                                 .velocity = c.impact.velocity,
-                                .angle = c.impact.angle,
+                                .angle = theta / units::kDegree,
                                 .friction = kMu});
   ASSERT_NEAR(mbf.psi1, kPsi1, 1e-12);
   ASSERT_FALSE(mbf.gross_sliding);

@@ -11,5 +11,6 @@ inline constexpr double kMicro = 1e-6;  ///< um -> m, us -> s
 inline constexpr double kMega = 1e6;    ///< MPa -> Pa
 inline constexpr double kGiga = 1e9;    ///< GPa -> Pa
 inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kDegree = kPi / 180.0;  ///< deg -> rad (an angle in degrees x kDegree)
 
 }  // namespace corlab::units

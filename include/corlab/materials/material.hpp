@@ -61,6 +61,12 @@ double pair_effective_density(double radius_ratio, double sphere_density, double
 /// flat). Throws InputError naming "radius_ratio" unless it is >= 0 and finite.
 Material pair_reduced_sphere(const Material& sphere, const Material& other, double radius_ratio);
 
+/// Dimensionless Hertz contact duration t_c v / delta_max =
+/// 2 int_0^1 (1 - x^(5/2))^(-1/2) dx = (4/5) sqrt(pi) Gamma(2/5) / Gamma(9/10) = 2.943275...
+/// (Johnson 1985, eq. 11.24) [-]: the one Hertz contact-time reference (the FE's time scales,
+/// the MBF integration, the DEM time step).
+double hertz_contact_time_factor();
+
 /// Ma et al. 2023 eq. 6: k2 = sigma_y / E* [-], sigma_y = substrate yield stress [Pa].
 double k2(double yield_stress, double effective_modulus);
 

@@ -83,8 +83,8 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       +[](ImpactConfig& c) { return &c.impact.repeats; }));
   t.push_back(entry(
       "impact.angle", "[deg]", closed_open(0.0, 90.0, "from the contact normal; 90 never touches"),
-      "angle of the impact velocity from the contact normal (> 0: the 3-D model; the normal "
-      "speed is impact.velocity cos(angle))",
+      "angle of the impact velocity from the contact normal (0, or >= 1 with solver.model = 3d; "
+      "the normal speed is impact.velocity cos(angle))",
       +[](ImpactConfig& c) { return &c.impact.angle; }));
   t.push_back(entry(
       "contact.friction", "[-]", closed(0.0, 10.0), "Coulomb friction coefficient mu (3-D model)",
@@ -114,7 +114,7 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
   t.push_back(entry(
       "mesh.transitions", "[-]", closed(0.0, 1.0, "0 = off, 1 = on"),
       "3:1 transitions in the tensor-grid substrate and the sphere's ring and skin (fewer "
-      "elements)",
+      "elements; axisymmetric model)",
       +[](ImpactConfig& c) { return &c.mesh.transitions; }));
   t.push_back(entry(
       "mesh.file", "", std::nullopt,
@@ -126,7 +126,7 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
   t.push_back(entry(
       "solver.model", "", std::nullopt,
       "axisymmetric (normal impacts) | 3d (the 3-D half model: hexahedra, friction, oblique "
-      "impacts; chosen whenever impact.angle > 0)",
+      "impacts); this key alone chooses the model",
       +[](ImpactConfig& c) { return &c.solver.model; }));
   t.push_back(entry(
       "solver.safety_factor", "[-]",
@@ -167,17 +167,18 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
       +[](ImpactConfig& c) { return &c.solver.max_steps; }));
   t.push_back(entry(
       "solver.subcycling_levels", "[-]", closed(0.0, 6.0, "2^6 = 64 base steps per major cycle"),
-      "element subcycling: elements step at up to 2^this x the base step (0 = off)",
+      "element subcycling: elements step at up to 2^this x the base step (0 = off; axisymmetric "
+      "model)",
       +[](ImpactConfig& c) { return &c.solver.subcycling_levels; }));
   t.push_back(entry(
       "solver.mass_scaling_max", "[-]",
       closed(1.0, 64.0, "dt x 64 = density x 4096 at the contact"),
       "mass scaling: the base step may grow up to this factor times the step floor (the "
-      "contact's h-squares' step; 1 = off, floor included)",
+      "contact's h-squares' step; 1 = off, floor included; axisymmetric model)",
       +[](ImpactConfig& c) { return &c.solver.mass_scaling_max; }));
   t.push_back(entry(
       "solver.mass_scaling_inertia", "[-]", closed(0.0, 1e-2, "quasi-static contact zone"),
-      "mass scaling: bound on the added inertia (F^2 - 1) rho v^2 / p_ref",
+      "mass scaling: bound on the added inertia (F^2 - 1) rho v^2 / p_ref (axisymmetric model)",
       +[](ImpactConfig& c) { return &c.solver.mass_scaling_inertia; }));
   t.push_back(entry(
       "output.times", "[s]", closed(0.0, 10.0), "times at which to write VTU fields (a list)",

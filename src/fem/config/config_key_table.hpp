@@ -23,12 +23,13 @@ using Accessor = std::variant<double* (*)(ImpactConfig&),
                               Material* (*)(ImpactConfig&),
                               std::filesystem::path* (*)(ImpactConfig&),
                               SubstrateShape* (*)(ImpactConfig&),
-                              SolverModel* (*)(ImpactConfig&)>;
+                              SolverModel* (*)(ImpactConfig&),
+                              PlaneAngle* (*)(ImpactConfig&)>;
 
 inline constexpr KeyKind kKindOf[] = {
-    KeyKind::number,       KeyKind::integer,     KeyKind::integer,
-    KeyKind::yield_stress, KeyKind::number_list, KeyKind::material,
-    KeyKind::path,         KeyKind::choice,      KeyKind::choice};
+    KeyKind::number,      KeyKind::integer,  KeyKind::integer, KeyKind::yield_stress,
+    KeyKind::number_list, KeyKind::material, KeyKind::path,    KeyKind::choice,
+    KeyKind::choice,      KeyKind::number};
 
 struct KeyEntry {
   ConfigKeyInfo info;

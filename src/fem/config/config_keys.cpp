@@ -94,6 +94,8 @@ void set_value(const KeyEntry& e, ImpactConfig& c, std::string_view text) {
           }
         } else if constexpr (config_choices::kIsChoice<T>) {
           *target = config_choices::parse_choice<T>(key, text);
+        } else if constexpr (std::is_same_v<T, PlaneAngle>) {
+          *target = PlaneAngle::degrees(parse_finite(key, text));
         } else {
           *target = std::string(trim(text));
         }
@@ -109,6 +111,8 @@ std::vector<double> numbers_of(const KeyEntry& e, ImpactConfig& c) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(v)>>;
         if constexpr (std::is_arithmetic_v<T>) {
           return {static_cast<double>(*v)};
+        } else if constexpr (std::is_same_v<T, PlaneAngle>) {
+          return {v->in_degrees()};
         } else if constexpr (std::is_same_v<T, std::optional<double>>) {
           return *v ? std::vector<double>{**v} : std::vector<double>{};
         } else if constexpr (std::is_same_v<T, std::vector<double>>) {
@@ -127,6 +131,8 @@ std::string text_of(const KeyEntry& e, ImpactConfig& c) {
         using T = std::remove_cv_t<std::remove_pointer_t<decltype(v)>>;
         if constexpr (std::is_arithmetic_v<T>) {
           return fmt::format("{}", *v);
+        } else if constexpr (std::is_same_v<T, PlaneAngle>) {
+          return fmt::format("{}", v->in_degrees());
         } else if constexpr (std::is_same_v<T, std::optional<double>>) {
           return *v ? fmt::format("{}", **v) : std::string("none");
         } else if constexpr (std::is_same_v<T, std::vector<double>>) {
@@ -165,6 +171,8 @@ nlohmann::json json_of(const KeyEntry& e, ImpactConfig& c) {
           return v->string();
         } else if constexpr (config_choices::kIsChoice<T>) {
           return std::string(to_string(*v));
+        } else if constexpr (std::is_same_v<T, PlaneAngle>) {
+          return v->in_degrees();
         } else {
           return *v;
         }

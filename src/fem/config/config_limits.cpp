@@ -108,19 +108,62 @@ void check_solver(const ImpactConfig& c) {
   }
 }
 
-// What the 3-D model supports so far, and friction only where a model has it.
-void check_model(const ImpactConfig& c) {
+// A key the model in use does not read, set to `value`: accepted at its default and at `also`
+// (the value that says what the model does anyway), else refused naming the model.
+void check_unread(
+    std::string_view key, double value, double fallback, double also, std::string_view why) {
+  if (value == fallback || value == also) return;
+  const std::string alternative = also == fallback ? "" : fmt::format(" or {:g}", also);
+  throw_invalid(
+      key, value,
+      fmt::format("{:g} (the default){} with solver.model = {}", fallback, alternative, why));
+}
+
+// The keys one model does not read: refused when set to something it would ignore.
+void check_unread_keys(const ImpactConfig& c) {
+  const ImpactConfig d;
   if (!uses_3d_model(c)) {
+    check_unread("solver.hourglass_3d", c.solver.hourglass_3d, d.solver.hourglass_3d,
+                 d.solver.hourglass_3d, "axisymmetric (the 3-D model's hexahedra only)");
+    return;
+  }
+  const std::string_view no_subcycling = "3d (the 3-D model steps every element at the base step)";
+  check_unread("solver.subcycling_levels", c.solver.subcycling_levels, d.solver.subcycling_levels,
+               0.0, no_subcycling);
+  const std::string_view no_scaling = "3d (the 3-D model does not scale masses)";
+  check_unread("solver.mass_scaling_max", c.solver.mass_scaling_max, d.solver.mass_scaling_max, 1.0,
+               no_scaling);
+  check_unread("solver.mass_scaling_inertia", c.solver.mass_scaling_inertia,
+               d.solver.mass_scaling_inertia, d.solver.mass_scaling_inertia, no_scaling);
+  check_unread("solver.hourglass", c.solver.hourglass, d.solver.hourglass, d.solver.hourglass,
+               "3d (its hexahedra take solver.hourglass_3d)");
+  check_unread("mesh.transitions", c.mesh.transitions, d.mesh.transitions, 0.0,
+               "3d (the 3-D mesh has no transitions)");
+}
+
+// What the 3-D model supports so far, and friction and angles only where a model has them.
+void check_model(const ImpactConfig& c) {
+  check_unread_keys(c);
+  if (!uses_3d_model(c)) {
+    if (c.impact.angle.radians != 0.0)
+      throw_invalid("impact.angle", c.impact.angle.in_degrees(),
+                    "0 with solver.model = axisymmetric (an oblique impact needs solver.model = "
+                    "3d)");
     if (c.contact.friction != 0.0)
       throw_invalid("contact.friction", c.contact.friction,
-                    "0 with the axisymmetric model (friction needs solver.model = 3d or "
-                    "impact.angle > 0)");
+                    "0 with the axisymmetric model (friction needs solver.model = 3d)");
     return;
+  }
+  if (c.impact.angle.radians > 0.0 && c.impact.angle.in_degrees() < kMinObliqueAngle) {
+    throw_invalid("impact.angle", c.impact.angle.in_degrees(),
+                  fmt::format("0 or >= {:g} [deg] (below it the tangential speed is too small "
+                              "for e_t = v_x'/v_x to mean anything)",
+                              kMinObliqueAngle));
   }
   if (sphere_target(c))
     throw_invalid("substrate.shape", to_string(c.substrate.shape),
-                  "flat or rigid with the 3-D model (solver.model = 3d or impact.angle > 0): its "
-                  "second sphere is not built yet");
+                  "flat or rigid with the 3-D model (solver.model = 3d): its second sphere is not "
+                  "built yet");
   if (c.impact.repeats != 1)
     throw_invalid("impact.repeats", c.impact.repeats, "1 with the 3-D model");
   try {

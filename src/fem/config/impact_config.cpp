@@ -68,8 +68,12 @@ std::string_view to_string(SolverModel model) {
   return model == SolverModel::kThreeD ? "3d" : "axisymmetric";
 }
 
+double PlaneAngle::in_degrees() const {
+  return std::stod(fmt::format("{:.15g}", radians / units::kDegree));
+}
+
 double normal_velocity(const ImpactConfig& config) {
-  return config.impact.velocity * std::cos(config.impact.angle * units::kPi / 180.0);
+  return config.impact.velocity * std::cos(config.impact.angle.radians);
 }
 
 double contact_start_time(const ImpactConfig& config) {

@@ -7,6 +7,7 @@
 #include <numeric>
 #include <utility>
 
+#include "corlab/core/units.hpp"
 #include "corlab/fem/kernels/axisym_quad4.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/mesh/mesh_quality.hpp"
@@ -14,7 +15,7 @@
 namespace corlab::fem::meshing {
 namespace {
 
-constexpr double kMinTransitionAngle = 40.0 * kPi / 180.0;
+constexpr double kMinTransitionAngle = 40.0 * units::kDegree;
 constexpr double kMinTransitionWidth = 0.7;
 constexpr double kMinTransitionLength = 1.0 / std::numbers::sqrt2;  // a square's
 /// Thickness of the coarse side's quads of a thick layer's transition, in mean fine intervals:

@@ -9,11 +9,6 @@
 
 namespace corlab::fem {
 
-double hertz_contact_time_factor() {
-  // 2 int_0^1 (1 - x^(5/2))^(-1/2) dx = 2 (2/5) B(2/5, 1/2) = (4/5) sqrt(pi) G(2/5) / G(9/10).
-  return 0.8 * std::sqrt(std::numbers::pi) * std::tgamma(0.4) / std::tgamma(0.9);
-}
-
 double sphere_mass(double radius, double density) {
   return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius * density;
 }

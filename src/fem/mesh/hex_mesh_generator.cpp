@@ -186,7 +186,7 @@ HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   o.block = config.substrate.shape == SubstrateShape::kFlat;
   o.block_half_width = config.substrate.radius;
   o.block_depth = config.substrate.depth;
-  const double v_t = config.impact.velocity * std::sin(config.impact.angle * units::kPi / 180.0);
+  const double v_t = config.impact.velocity * std::sin(config.impact.angle.radians);
   o.travel = v_t * 1.5 * hertz_reference(normal).contact_time;
   return o;
 }

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "corlab/core/units.hpp"
 #include "fem/mesh/block_geometry.hpp"
 #include "fem/mesh/coarsening_layer.hpp"
 #include "fem/mesh/graded_distribution.hpp"
@@ -29,9 +30,9 @@ constexpr double kMinSpacingFraction = 0.95;
 constexpr double kCoreFirstSpacing = 1.25;
 constexpr double kCoreRightSpacing = 1.1;
 /// Bottom-block arc angle limits [rad] and corner angle of the ring blocks at the core corners.
-constexpr double kMinBottomAngle = 10.0 * kPi / 180.0;
-constexpr double kMaxBottomAngle = 60.0 * kPi / 180.0;
-constexpr double kRingCornerAngle = 120.0 * kPi / 180.0;
+constexpr double kMinBottomAngle = 10.0 * units::kDegree;
+constexpr double kMaxBottomAngle = 60.0 * units::kDegree;
+constexpr double kRingCornerAngle = 120.0 * units::kDegree;
 /// Depth of the uniform-h layer under the sphere's lowest point as a fraction of zone_depth (the
 /// substrate's: by default 0.5 a, where the elastic stresses peak, Johnson 1985, fig. 4.6).
 constexpr double kSphereUniformDepthFraction = 1.0;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "corlab/core/units.hpp"
 #include "corlab/fem/mesh/mesh_quality.hpp"
 #include "fem/mesh/block_geometry.hpp"
 #include "fem/mesh/coarsening_layer.hpp"
@@ -18,7 +19,7 @@ namespace {
 
 /// Quality the three-block substrate must have, else the tensor grid is used: corner angles
 /// >= 40 deg and widths >= 0.7 h (a square zone gives 45 deg and 0.72 h at the diagonal).
-constexpr double kMinBlockAngle = 40.0 * kPi / 180.0;
+constexpr double kMinBlockAngle = 40.0 * units::kDegree;
 constexpr double kMinBlockWidth = 0.7;
 
 /// Graded intervals at least this many h long are coarse enough to run on to the base and to

@@ -14,8 +14,15 @@
 #include "corlab/fem/kernels/j2_plasticity.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/solver/simd_level.hpp"
+#include "corlab/materials/material.hpp"
 
 namespace corlab::fem::solver {
+
+/// The material point of a material description (elastic when it has no yield stress).
+inline J2Plasticity material_point(const Material& m) {
+  return J2Plasticity::from(m.youngs_modulus, m.poisson_ratio,
+                            m.yield_stress.value_or(J2Plasticity::kNoYield), m.hardening_modulus);
+}
 
 /// Constant per-body parameters of the element loop.
 struct BodyParams {

@@ -1,5 +1,5 @@
-// The 3-D solver's contact: node on the rigid plane or on the flat's facets, with Coulomb
-// friction (hex_model.hpp).
+// The 3-D solver's contact: node on the rigid plane or on the flat's facets, with the normal
+// penalty law of penalty_contact.hpp and Coulomb friction (hex_model.hpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,6 +7,7 @@
 
 #include "corlab/fem/kernels/coulomb_friction.hpp"
 #include "corlab/fem/kernels/facet_contact.hpp"
+#include "corlab/fem/kernels/penalty_contact.hpp"
 #include "fem/solver/hex_model.hpp"
 
 namespace corlab::fem::hex_solver {
@@ -97,18 +98,20 @@ double top_height(const HexModel& m, const HexState& s) {
 
 bool contact_forces(const HexModel& m, HexState& s, double dt) {
   bool penetrating = false;
-  s.e_contact = 0.0;
-  s.normal_force = 0.0;
+  double stored = 0.0;
+  double normal_force = 0.0;
+  const bool facets = m.contact == solver::ContactKind::kFacets;
   // Slaves below this height look for the block's facets; higher ones cannot touch it [m].
   const double search_below = top_height(m, s) + 0.5 * m.h_contact;
   const auto& slaves = m.mesh.sphere_surface_nodes;
   for (std::size_t k = 0; k < slaves.size(); ++k) {
     const auto n = static_cast<std::size_t>(slaves[k]);
     SlaveContact c;
-    c.gap = s.node[n].z;
-    if (m.deformable_target && s.node[n].z < search_below) c = facet_contact(m, s, n);
+    c.gap = project_on_rigid_flat(s.node[n].z).gap;  // no facet below: the plane of the top
+    if (facets && s.node[n].z < search_below) c = facet_contact(m, s, n);
     const double stiffness = m.penalty[k];
-    const double fn = c.gap < 0.0 ? -stiffness * c.gap : 0.0;
+    const NormalPenalty normal = normal_penalty(c.gap, stiffness);
+    const double fn = normal.force;
     double v_rel[3] = {s.node[n].vx, s.node[n].vy, s.node[n].vz};
     for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
       const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
@@ -120,24 +123,26 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
     const FrictionUpdate f =
         coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
     s.traction[k] = {f.t[0], f.t[1], f.t[2]};
-    s.w_friction += f.dissipation;
+    s.energy.friction += f.dissipation;
     if (!(fn > 0.0)) continue;
     penetrating = true;
     s.penetration_max = std::max(s.penetration_max, -c.gap);
     const double force[3] = {fn * c.normal[0] + f.t[0], fn * c.normal[1] + f.t[1],
                              fn * c.normal[2] + f.t[2]};
-    s.force[n].x += force[0];
-    s.force[n].y += force[1];
-    s.force[n].z += force[2];
+    s.nodal_force[n].x += force[0];
+    s.nodal_force[n].y += force[1];
+    s.nodal_force[n].z += force[2];
     for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
       const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
-      s.force[i].x -= c.weight[j] * force[0];
-      s.force[i].y -= c.weight[j] * force[1];
-      s.force[i].z -= c.weight[j] * force[2];
+      s.nodal_force[i].x -= c.weight[j] * force[0];
+      s.nodal_force[i].y -= c.weight[j] * force[1];
+      s.nodal_force[i].z -= c.weight[j] * force[2];
     }
-    s.normal_force += fn * c.normal[2];
-    s.e_contact += 0.5 * stiffness * c.gap * c.gap + friction_stored_energy(f.t, stiffness);
+    normal_force += fn * c.normal[2];
+    stored += normal.energy + friction_stored_energy(f.t, stiffness);
   }
+  s.energy.contact = stored;
+  s.force = normal_force;
   return penetrating;
 }
 

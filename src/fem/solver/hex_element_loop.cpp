@@ -114,7 +114,7 @@ struct HexBlockState {
   for (int k = 0; k < 12; ++k) b.q[k][l] = q.q[k / 4][k % 4];
 }
 
-// Lane l of a block: the element update of hex_impact.cpp's step.
+// Lane l of a block: one element's update (stress, forces, stable step).
 [[gnu::always_inline]] inline void lane_update(
     const HexBody& p, const HexBlockState& b, HexLanes& ln, int l, double dt, HexLaneResults& out) {
   double x[8], y[8], z[8], vx[8], vy[8], vz[8], mx[8], my[8], mz[8];
@@ -181,13 +181,13 @@ struct HexBlockState {
                                            int nb,
                                            const HexLanes& ln,
                                            const HexLaneResults& out,
-                                           HexElementSums& sums) {
+                                           solver::ElementSums& sums) {
   for (int l = 0; l < nb; ++l) {
     for (int i = 0; i < 8; ++i) {
       const auto n = static_cast<std::size_t>(m.corner[static_cast<std::size_t>(i)][e0 + l]);
-      s.force[n].x -= ln.fx[i][l];
-      s.force[n].y -= ln.fy[i][l];
-      s.force[n].z -= ln.fz[i][l];
+      s.nodal_force[n].x -= ln.fx[i][l];
+      s.nodal_force[n].y -= ln.fy[i][l];
+      s.nodal_force[n].z -= ln.fz[i][l];
     }
     sums.internal_work += out.w_int[l];
     sums.plastic_work += out.w_p[l];
@@ -195,7 +195,7 @@ struct HexBlockState {
     sums.viscous_work += out.w_v[l];
     sums.dt_min = std::min(sums.dt_min, out.dt[l]);
     sums.eps_p_max = std::max(sums.eps_p_max, out.eps_p[l]);
-    sums.inverted = sums.inverted || !(out.volume[l] > 0.0);
+    if (!(out.volume[l] > 0.0) && sums.bad_element < 0) sums.bad_element = static_cast<int>(e0) + l;
   }
 }
 
@@ -210,8 +210,10 @@ struct HexBlockState {
                  sc.hourglass_3d};
 }
 
-[[gnu::always_inline]] inline HexElementSums pass_body(const HexModel& m, HexState& s, double dt) {
-  HexElementSums sums;
+[[gnu::always_inline]] inline solver::ElementSums pass_body(const HexModel& m,
+                                                            HexState& s,
+                                                            double dt) {
+  solver::ElementSums sums;
   HexLanes ln;
   HexLaneResults out;
   for (const HexElementRun& run : m.runs) {
@@ -230,7 +232,7 @@ struct HexBlockState {
 
 }  // namespace
 
-CORLAB_SIMD_VARIANTS(HexElementSums,
+CORLAB_SIMD_VARIANTS(solver::ElementSums,
                      hex_element_pass,
                      (const HexModel& m, HexState& s, double dt),
                      (m, s, dt),

@@ -1,6 +1,5 @@
-// The 3-D explicit impact solver (hex_impact.hpp): model, element update, time loop.
-#include "corlab/fem/solver/hex_impact.hpp"
-
+// The 3-D explicit impact solver (hex_model.hpp): its model and state; the time loop, its
+// bookkeeping and the result are the axisymmetric model's (time_loop.hpp).
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -18,9 +17,10 @@
 #include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
-#include "corlab/fem/solver/separation_rule.hpp"
+#include "corlab/fem/solver/run_quality.hpp"
 #include "fem/solver/hex_element_loop.hpp"
 #include "fem/solver/hex_model.hpp"
+#include "fem/solver/time_loop.hpp"
 
 namespace corlab::fem {
 namespace hex_solver {
@@ -65,7 +65,7 @@ void set_penalties(HexModel& m, double scale, double dt_critical) {
   for (const int s : m.mesh.sphere_surface_nodes) {
     const auto i = static_cast<std::size_t>(s);
     double master = std::numeric_limits<double>::infinity();
-    if (m.deformable_target) {
+    if (m.contact == solver::ContactKind::kFacets) {
       const auto& face = m.mesh.top_faces[face_under(m.mesh, m.mesh.x[i], m.mesh.y[i])];
       master = 0.0;
       for (const int n : face) master += 0.25 * m.mass[static_cast<std::size_t>(n)];
@@ -88,20 +88,47 @@ void index_elements(HexModel& m) {
   }
 }
 
+// The run's constants (RunConstants): the clock starts at the release, as the axisymmetric
+// model's; the stop rule reads the normal approach speed.
+void set_time_scales(const ImpactConfig& config, double dt_critical, HexModel& m) {
+  m.extensive = 2.0;  // the half model y >= 0
+  m.simd = simd_level();
+  m.safety_factor = config.solver.safety_factor;
+  m.dt_initial = config.solver.safety_factor * dt_critical;
+  m.max_steps = config.solver.max_steps;
+  m.t_wave = 4.0 * config.sphere.radius / m.bodies[0].wave_speed;
+  const HertzReference hertz =
+      hertz_reference(config.sphere.radius, contact_effective_modulus(config),
+                      config.sphere.material.density, m.velocity);
+  m.t_start = contact_start_time(config);
+  m.t_max = config.solver.t_max > 0.0 ? config.solver.t_max : m.t_start + 20.0 * hertz.contact_time;
+  m.t_expected = m.t_start + 1.5 * hertz.contact_time;
+  const double v0 = config.impact.velocity;
+  m.energy_initial = 0.5 * m.sphere_mass * v0 * v0;
+  m.energy_relative_initial = m.energy_initial;
+  double mz = 0.0;
+  for (std::size_t n = 0; n < m.sphere_nodes; ++n) mz += m.mass[n] * m.mesh.z[n];
+  m.z_com_start = mz / m.sphere_mass;
+  m.sphere_elements = 0;
+  for (const HexElementRun& run : m.runs) {
+    if (run.body == Body::kSphere) m.sphere_elements = std::max(m.sphere_elements, run.end);
+  }
+}
+
 HexModel make_model(const ImpactConfig& config) {
   HexModel m;
-  const double theta = config.impact.angle * units::kPi / 180.0;
-  m.v_normal = normal_velocity(config);
+  const double theta = config.impact.angle.radians;
+  m.velocity = normal_velocity(config);
   m.v_tangent = config.impact.velocity * std::sin(theta);
   m.friction = config.contact.friction;
   const HexMeshOptions options = hex_mesh_options_for(config);
   m.h_contact = options.h_contact;
   m.mesh = build_hex_impact_mesh(config);
-  m.deformable_target = options.block;
+  m.contact = options.block ? solver::ContactKind::kFacets : solver::ContactKind::kRigidPlane;
   for (const Body b : {Body::kSphere, Body::kSubstrate}) {
     const Material& mat = b == Body::kSphere ? config.sphere.material : config.substrate.material;
     BodyMaterial& body = m.bodies[static_cast<std::size_t>(b)];
-    body.material = J2Plasticity::from(mat);
+    body.material = solver::material_point(mat);
     body.density = mat.density;
     body.wave_speed = mat.dilatational_wave_speed();
   }
@@ -111,7 +138,7 @@ HexModel make_model(const ImpactConfig& config) {
   for (std::size_t n = 0; n < nn; ++n) {
     m.inv_mass[n] = 1.0 / m.mass[n];
     if (m.mesh.node_body[n] == Body::kSphere) {
-      m.total_mass += m.mass[n];
+      m.sphere_mass += m.mass[n];
       m.sphere_nodes = n + 1;
     }
   }
@@ -126,16 +153,7 @@ HexModel make_model(const ImpactConfig& config) {
   m.top_nodes = block_top_nodes(m.mesh);
   set_penalties(m, config.solver.penalty_scale, dt_critical);
   index_elements(m);
-  m.simd = simd_level();
-  m.dt_initial = config.solver.safety_factor * dt_critical;
-  m.t_wave = 4.0 * config.sphere.radius / m.bodies[0].wave_speed;
-  const HertzReference hertz =
-      hertz_reference(config.sphere.radius, contact_effective_modulus(config),
-                      config.sphere.material.density, m.v_normal);
-  // The loop's clock starts at the first contact; solver.t_max counts from the release.
-  m.t_start = contact_start_time(config);
-  m.t_max = config.solver.t_max > 0.0 ? config.solver.t_max - m.t_start : 20.0 * hertz.contact_time;
-  m.t_expected = 1.5 * hertz.contact_time;
+  set_time_scales(config, dt_critical, m);
   m.solver = &config.solver;
   return m;
 }
@@ -148,15 +166,18 @@ HexState initial_state(const HexModel& m) {
     const bool sphere = n < m.sphere_nodes;
     s.node[n] = {m.mesh.x[n], m.mesh.y[n],
                  m.mesh.z[n], sphere ? m.v_tangent : 0.0,
-                 0.0,         sphere ? -m.v_normal : 0.0};
+                 0.0,         sphere ? -m.velocity : 0.0};
   }
-  s.force.assign(nn, NodeForce{0.0, 0.0, 0.0});
+  s.nodal_force.assign(nn, NodeForce{0.0, 0.0, 0.0});
   const std::size_t ne = m.mesh.hexes.size();
   for (Vec& c : s.stress) c.assign(ne, 0.0);
   s.eps_p.assign(ne, 0.0);
   for (Vec& q : s.hourglass) q.assign(ne, 0.0);
   s.traction.assign(m.mesh.sphere_surface_nodes.size(), {0.0, 0.0, 0.0});
+  s.t = m.t_start;
   s.dt = m.dt_initial;
+  s.sphere_velocity = -m.velocity;
+  s.sphere_com_z = m.z_com_start;
   return s;
 }
 
@@ -180,10 +201,10 @@ Motion sphere_motion(const HexModel& m, const HexState& s) {
     cx += mass * s.node[n].x;
     cz += mass * s.node[n].z;
   }
-  mo.vx = px / m.total_mass;
-  mo.vz = pz / m.total_mass;
-  cx /= m.total_mass;
-  cz /= m.total_mass;
+  mo.vx = px / m.sphere_mass;
+  mo.vz = pz / m.sphere_mass;
+  cx /= m.sphere_mass;
+  cz /= m.sphere_mass;
   double momentum = 0.0;
   double inertia = 0.0;
   for (std::size_t n = 0; n < m.sphere_nodes; ++n) {
@@ -196,51 +217,25 @@ Motion sphere_motion(const HexModel& m, const HexState& s) {
   return mo;
 }
 
-// Advances positions by dt with the current velocities and assembles the forces there. Returns
-// the next stable step (0: an element inverted).
-double step_forces(const HexModel& m, HexState& s, double dt, bool& penetrating) {
-  for (std::size_t n = 0; n < s.node.size(); ++n) {
-    s.node[n].x += dt * s.node[n].vx;
-    s.node[n].y += dt * s.node[n].vy;
-    s.node[n].z += dt * s.node[n].vz;
-    s.force[n].x = 0.0;
-    s.force[n].y = 0.0;
-    s.force[n].z = 0.0;
+// The largest von Mises stress over the block's elements now [Pa] (0 on the rigid flat).
+double substrate_von_mises_max(const HexModel& m, const HexState& s) {
+  double vm = 0.0;
+  for (std::size_t e = m.sphere_elements; e < s.eps_p.size(); ++e) {
+    vm = std::max(vm, von_mises(SymTensor3{s.stress[0][e], s.stress[1][e], s.stress[2][e],
+                                           s.stress[3][e], s.stress[4][e], s.stress[5][e]}));
   }
-  const HexElementSums sums = hex_element_pass(m.simd, m, s, dt);
-  if (sums.inverted) return 0.0;
-  s.w_internal += sums.internal_work;
-  s.w_plastic += sums.plastic_work;
-  s.w_hourglass += sums.hourglass_work;
-  s.w_viscous += sums.viscous_work;
-  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
-  penetrating = contact_forces(m, s, dt);
-  return m.solver->safety_factor * sums.dt_min;
+  return vm;
 }
 
-// What the stop rule and the energy balance need of the velocities after an update.
-struct VelocitySums {
-  double kinetic = 0.0;  // both bodies [J], half model
-  double vz = 0.0;       // the sphere's c.o.m. normal velocity [m/s]
-};
-
-// v^{n+1/2} = v^{n-1/2} + dt_avg f / m, the symmetry plane's v_y held at zero; the kinetic
-// energy and the sphere's momentum in the same pass.
-VelocitySums update_velocities(const HexModel& m, HexState& s, double dt_avg) {
-  VelocitySums sums;
-  double pz = 0.0;
-  for (std::size_t n = 0; n < s.node.size(); ++n) {
-    s.node[n].vx = m.free_x[n] * (s.node[n].vx + dt_avg * s.force[n].x * m.inv_mass[n]);
-    s.node[n].vy = m.free_y[n] * (s.node[n].vy + dt_avg * s.force[n].y * m.inv_mass[n]);
-    s.node[n].vz = m.free_z[n] * (s.node[n].vz + dt_avg * s.force[n].z * m.inv_mass[n]);
-    const double mass = m.mass[n];
-    sums.kinetic +=
-        0.5 * mass *
-        (s.node[n].vx * s.node[n].vx + s.node[n].vy * s.node[n].vy + s.node[n].vz * s.node[n].vz);
-    if (n < m.sphere_nodes) pz += mass * s.node[n].vz;
+// The deepest point of the block's top below where it started [m] (0 on the rigid flat): the
+// crater's depth, wherever the contact left it.
+double crater_depth(const HexModel& m, const HexState& s) {
+  double depth = 0.0;
+  for (const int n : m.top_nodes) {
+    const auto i = static_cast<std::size_t>(n);
+    depth = std::max(depth, m.mesh.z[i] - s.node[i].z);
   }
-  sums.vz = pz / m.total_mass;
-  return sums;
+  return depth;
 }
 
 // The fields now, for VTU output; t_release: the time from the release [s].
@@ -273,43 +268,20 @@ HexFieldSnapshot snapshot(const HexModel& m, const HexState& s, double t_release
   return f;
 }
 
-// Calls on_hex_fields at each output.times that the clock has passed.
-class FieldTimes {
- public:
-  FieldTimes(const ImpactConfig& config, const SimulationControl& control)
-      : times_(config.output.field_times), on_fields_(control.on_hex_fields) {
-    std::sort(times_.begin(), times_.end());
-  }
-  void poll(const HexModel& m, const HexState& s) {
-    const double t = m.t_start + s.t;
-    while (next_ < times_.size() && t >= times_[next_]) {
-      if (on_fields_) on_fields_(t, snapshot(m, s, t));
-      ++next_;
-    }
-  }
-
- private:
-  std::vector<double> times_;
-  const std::function<void(double, const HexFieldSnapshot&)>& on_fields_;
-  std::size_t next_ = 0;
-};
-
-void finish(const HexModel& m, const HexState& s, HexImpactResult& r) {
+// The 3-D model's own fields of the result: the oblique rebound (e_t, spin, angle), the crater,
+// the block's stress, the quality guards.
+void finish_oblique(const HexModel& m, const HexState& s, ImpactResult& r) {
   const Motion mo = sphere_motion(m, s);
-  r.vx_final = mo.vx;
-  r.vz_final = mo.vz;
-  r.omega = mo.omega;
-  r.e_n = mo.vz / m.v_normal;
-  r.e_t = m.v_tangent > 0.0 ? mo.vx / m.v_tangent : std::numeric_limits<double>::quiet_NaN();
-  r.rebound_angle = std::atan2(mo.vx, mo.vz) * 180.0 / units::kPi;
-  r.energy_friction = 2.0 * s.w_friction;
-  r.energy_dissipated_plastic = 2.0 * s.w_plastic;
-  r.energy_hourglass = 2.0 * s.w_hourglass;
-  r.energy_viscous = 2.0 * s.w_viscous;
-  r.end_time = m.t_start + s.t;
-  r.plastic_strain_max = s.eps_p_max;
-  r.penetration_max = s.penetration_max;
-  r.steps = s.steps;
+  if (r.separated) {
+    // e_t of a normal impact is not applicable (NaN, results.csv's `nan`).
+    r.e_t = m.v_tangent > 0.0 ? mo.vx / m.v_tangent : std::numeric_limits<double>::quiet_NaN();
+    r.omega = mo.omega;
+    r.rebound_angle = std::atan2(mo.vx, mo.vz) / units::kDegree;
+  }
+  r.crater_depth = crater_depth(m, s);
+  r.substrate_von_mises_max = substrate_von_mises_max(m, s);
+  if (r.separated) r.e_impacts = {r.e};
+  if (r.status == RunStatus::kSeparated) r.suspect = suspect_reason(r);
 }
 
 }  // namespace
@@ -319,82 +291,31 @@ RunCost estimate_hex_run_cost(const ImpactConfig& config) {
   RunCost cost;
   cost.elements = m.mesh.num_elements();
   cost.time_step = m.dt_initial;
-  cost.expected_steps = m.t_expected / m.dt_initial;
+  cost.expected_steps = (m.t_expected - m.t_start) / m.dt_initial;
   return cost;
 }
 
-HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
-  const auto start = std::chrono::steady_clock::now();
+ImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
+  const auto wall_start = std::chrono::steady_clock::now();
   const HexModel m = make_model(config);
   HexState s = initial_state(m);
-  HexImpactResult r;
-  r.elements = m.mesh.num_elements();
-  r.nodes = m.mesh.num_nodes();
-  r.h_contact = m.h_contact;
-  r.simd = std::string(to_string(m.simd));
-  r.time_step = m.dt_initial;
-  const double v0 = config.impact.velocity;
-  const double energy0 = 0.5 * m.total_mass * v0 * v0;
-  r.energy_initial = 2.0 * energy0;
-  SeparationRule rule(m.t_wave, m.v_normal);
-  FieldTimes fields(config, control);
-  fields.poll(m, s);  // times before the first contact: the state at contact stands for them
-  double dt_prev = 0.0;
-  while (true) {
-    const double dt = s.dt;
-    bool penetrating = false;
-    const double dt_next = step_forces(m, s, dt, penetrating);
-    s.t += dt;
-    ++s.steps;
-    if (!(dt_next > 0.0)) {
-      r.status = RunStatus::kElementInverted;
-      break;
-    }
-    const VelocitySums mo = update_velocities(m, s, 0.5 * (dt + dt_next));
-    s.dt = dt_next;
-    r.F_max = std::max(r.F_max, 2.0 * s.normal_force);
-    const double balance = mo.kinetic + s.w_internal + s.w_hourglass + s.w_viscous + s.e_contact +
-                           s.w_friction - energy0;
-    if (!std::isfinite(balance)) {
-      r.status = RunStatus::kNonFinite;
-      break;
-    }
-    r.energy_balance_error = std::max(r.energy_balance_error, std::abs(balance) / energy0);
-    fields.poll(m, s);
-    rule.accumulate(mo.kinetic, dt);
-    const auto decision = rule.update(s.t, dt_prev, penetrating, mo.vz);
-    dt_prev = dt;
-    if (decision == SeparationRule::Decision::kRebound) {
-      r.status = RunStatus::kSeparated;
-      break;
-    }
-    if (decision == SeparationRule::Decision::kNoRebound || s.t > m.t_max) {
-      r.status = RunStatus::kNotSeparated;
-      break;
-    }
-    if (s.steps >= config.solver.max_steps) {
-      r.status = RunStatus::kStepBudgetExceeded;
-      break;
-    }
-    if ((s.steps & 255) == 0) {
-      if (control.cancel != nullptr && control.cancel->load()) {
-        r.status = RunStatus::kCancelled;
-        break;
-      }
-      if (control.progress) control.progress(std::min(0.99, s.t / m.t_expected));
-    }
-  }
-  r.t_contact = rule.contact_time();
-  finish(m, s, r);
-  if (control.progress) control.progress(1.0);
-  r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return r;
+  ImpactResult res;
+  res.elements = m.mesh.num_elements();
+  res.nodes = m.mesh.num_nodes();
+  res.h_contact = m.h_contact;
+  res.simd = std::string(to_string(m.simd));
+  res.time_step = m.dt_initial;
+  res.energy_initial = m.extensive * m.energy_initial;
+  solver::TimeLoop<HexModel, HexState> loop(config, control, m, s, res.history, [&](double t) {
+    if (control.on_hex_fields) control.on_hex_fields(t, snapshot(m, s, t));
+  });
+  const RunStatus status = loop.run();
+  solver::finish_run(m, s, loop, status, res);
+  finish_oblique(m, s, res);
+  solver::close_run(s, wall_start, control, res);
+  return res;
 }
 
 }  // namespace hex_solver
-
-HexImpactResult simulate_hex_impact(const ImpactConfig& config, const SimulationControl& control) {
-  return hex_solver::run_hex_impact(config, control);
-}
 
 }  // namespace corlab::fem

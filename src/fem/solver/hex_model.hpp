@@ -1,7 +1,19 @@
 #pragma once
 /// @file hex_model.hpp
-/// The 3-D solver's model (constant) and state (mutable), shared by its time loop
-/// (hex_impact.cpp) and its contact (hex_contact.cpp). Private to src/fem/solver.
+/// The 3-D explicit impact solver (issue 27; docs/theory/solver3d.md), run by simulate() for
+/// solver.model = 3d: a sphere hits a flat (the rigid plane z = 0 or a deformable block below it)
+/// at angle theta from the normal with Coulomb friction mu, modelled as the half (y >= 0) cut by
+/// the plane of the velocity and the normal. One-point hexahedra with Flanagan-Belytschko
+/// hourglass control (hex8.hpp, hourglass.hpp), the J2 material point, the Hughes-Winget rotation
+/// and the bulk viscosity of the axisymmetric solver (the same kernels), node-on-plane or
+/// node-on-facet penalty contact (penalty_contact.hpp's normal law, facet_contact.hpp) with the
+/// Coulomb return map (coulomb_friction.hpp), central differences at the elements' stable step.
+/// x is the tangential direction of the impact (the sphere moves towards +x), z the normal (up).
+///
+/// The 3-D solver's model (constant) and state (mutable), shared by its steps (hex_step.cpp),
+/// element pass (hex_element_loop.cpp) and contact (hex_contact.cpp); the time loop, its
+/// bookkeeping and the result are the axisymmetric model's (time_loop.hpp), through the bases
+/// RunConstants and RunState. Private to src/fem/solver.
 
 #include <array>
 #include <cstddef>
@@ -13,9 +25,13 @@
 #include "corlab/fem/kernels/j2_plasticity.hpp"
 #include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/mesh/hex_mesh.hpp"
-#include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/fem/solver/impact_result.hpp"
 #include "corlab/fem/solver/run_cost.hpp"
 #include "corlab/fem/solver/simd_level.hpp"
+#include "corlab/fem/solver/simulate.hpp"
+#include "fem/solver/element_loop.hpp"
+#include "fem/solver/impact_step.hpp"
+#include "fem/solver/run_state.hpp"
 
 namespace corlab::fem::hex_solver {
 
@@ -35,30 +51,26 @@ struct HexElementRun {
   Body body = Body::kSphere;
 };
 
-// The constant part of a run (half model).
-struct HexModel {
+// The constant part of a run (half model: RunConstants::extensive = 2; its velocity is the
+// normal approach speed).
+struct HexModel : solver::RunConstants {
   HexMesh mesh;
   std::array<std::vector<int>, 8> corner;  // mesh.hexes by corner (node i of element e): the
                                            // element pass gathers one corner of a block at once
   std::vector<HexElementRun> runs;         // the elements, by body
-  SimdLevel simd = SimdLevel::kBaseline;   // of the element pass
   std::array<BodyMaterial, 2> bodies;      // indexed by Body: sphere, substrate
   Vec mass, inv_mass;                      // lumped [kg], [1/kg]
   Vec free_x, free_y, free_z;              // 0 where the dof is held (symmetry plane, base) [-]
   Vec penalty;                             // per slave [N/m]
   std::vector<int> top_nodes;              // the block's top nodes, each once (none: rigid)
   std::size_t sphere_nodes = 0;            // nodes [0, n) are the sphere's
-  bool deformable_target = false;          // the flat's block (else the rigid flat z = 0)
-  double total_mass = 0.0;                 // half sphere [kg]
-  double v_normal = 0.0;                   // [m/s] (> 0, towards the flat)
-  double v_tangent = 0.0;                  // [m/s] (towards +x)
-  double friction = 0.0;                   // mu [-]
-  double dt_initial = 0.0;                 // [s]
-  double t_start = 0.0;                    // release to first contact (the clock's origin) [s]
-  double t_max = 0.0;                      // from the first contact [s]
-  double t_wave = 0.0;                     // 4 R / c_d [s]
-  double t_expected = 0.0;                 // expected end: 1.5 Hertz contact times [s]
-  double h_contact = 0.0;                  // [m]
+  std::size_t sphere_elements = 0;         // elements [0, n) are the sphere's
+  // What the slaves meet: the block's top facets or the rigid flat z = 0.
+  solver::ContactKind contact = solver::ContactKind::kFacets;
+  double sphere_mass = 0.0;  // half sphere [kg]
+  double v_tangent = 0.0;    // [m/s] (towards +x)
+  double friction = 0.0;     // mu [-]
+  double h_contact = 0.0;    // [m]
   const SolverConfig* solver = nullptr;
 };
 
@@ -73,26 +85,14 @@ struct NodeForce {
   double x, y, z;
 };
 
-// The mutable part.
-struct HexState {
+// The mutable part (half model); the running sums in its base.
+struct HexState : solver::RunState {
   std::vector<NodeKinematics> node;
-  std::vector<NodeForce> force;
+  std::vector<NodeForce> nodal_force;
   std::array<Vec, 6> stress;                    // per element: xx, yy, zz, xy, yz, zx [Pa]
   Vec eps_p;                                    // per element [-]
   std::array<Vec, 12> hourglass;                // per element: Q[d][a] at d * 4 + a [N]
   std::vector<std::array<double, 3>> traction;  // friction force of each slave [N]
-  double t = 0.0;
-  double dt = 0.0;
-  long long steps = 0;
-  double w_internal = 0.0;  // [J], half model
-  double w_plastic = 0.0;
-  double w_hourglass = 0.0;
-  double w_viscous = 0.0;
-  double w_friction = 0.0;
-  double e_contact = 0.0;     // penalty energy stored now
-  double normal_force = 0.0;  // on the half sphere, + up [N]
-  double penetration_max = 0.0;
-  double eps_p_max = 0.0;
 };
 
 // The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
@@ -102,16 +102,35 @@ std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, lon
 // The block's top nodes (of mesh.top_faces), each once, sorted.
 std::vector<int> block_top_nodes(const HexMesh& mesh);
 
-/// Penalty contact (the rigid flat z = 0 or the block's top) and Coulomb friction: adds the
-/// contact forces to s.force, books the stored energy and the frictional work. Returns whether any
-/// slave penetrates.
+/// Penalty contact (the rigid flat z = 0 or the block's top; penalty_contact.hpp's normal law)
+/// and Coulomb friction (coulomb_friction.hpp): adds the contact forces to s.nodal_force, sets the
+/// contact force s.force (+ up), the stored energy s.energy.contact and the deepest penetration,
+/// adds the frictional work to s.energy.friction. Returns whether any slave penetrates.
 bool contact_forces(const HexModel& m, HexState& s, double dt);
+
+// The steps of the time loop (time_loop.hpp), found there by argument-dependent lookup.
+
+/// Kinematic half: v^{n+1/2} (the symmetry plane's v_y and the base held) and x^{n+1}; the
+/// kinetic energy at t^n and the sphere's normal momentum and c.o.m. height.
+solver::NodeSums move_nodes(const HexModel& m, HexState& s);
+
+/// Force half: the element pass and the contact at x^{n+1}, a hysteresis sample; advances t by
+/// dt and sets the next dt from the stable step.
+solver::ForceReport compute_forces(const HexModel& m, HexState& s);
+
+/// The sphere's kinetic energy for the stop rule's window average [J] (half model).
+inline double rebound_kinetic_energy(const HexModel&, const HexState&, const solver::NodeSums& n) {
+  return n.ke_sphere;
+}
+
+/// The sphere's kinetic energy now, at the last half step's velocities [J] (half model).
+double sphere_kinetic_energy(const HexModel& m, const HexState& s);
 
 /// The 3-D run's a-priori cost (estimate_run_cost for the 3-D model): its mesh, first step and
 /// the steps to the expected end, 1.5 Hertz contact times.
 RunCost estimate_hex_run_cost(const ImpactConfig& config);
 
-/// The run (simulate_hex_impact's body).
-HexImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control);
+/// The run (simulate()'s for solver.model = 3d).
+ImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl& control);
 
 }  // namespace corlab::fem::hex_solver

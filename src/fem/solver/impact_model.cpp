@@ -38,7 +38,7 @@ constexpr int kFloorBisections = 30;
 
 BodyParams body_params(const Material& m, const SolverConfig& s) {
   BodyParams p;
-  p.material = J2Plasticity::from(m);
+  p.material = material_point(m);
   p.density = m.density;
   p.wave_speed = m.dilatational_wave_speed();
   p.hourglass = s.hourglass;

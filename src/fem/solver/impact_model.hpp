@@ -13,6 +13,7 @@
 #include "corlab/fem/kernels/axisym_quad4.hpp"
 #include "corlab/fem/mesh/mesh.hpp"
 #include "fem/solver/element_loop.hpp"
+#include "fem/solver/run_state.hpp"
 
 namespace corlab::fem::solver {
 
@@ -60,13 +61,8 @@ struct MassScaling {
   double sphere_mass_physical = 0.0;  ///< sphere mass without the scaling [kg]
 };
 
-/// What the contact slaves (the sphere's surface) meet.
-enum class ContactKind : std::uint8_t {
-  kSegments,    ///< the substrate surface's master segments (node-to-segment penalty)
-  kRigidPlane,  ///< the rigid flat z = 0 (substrate.shape = rigid; no master nodes)
-};
-
-struct ImpactModel {
+/// The axisymmetric model; the time loop's constants in its base (run_state.hpp).
+struct ImpactModel : RunConstants {
   int n_nodes = 0;
   int n_elements = 0;
   int n_sphere_elements = 0;  ///< elements [0, n) are the sphere's
@@ -90,23 +86,9 @@ struct ImpactModel {
   bool free_target = false;
   double target_mass = 0.0;         ///< the free target's mass [kg] (else 0)
   double z_com_target_start = 0.0;  ///< its c.o.m. height at the start [m] (else 0)
-  /// Kinetic energy of the relative motion at the start [J]: energy_initial on a flat, 1/2 m* v0^2
-  /// on a free sphere (the rest is the pair's c.o.m. motion, which the impact cannot change).
-  double energy_relative_initial = 0.0;
-  double velocity = 0.0;        ///< impact speed v0 [m/s]
-  double energy_initial = 0.0;  ///< 1/2 m v0^2 [J]
-  double dt_critical = 0.0;     ///< smallest element stable step at the start [s]
-  double dt_initial = 0.0;      ///< safety_factor x dt_critical [s]
-  double safety_factor = 0.0;   ///< [-]
-  double t_start = 0.0;         ///< gap / v0: the gap is crossed in free flight [s]
-  double t_max = 0.0;           ///< hard stop [s]
-  double t_wave = 0.0;          ///< 4 R / c_d of the sphere [s]
-  double t_expected = 0.0;      ///< expected end, for the progress estimate [s]
-  double z_com_start = 0.0;     ///< sphere c.o.m. height at the start [m]
-  long long max_steps = 0;      ///< step budget (solver.max_steps)
-  SubcyclingLevels levels;      ///< all 0 unless solver.subcycling_levels > 0
-  MassScaling scaling;          ///< factor 1 and no floor unless solver.mass_scaling_max > 1
-  SimdLevel simd = SimdLevel::kBaseline;  ///< the hot loops' instruction set (simd_level.hpp)
+  double dt_critical = 0.0;         ///< smallest element stable step at the start [s]
+  SubcyclingLevels levels;          ///< all 0 unless solver.subcycling_levels > 0
+  MassScaling scaling;              ///< factor 1 and no floor unless solver.mass_scaling_max > 1
 
   /// The parameters of the body element e (sorted index) belongs to.
   const BodyParams& body_of(int e) const { return e < n_sphere_elements ? sphere : substrate; }

@@ -59,11 +59,7 @@ bool apply_contact(const ImpactModel& m, ImpactState& s) {
 void record_element_sums(const ImpactModel& m, ImpactState& s, ForceReport& rep) {
   const ElementSums& sums = rep.elements;
   if (sums.bad_element >= 0) rep.inverted_element = m.elements.mesh_index[sums.bad_element];
-  s.energy.internal += sums.internal_work;
-  s.energy.plastic += sums.plastic_work;
-  s.energy.hourglass += sums.hourglass_work;
-  s.energy.viscous += sums.viscous_work;
-  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
+  add_element_work(sums, s);
 }
 
 /// Adds one pass's element sums to the step's.
@@ -135,13 +131,6 @@ void set_target_motion(const ImpactModel& m, ImpactState& s) {
   s.target_com_z = target_first_moment(m, s) / m.target_mass;
 }
 
-/// Time advanced by the step just taken.
-void advance_time(ImpactState& s) {
-  s.t += s.dt;
-  ++s.step;
-  s.dt_prev = s.dt;
-}
-
 }  // namespace
 
 NodalArrays nodal_arrays(const ImpactModel& m, ImpactState& s) {
@@ -154,6 +143,13 @@ double rebound_kinetic_energy(const ImpactModel& m, const ImpactState& s, const 
   if (!m.free_target) return ns.ke_sphere;
   const double p = ns.p_sphere + s.target_velocity * m.target_mass;
   return ns.ke - 0.5 * p * p / (m.sphere_mass + m.target_mass);
+}
+
+double sphere_kinetic_energy(const ImpactModel& m, const ImpactState& s) {
+  double ke = 0.0;
+  for (int i = 0; i < m.n_nodes; ++i)
+    ke += 0.5 * m.mass[i] * (s.vr[i] * s.vr[i] + s.vz[i] * s.vz[i]) * m.is_sphere[i];
+  return ke;
 }
 
 double relaunch_bodies(const ImpactModel& m, ImpactState& s) {

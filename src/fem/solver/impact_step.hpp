@@ -4,9 +4,12 @@
 /// history are sampled: move_nodes (kinematics: v^{n+1/2}, x^{n+1}, kinetic energy at t^n) and
 /// compute_forces (elements and contact at x^{n+1}, time advanced, next stable step).
 
+#include <algorithm>
+
 #include "fem/solver/element_loop.hpp"
 #include "fem/solver/impact_model.hpp"
 #include "fem/solver/impact_state.hpp"
+#include "fem/solver/run_state.hpp"
 
 namespace corlab::fem::solver {
 
@@ -17,6 +20,15 @@ struct ForceReport {
   int inverted_element = -1;  ///< mesh index of an inverted element, or -1
 };
 
+/// The element passes' work into the running energies, their plastic strain into the largest.
+inline void add_element_work(const ElementSums& sums, RunState& s) {
+  s.energy.internal += sums.internal_work;
+  s.energy.plastic += sums.plastic_work;
+  s.energy.hourglass += sums.hourglass_work;
+  s.energy.viscous += sums.viscous_work;
+  s.eps_p_max = std::max(s.eps_p_max, sums.eps_p_max);
+}
+
 /// The nodal arrays of the state and the model (element_loop.hpp).
 NodalArrays nodal_arrays(const ImpactModel& model, ImpactState& state);
 
@@ -26,6 +38,9 @@ NodalArrays nodal_arrays(const ImpactModel& model, ImpactState& state);
 double rebound_kinetic_energy(const ImpactModel& model,
                               const ImpactState& state,
                               const NodeSums& sums);
+
+/// The sphere's kinetic energy now [J] (at the last half step's velocities).
+double sphere_kinetic_energy(const ImpactModel& model, const ImpactState& state);
 
 /// Sends the bodies back at the approach speed for another impact (impact.repeats): each node's
 /// velocity shifted so that the sphere's c.o.m. moves at -v0 and a free target's is at rest again,

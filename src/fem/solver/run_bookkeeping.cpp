@@ -9,7 +9,7 @@
 
 namespace corlab::fem::solver {
 
-RunBookkeeping::RunBookkeeping(const ImpactModel& model,
+RunBookkeeping::RunBookkeeping(const RunConstants& model,
                                bool stop_at_max_compression,
                                ImpactHistory& history)
     : m_(model),
@@ -19,18 +19,18 @@ RunBookkeeping::RunBookkeeping(const ImpactModel& model,
       v_com_prev_(-model.velocity),
       energy_reference_(model.energy_initial) {}
 
-void RunBookkeeping::relaunch(double added_energy, const ImpactState& s) {
+void RunBookkeeping::relaunch(double added_energy, const RunState& s) {
   rule_ = SeparationRule(m_.t_wave, m_.velocity);
   energy_reference_ += added_energy;
   v_com_prev_ = relative_velocity(s);
 }
 
-std::optional<RunStatus> RunBookkeeping::sample(const ImpactState& s, double kinetic, bool row) {
+std::optional<RunStatus> RunBookkeeping::sample(const RunState& s, double kinetic, bool row) {
   // The sphere's velocity at the sampled time: the mean of the half steps around it.
   const double v_mean = 0.5 * (relative_velocity(s) + v_com_prev_);
   v_com_prev_ = relative_velocity(s);
   const EnergySums& w = s.energy;
-  const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact;
+  const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact + w.friction;
   const double balance = (total - energy_reference_) / m_.energy_initial;
   if (!std::isfinite(balance)) {
     balance_max_ = std::numeric_limits<double>::quiet_NaN();
@@ -38,23 +38,24 @@ std::optional<RunStatus> RunBookkeeping::sample(const ImpactState& s, double kin
   }
   balance_max_ = std::max(balance_max_, std::abs(balance));
   if (row) {
+    const double x = m_.extensive;
     append_row(history_, HistoryRow{.time = s.t,
-                                    .contact_force = s.force,
+                                    .contact_force = x * s.force,
                                     .indentation = s.hysteresis.indentation,
                                     .sphere_velocity = -v_mean,
-                                    .kinetic_energy = kinetic,
-                                    .strain_energy = w.internal - w.plastic,
-                                    .plastic_dissipation = w.plastic,
-                                    .hourglass_energy = w.hourglass,
-                                    .viscous_dissipation = w.viscous,
-                                    .contact_energy = w.contact,
+                                    .kinetic_energy = x * kinetic,
+                                    .strain_energy = x * (w.internal - w.plastic),
+                                    .plastic_dissipation = x * w.plastic,
+                                    .hourglass_energy = x * w.hourglass,
+                                    .viscous_dissipation = x * w.viscous,
+                                    .contact_energy = x * w.contact,
                                     .energy_balance_error = balance});
   }
   return std::nullopt;
 }
 
 std::optional<RunStatus> RunBookkeeping::stop(
-    const ImpactState& s, double ke_sphere, double window, double since, bool penetrating) {
+    const RunState& s, double ke_sphere, double window, double since, bool penetrating) {
   rule_.accumulate(ke_sphere, window);
   const auto decision = rule_.update(s.t, since, penetrating, relative_velocity(s));
   if (decision == SeparationRule::Decision::kRebound) return RunStatus::kSeparated;

@@ -1,17 +1,17 @@
 #pragma once
 /// @file run_bookkeeping.hpp
-/// What every time loop of an impact run keeps the same way, whatever its stepping scheme (plain
-/// or subcycled; docs/dev/architecture.md, "New geometries"): the energy balance and the history
-/// rows at the times it samples, and the stop rule over the windows between them. Private to the
-/// solver.
+/// What every time loop of an impact run keeps the same way, whatever its geometry (axisymmetric
+/// or 3-D) and stepping scheme (plain or subcycled; docs/dev/architecture.md, "One driver"): the
+/// energy balance and the history rows at the times it samples, and the stop rule over the
+/// windows between them. It reads the run only through RunConstants and RunState
+/// (run_state.hpp). Private to the solver.
 
 #include <optional>
 
 #include "corlab/fem/solver/impact_result.hpp"
 #include "corlab/fem/solver/run_status.hpp"
 #include "corlab/fem/solver/separation_rule.hpp"
-#include "fem/solver/impact_model.hpp"
-#include "fem/solver/impact_state.hpp"
+#include "fem/solver/run_state.hpp"
 
 namespace corlab::fem::solver {
 
@@ -19,30 +19,31 @@ class RunBookkeeping {
  public:
   /// History rows go to `history`; `stop_at_max_compression` ends a run at the sphere's turning
   /// point (SimulationControl).
-  RunBookkeeping(const ImpactModel& model, bool stop_at_max_compression, ImpactHistory& history);
+  RunBookkeeping(const RunConstants& model, bool stop_at_max_compression, ImpactHistory& history);
 
-  /// At a sampled time (the state's; every node in sync), `kinetic` the kinetic energy then [J]
-  /// (product form, less the subcycling's energy in transit): the energy balance, and a history
-  /// row when `row`. kNonFinite when the balance is not finite.
-  std::optional<RunStatus> sample(const ImpactState& state, double kinetic, bool row);
+  /// At a sampled time (the state's; every node in sync), `kinetic` the model's kinetic energy
+  /// then [J] (product form, less the subcycling's energy in transit): the energy balance, and a
+  /// history row when `row` (extensive columns for the whole pair: x model.extensive).
+  /// kNonFinite when the balance is not finite.
+  std::optional<RunStatus> sample(const RunState& state, double kinetic, bool row);
 
   /// The stop rule on the relative velocity at the end of a window of `window` [s] over which the
   /// rebound kinetic energy (rebound_kinetic_energy) was `ke_sphere` [J]; `penetrating`: a slave
   /// was in contact in it, for the last `since` [s]. kSeparated, kNotSeparated or
   /// kMaxCompression when the run ends.
   std::optional<RunStatus> stop(
-      const ImpactState& state, double ke_sphere, double window, double since, bool penetrating);
+      const RunState& state, double ke_sphere, double window, double since, bool penetrating);
 
   /// A new impact (impact.repeats): the bodies were just sent back at the approach speed, adding
   /// `added_energy` [J] of kinetic energy; a fresh stop rule, the balance against the energy now.
-  void relaunch(double added_energy, const ImpactState& state);
+  void relaunch(double added_energy, const RunState& state);
 
   const SeparationRule& rule() const { return rule_; }
   /// Largest |energy balance| / initial energy so far (NaN once non-finite) [-].
   double balance_max() const { return balance_max_; }
 
  private:
-  const ImpactModel& m_;
+  const RunConstants& m_;
   bool stop_at_max_compression_;
   ImpactHistory& history_;
   SeparationRule rule_;

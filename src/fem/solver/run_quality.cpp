@@ -16,6 +16,12 @@ std::string suspect_reason(const ImpactResult& r, const QualityLimits& limits) {
     return fmt::format("hourglass energy {:.3g} % of the initial energy (limit {:.3g} %)",
                        100.0 * hourglass, 100.0 * limits.hourglass_energy);
   }
+  if (r.e > limits.restitution) {
+    return fmt::format(
+        "e = {:.4g} > {:g}: the rebound is faster than the approach (energy created by the "
+        "contact or the time step)",
+        r.e, limits.restitution);
+  }
   if (r.delta_max > 0.0 && r.penetration_max > limits.penetration * r.delta_max) {
     return fmt::format("contact penetration {:.3g} % of the indentation (limit {:.3g} %)",
                        100.0 * r.penetration_max / r.delta_max, 100.0 * limits.penetration);

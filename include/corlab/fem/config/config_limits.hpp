@@ -13,7 +13,11 @@
 ///  - solver.safety_factor <= 1/sqrt(1 + solver.penalty_scale): the contact spring adds
 ///    penalty_scale (2/dt_crit)^2 to the highest squared frequency, so the step must shrink;
 ///  - solver.t_max (when given) > gap/velocity, the moment of contact;
-///  - the estimated number of time steps <= solver.max_steps.
+///  - the estimated number of time steps <= solver.max_steps;
+///  - impact.angle 0 with solver.model = axisymmetric, and 0 or >= 1 deg with 3d: below 1 deg
+///    the tangential speed (1.7 % of the impact speed at 1 deg) is swamped by the tangential
+///    velocity a normal impact itself leaves, and e_t = v_x'/v_x means nothing (1e-10 deg gave
+///    e_t = -678697).
 
 #include "corlab/fem/config/impact_config.hpp"
 
@@ -21,6 +25,8 @@ namespace corlab::fem {
 
 /// Smallest accepted substrate radius and depth, in predicted contact radii [-].
 inline constexpr double kMinSubstrateContactRadii = 2.0;
+/// Smallest oblique angle the 3-D model accepts [deg] (0 is a normal impact).
+inline constexpr double kMinObliqueAngle = 1.0;
 /// Accepted yield strain sigma_y / E [-] of a plastic body.
 inline constexpr double kMinYieldStrain = 1e-5;
 inline constexpr double kMaxYieldStrain = 0.1;

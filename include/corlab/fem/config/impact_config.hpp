@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "corlab/core/units.hpp"
 #include "corlab/materials/material.hpp"
 
 namespace corlab::fem {
@@ -52,6 +53,18 @@ struct SubstrateConfig {
                     .source = "Ma et al. 2023, Table 1"};  ///< J2 if yield_stress is set
 };
 
+/// A plane angle, kept in radians. Its config key is written in degrees: converted where the
+/// key is read and written (config_keys.cpp), nowhere else.
+struct PlaneAngle {
+  double radians = 0.0;  ///< [rad]
+
+  /// The angle of `deg` degrees.
+  static constexpr PlaneAngle degrees(double deg) { return {deg * units::kDegree}; }
+  /// In degrees, rounded to 15 significant digits, so that a value read in degrees is written
+  /// back as it was typed (30 deg, not 30.000000000000004) [deg].
+  double in_degrees() const;
+};
+
 struct ImpactConditions {
   double velocity = 5.0;  ///< impact speed v > 0 [m/s], sphere moving towards the substrate
   double gap = 0.1e-3;    ///< initial gap [m]; crossed exactly (free flight), no steps spent
@@ -59,9 +72,9 @@ struct ImpactConditions {
   /// the same approach speed, carrying their residual stress, plastic strain, shape and
   /// vibration (solver.md section 8).
   int repeats = 1;
-  /// Angle of the impact velocity from the contact normal [deg], in [0, 90): the normal speed
-  /// is velocity cos(angle). Above 0 the 3-D model runs (solver.model).
-  double angle = 0.0;
+  /// Angle of the impact velocity from the contact normal, in [0, 90) deg: the normal speed is
+  /// velocity cos(angle). Only the 3-D model (solver.model = 3d) takes one above 0.
+  PlaneAngle angle;
 };
 
 /// The contact law beyond the normal penalty.
@@ -92,14 +105,14 @@ struct MeshConfig {
 /// Which solver runs the impact.
 enum class SolverModel : std::uint8_t {
   kAxisymmetric,  ///< the axisymmetric solver (normal impacts; the default)
-  kThreeD,        ///< the 3-D half model (hex_impact.hpp): oblique impacts, friction
+  kThreeD,        ///< the 3-D half model (docs/theory/solver3d.md): oblique impacts, friction
 };
 
 /// "axisymmetric" or "3d".
 std::string_view to_string(SolverModel model);
 
 struct SolverConfig {
-  /// The model; an impact.angle above 0 runs the 3-D one whatever this says (uses_3d_model).
+  /// The model (uses_3d_model); impact.angle above 0 needs the 3-D one.
   SolverModel model = SolverModel::kAxisymmetric;
   double safety_factor = 0.8;  ///< dt = safety_factor x stable step estimate [-]
   double hourglass = 0.05;     ///< stiffness hourglass coefficient (Flanagan-Belytschko) [-]
@@ -148,9 +161,10 @@ inline bool rigid_target(const ImpactConfig& config) {
   return config.substrate.shape == SubstrateShape::kRigid;
 }
 
-/// Whether the 3-D model runs: solver.model = 3d or an oblique impact.
+/// Whether the 3-D model runs: solver.model alone chooses (an oblique impact with the
+/// axisymmetric model is refused by validate()).
 inline bool uses_3d_model(const ImpactConfig& config) {
-  return config.solver.model == SolverModel::kThreeD || config.impact.angle > 0.0;
+  return config.solver.model == SolverModel::kThreeD;
 }
 
 /// Whether the sphere hits a second, free sphere.

@@ -13,7 +13,6 @@
 
 #include "corlab/fem/kernels/axisym_tensor.hpp"
 #include "corlab/fem/kernels/sym_tensor3.hpp"
-#include "corlab/materials/material.hpp"
 
 namespace corlab::fem {
 
@@ -42,13 +41,17 @@ struct J2Plasticity {
         0.0;  ///< plastic dissipation per unit volume, trapezoid in sigma_y [J/m^3]
   };
 
-  /// From a material description (elastic when it has no yield stress).
-  static J2Plasticity from(const Material& m) {
+  /// From Young's modulus E [Pa], Poisson's ratio nu [-], the yield stress sigma_y0 [Pa]
+  /// (kNoYield: elastic) and the hardening modulus H [Pa].
+  static J2Plasticity from(double youngs_modulus,
+                           double poisson_ratio,
+                           double yield_stress = kNoYield,
+                           double hardening_modulus = 0.0) {
     J2Plasticity j;
-    j.shear_modulus = m.shear_modulus();
-    j.bulk_modulus = m.bulk_modulus();
-    if (m.yield_stress) j.yield_stress = *m.yield_stress;
-    j.hardening_modulus = m.hardening_modulus;
+    j.shear_modulus = youngs_modulus / (2.0 * (1.0 + poisson_ratio));
+    j.bulk_modulus = youngs_modulus / (3.0 * (1.0 - 2.0 * poisson_ratio));
+    j.yield_stress = yield_stress;
+    j.hardening_modulus = hardening_modulus;
     return j;
   }
 

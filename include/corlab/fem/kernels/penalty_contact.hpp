@@ -6,7 +6,9 @@
 ///   g = (x_s - x_a) . n,  n = (-t_z, t_r),  t = (x_b - x_a)/|x_b - x_a|,
 /// n pointing out of the substrate (into the sphere). For g < 0 the penalty force f = -k g n acts
 /// on the slave and -f (1 - xi), -f xi on a, b (xi = projection parameter). This force field is
-/// the exact gradient of the penalty energy 1/2 k g^2, so the contact is conservative.
+/// the exact gradient of the penalty energy 1/2 k g^2, so the contact is conservative. The normal
+/// law itself (normal_penalty) is the one both models' contacts use: node on segment here, node
+/// on facet or on the rigid plane in 3-D (hex_contact.cpp).
 
 #include <cmath>
 
@@ -19,6 +21,18 @@ struct SegmentProjection {
   double nr = 0.0;   ///< outward normal n (r component) [-]
   double nz = 0.0;   ///< outward normal n (z component) [-]
 };
+
+/// The normal penalty law at one slave.
+struct NormalPenalty {
+  double force = 0.0;   ///< f_n = -k g along the outward normal, on the slave [N] (0: no contact)
+  double energy = 0.0;  ///< stored energy 1/2 k g^2 [J]
+};
+
+/// The law at the gap g [m] (< 0: penetration) and penalty stiffness k [N/m]: none for g >= 0.
+inline NormalPenalty normal_penalty(double gap, double stiffness) {
+  if (gap >= 0.0) return {};
+  return {-stiffness * gap, 0.5 * stiffness * gap * gap};
+}
 
 /// Projects the slave (rs, zs) on the segment (ra, za) -> (rb, zb) [m].
 inline SegmentProjection project_on_segment(
@@ -49,16 +63,16 @@ inline double penalty_force(const SegmentProjection& p,
                             double& fr_b,
                             double& fz_b) {
   if (p.gap >= 0.0) return 0.0;
-  const double fn = -stiffness * p.gap;
-  const double fr = fn * p.nr;
-  const double fz = fn * p.nz;
+  const NormalPenalty normal = normal_penalty(p.gap, stiffness);
+  const double fr = normal.force * p.nr;
+  const double fz = normal.force * p.nz;
   fr_slave += fr;
   fz_slave += fz;
   fr_a -= (1.0 - p.xi) * fr;
   fz_a -= (1.0 - p.xi) * fz;
   fr_b -= p.xi * fr;
   fz_b -= p.xi * fz;
-  return 0.5 * stiffness * p.gap * p.gap;
+  return normal.energy;
 }
 
 /// Penalty stiffness at penalty_scale [-] of the stability limit of a two-mass spring:

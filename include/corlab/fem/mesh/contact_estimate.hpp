@@ -20,11 +20,6 @@ struct HertzReference {
   double contact_time = 0.0;       ///< t_c = hertz_contact_time_factor() delta_max / v [s]
 };
 
-/// Dimensionless Hertz contact duration t_c v / delta_max =
-/// 2 int_0^1 (1 - x^(5/2))^(-1/2) dx = (4/5) sqrt(pi) Gamma(2/5) / Gamma(9/10) = 2.943275...
-/// (Johnson 1985, eq. 11.24).
-double hertz_contact_time_factor();
-
 /// Hertz force F = 4/3 E* sqrt(R) delta^(3/2) [N] at the overlap delta [m] (0 for delta <= 0) of a
 /// sphere of radius R [m] on a half-space, E* [Pa] (Johnson 1985, eq. 4.23).
 double hertz_force(double overlap, double sphere_radius, double effective_modulus);

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
+#include "corlab/core/units.hpp"
 #include "corlab/fem/config/impact_config.hpp"
 
 namespace corlab::fem {
@@ -26,6 +28,18 @@ TEST(ConfigKeys, TableDrivesHelpAndCoversEveryKey) {
   EXPECT_NE(help.find("solver.max_steps"), std::string::npos);
   // The defaults lie inside every range.
   EXPECT_NO_THROW(validate_key_ranges(ImpactConfig{}));
+}
+
+// impact.angle is kept in radians and written in degrees: each value reads back as it was typed
+// (30, not the 30.000000000000004 that 30 x pi/180 x 180/pi gives), in the text and the echo.
+TEST(ConfigKeys, AngleIsStoredInRadiansAndWrittenInDegrees) {
+  for (const char* text : {"30", "7.5", "60", "62.5", "9.5", "1e-10", "89.999"}) {
+    ImpactConfig c;
+    set_config_key(c, "impact.angle", text);
+    EXPECT_EQ(c.impact.angle.radians, std::stod(text) * units::kDegree) << text;
+    EXPECT_EQ(config_value_text(c, "impact.angle"), text) << text;
+    EXPECT_EQ(config_value_json(c, "impact.angle").get<double>(), std::stod(text)) << text;
+  }
 }
 
 }  // namespace

@@ -12,16 +12,7 @@ constexpr double kE = 210e9;
 constexpr double kNu = 0.3;
 constexpr double kSy = 500e6;
 
-J2Plasticity steel(double hardening) {
-  Material m{.name = "t",
-             .youngs_modulus = kE,
-             .poisson_ratio = kNu,
-             .density = 7850.0,
-             .yield_stress = kSy,
-             .hardening_modulus = hardening,
-             .source = ""};
-  return J2Plasticity::from(m);
-}
+J2Plasticity steel(double hardening) { return J2Plasticity::from(kE, kNu, kSy, hardening); }
 
 // Drives a material point in uniaxial stress along z: for each axial strain increment the
 // lateral increment (rr = tt) is found so that sigma_rr = sigma_tt = 0 (secant iteration).
@@ -117,14 +108,7 @@ TEST(J2Plasticity, PurePressureNeverYields) {
 }
 
 TEST(J2Plasticity, ElasticMaterialNeverYields) {
-  Material m{.name = "e",
-             .youngs_modulus = kE,
-             .poisson_ratio = kNu,
-             .density = 7850.0,
-             .yield_stress = std::nullopt,
-             .hardening_modulus = 0.0,
-             .source = ""};
-  const J2Plasticity mat = J2Plasticity::from(m);
+  const J2Plasticity mat = J2Plasticity::from(kE, kNu);
   AxisymTensor s;
   J2Plasticity::State st;
   const auto inc = mat.update(s, st, AxisymTensor{0.05, -0.05, 0.0, 0.03});

@@ -17,7 +17,7 @@
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/mesh/gmsh_reader.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
-#include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 #include "support/hex_cases.hpp"
 #include "support/scratch_files.hpp"
 
@@ -105,10 +105,10 @@ TEST(GmshHexReader, ReadsCorlabsOwnSphereBack) {
 TEST(GmshHexReader, GivesTheBuiltInRunAndBlock) {
   if (!gmsh_available()) GTEST_SKIP() << "built without gmsh";
   ImpactConfig c = sliding_on_rigid_flat();
-  const HexImpactResult built = simulate_hex_impact(c);
+  const ImpactResult built = simulate(c);
   c.mesh.file = write_msh("run.msh", build_hex_impact_mesh(c));
   validate(c);
-  const HexImpactResult read = simulate_hex_impact(c);
+  const ImpactResult read = simulate(c);
   ASSERT_EQ(read.status, RunStatus::kSeparated);
   EXPECT_EQ(read.e_n, built.e_n);
   EXPECT_EQ(read.e_t, built.e_t);

@@ -25,7 +25,7 @@ BodyParams steel(double b1, double b2) {
   mat.poisson_ratio = 0.3;
   mat.density = 7850.0;
   BodyParams p;
-  p.material = J2Plasticity::from(mat);
+  p.material = material_point(mat);
   p.density = mat.density;
   p.wave_speed = mat.dilatational_wave_speed();
   p.hourglass = 0.05;

@@ -32,7 +32,7 @@ HexModel block_and_slave() {
   m.mesh.node_body.push_back(Body::kSphere);
   m.mesh.sphere_surface_nodes = {m.mesh.num_nodes() - 1};
   m.top_nodes = block_top_nodes(m.mesh);
-  m.deformable_target = true;
+  m.contact = solver::ContactKind::kFacets;
   m.h_contact = kH;
   m.penalty = {1e9};
   return m;
@@ -49,7 +49,7 @@ HexState shifted(const HexModel& m, double shift, double depth, double lift = 0.
     s.node[n].z += lift;
   }
   s.node.back().z = lift - depth;
-  s.force.assign(nn, NodeForce{0.0, 0.0, 0.0});
+  s.nodal_force.assign(nn, NodeForce{0.0, 0.0, 0.0});
   s.traction.assign(1, {0.0, 0.0, 0.0});
   return s;
 }
@@ -60,14 +60,14 @@ TEST(HexContact, FindsTheFacetAfterTheTopMovedSideways) {
     SCOPED_TRACE(shift);
     HexState s = shifted(m, shift, 1e-6);
     ASSERT_TRUE(contact_forces(m, s, 1e-8));
-    const NodeForce& slave = s.force.back();
+    const NodeForce& slave = s.nodal_force.back();
     EXPECT_NEAR(slave.z, 1e9 * 1e-6, 1e-6);  // a flat facet: the full penalty, straight up
     EXPECT_NEAR(slave.x, 0.0, 1e-9);
     // The reaction lands on the four corners around the slave, wherever the grid now lies.
     double reaction = 0.0;
-    for (std::size_t n = 0; n + 1 < s.force.size(); ++n) {
-      if (s.force[n].z == 0.0) continue;
-      reaction += s.force[n].z;
+    for (std::size_t n = 0; n + 1 < s.nodal_force.size(); ++n) {
+      if (s.nodal_force[n].z == 0.0) continue;
+      reaction += s.nodal_force[n].z;
       EXPECT_LE(std::abs(s.node[n].x - s.node.back().x), kH);
       EXPECT_LE(std::abs(s.node[n].y - s.node.back().y), kH);
     }
@@ -81,7 +81,7 @@ TEST(HexContact, TouchesAFlatThatRoseAboveItsStart) {
   const HexModel m = block_and_slave();
   HexState s = shifted(m, 0.0, 1e-6, 0.8 * kH);
   ASSERT_TRUE(contact_forces(m, s, 1e-8));
-  EXPECT_NEAR(s.force.back().z, 1e9 * 1e-6, 1e-6);
+  EXPECT_NEAR(s.nodal_force.back().z, 1e9 * 1e-6, 1e-6);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
-#include "corlab/fem/solver/hex_impact.hpp"
+#include "corlab/fem/solver/simulate.hpp"
 #include "support/hex_cases.hpp"
 
 namespace corlab::fem {
@@ -33,7 +33,7 @@ TEST(RunCost, MatchesTheMeshAndGrowsAtLowSpeed) {
 TEST(RunCost, TheThreeDModelCountsItsHexahedra) {
   const ImpactConfig c = test::sliding_on_rigid_flat();
   const RunCost cost = estimate_run_cost(c);
-  const HexImpactResult run = simulate_hex_impact(c);
+  const ImpactResult run = simulate(c);
   EXPECT_EQ(cost.elements, run.elements);
   EXPECT_NEAR(cost.expected_steps / static_cast<double>(run.steps), 1.0, 0.5);
 }

@@ -46,5 +46,15 @@ TEST(RunQuality, Penetration) {
   EXPECT_EQ(suspect_reason(r, loose), "");
 }
 
+// An oblique run at 89 deg with mu = 10 rebounded with e_n = 1.5034 (issue 42): energy created.
+TEST(RunQuality, RestitutionAboveOne) {
+  ImpactResult r = clean_run();
+  r.e = 1.5034;
+  EXPECT_EQ(suspect_reason(r).rfind("e = 1.503 > 1.01: the rebound is faster", 0), 0u)
+      << suspect_reason(r);
+  r.e = 1.0062;  // the 3-D contact's measured excess on an elastic impact (issue 39)
+  EXPECT_EQ(suspect_reason(r), "");
+}
+
 }  // namespace
 }  // namespace corlab::fem
