@@ -33,6 +33,7 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   ASSERT_EQ(c.sphere.material.youngs_modulus, c.substrate.material.youngs_modulus);
   const double kappa = 2.0 * (1.0 - nu) / (2.0 - nu);
   const double theta = std::atan(kPsi1 * kMu / kappa);
+  c.solver.model = SolverModel::kThreeD;
   c.impact.angle = PlaneAngle{theta};
   c.impact.velocity = kNormalVelocity / std::cos(theta);
   c.contact.friction = kMu;

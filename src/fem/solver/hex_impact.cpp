@@ -22,8 +22,7 @@
 #include "fem/solver/hex_model.hpp"
 #include "fem/solver/time_loop.hpp"
 
-namespace corlab::fem {
-namespace hex_solver {
+namespace corlab::fem::hex_solver {
 namespace {
 
 struct Corners {
@@ -316,6 +315,4 @@ ImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl&
   return res;
 }
 
-}  // namespace hex_solver
-
-}  // namespace corlab::fem
+}  // namespace corlab::fem::hex_solver
