@@ -21,19 +21,7 @@ namespace corlab::cli {
 namespace {
 
 fem::SubstrateShape resolve_shape(const FeOptions& o, double radius_ratio) {
-  if (o.shape.empty()) {
-    return radius_ratio > 0.0 ? fem::SubstrateShape::kSphere : fem::SubstrateShape::kFlat;
-  }
-  if (o.shape == "sphere") {
-    if (!(radius_ratio > 0.0)) {
-      throw_invalid("--radius-ratio", radius_ratio, "> 0 with --shape sphere (R1/R2) [-]");
-    }
-    return fem::SubstrateShape::kSphere;
-  }
-  if (radius_ratio != 0.0) {
-    throw_invalid("--radius-ratio", radius_ratio, fmt::format("0 with --shape {} [-]", o.shape));
-  }
-  return o.shape == "rigid" ? fem::SubstrateShape::kRigid : fem::SubstrateShape::kFlat;
+  return study::resolve_fe_shape(o.shape, radius_ratio, "--shape", "--radius-ratio");
 }
 
 // A number's cell: shortest round-trip text, empty where there is none (NaN).

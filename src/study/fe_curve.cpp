@@ -62,6 +62,27 @@ bool is_material_field(const std::string& field) {
 
 }  // namespace
 
+fem::SubstrateShape resolve_fe_shape(std::string_view shape,
+                                     double radius_ratio,
+                                     std::string_view shape_field,
+                                     std::string_view ratio_field) {
+  if (shape.empty()) {
+    return radius_ratio > 0.0 ? fem::SubstrateShape::kSphere : fem::SubstrateShape::kFlat;
+  }
+  if (shape == "sphere") {
+    if (!(radius_ratio > 0.0)) {
+      throw_invalid(ratio_field, radius_ratio, "> 0 for a second sphere (R1/R2) [-]");
+    }
+    return fem::SubstrateShape::kSphere;
+  }
+  if (shape != "flat" && shape != "rigid")
+    throw_invalid(shape_field, shape, "flat, sphere or rigid");
+  if (radius_ratio != 0.0) {
+    throw_invalid(ratio_field, radius_ratio, fmt::format("0 for a {} target [-]", shape));
+  }
+  return shape == "rigid" ? fem::SubstrateShape::kRigid : fem::SubstrateShape::kFlat;
+}
+
 fem::ImpactConfig fe_curve_config(const FePair& pair, double velocity) {
   fem::ImpactConfig c;
   c.sphere.material = pair.sphere;

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "corlab/fem/config/impact_config.hpp"
@@ -30,6 +31,14 @@ struct FePair {
   fem::SubstrateShape shape = fem::SubstrateShape::kFlat;
   double radius_ratio = 0.0;  ///< R1/R2 for shape kSphere, in (0, 1e3]; 0 otherwise [-]
 };
+
+/// The target named `shape`: "flat", "sphere" or "rigid"; empty: a sphere for a radius ratio
+/// R1/R2 > 0, else a flat. A sphere needs R1/R2 > 0, the others 0: InputError naming
+/// `ratio_field` (or `shape_field` for an unknown name) otherwise.
+fem::SubstrateShape resolve_fe_shape(std::string_view shape,
+                                     double radius_ratio,
+                                     std::string_view shape_field = "shape",
+                                     std::string_view ratio_field = "radius_ratio");
 
 /// The run of one speed v [m/s]: ImpactConfig{} with the pair's materials and shape. Throws
 /// InputError for an invalid shape and radius ratio (validate() is the caller's).
