@@ -123,7 +123,6 @@ std::vector<FePoint> fe_curve(const FePair& pair,
     p.e = p.e_error = kNaN;
     try {
       fem::validate(configs[i]);
-      cost[i] = fem::estimate_run_cost(configs[i]).element_steps();
     } catch (const InputError& err) {
       if (is_material_field(err.field())) throw;  // the pair itself: every speed would say it
       p.status = kInvalid;
@@ -137,6 +136,7 @@ std::vector<FePoint> fe_curve(const FePair& pair,
         continue;
       }
     }
+    cost[i] = fem::estimate_run_cost(configs[i]).element_steps();
     pending.push_back(i);
   }
   // The costliest first, so that the curve does not end waiting for one long run.
