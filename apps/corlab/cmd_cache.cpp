@@ -20,7 +20,7 @@ struct CacheOptions {
 };
 
 std::filesystem::path cache_root() {
-  const auto root = study::default_cache_directory();
+  auto root = study::default_cache_directory();
   if (root.empty()) {
     throw InputError("no cache directory: none of CORLAB_CACHE_DIR, XDG_CACHE_HOME, HOME is set");
   }
@@ -43,8 +43,8 @@ int list(const std::filesystem::path& root) {
   fmt::print("{}\n", study::csv_line({"file", "bytes", "build", "this_build", "velocity", "sphere",
                                       "substrate", "shape", "status", "e", "e_error"}));
   for (const study::CacheEntry& entry : study::list_cache(root)) {
-    const auto& c = entry.key;
-    const auto& v = entry.value;
+    const auto c = nlohmann::json::parse(entry.key, nullptr, false);
+    const auto v = nlohmann::json::parse(entry.value, nullptr, false);
     fmt::print("{}\n", study::csv_line({entry.file.filename().string(), std::to_string(entry.bytes),
                                         entry.readable ? entry.build : "unreadable",
                                         entry.readable && entry.build == build ? "true" : "false",

@@ -151,8 +151,8 @@ std::vector<CacheEntry> list_cache(const fs::path& root) {
     if (auto parsed = read_entry(item.path())) {
       entry.readable = true;
       entry.build = (*parsed)["build"].get<std::string>();
-      entry.key = std::move((*parsed)["key"]);
-      entry.value = std::move((*parsed)["value"]);
+      entry.key = (*parsed)["key"].dump();
+      entry.value = (*parsed)["value"].dump();
     }
     out.push_back(std::move(entry));
   }

@@ -36,8 +36,8 @@ struct CacheEntry {
   std::uintmax_t bytes = 0;
   bool readable = false;  ///< parsed as an entry (key, build and value present)
   std::string build;      ///< the build that wrote it
-  nlohmann::json key;     ///< its key (null when not readable)
-  nlohmann::json value;   ///< its value (null when not readable)
+  std::string key;        ///< its key as compact JSON text ("" when not readable)
+  std::string value;      ///< its value as compact JSON text ("" when not readable)
 };
 
 class ResultCache {
