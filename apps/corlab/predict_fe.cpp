@@ -48,6 +48,9 @@ void add_fe_options(CLI::App& sub, FeOptions& options) {
   sub.add_flag("--no-cache", options.no_cache,
                "fe|auto: compute every speed and store nothing (cache: `corlab cache`)");
   sub.add_flag("--quiet", options.quiet, "fe|auto: no progress line on stderr");
+  sub.add_option("--tolerance", options.tolerance,
+                 "fe: run the FE at fewer speeds, refined until the interpolation between them "
+                 "is within this error of e, and interpolate the others [-]");
 }
 
 void require_no_fe_options(const FeOptions& options, double radius_ratio) {
@@ -76,9 +79,14 @@ int run_predict_fe(const FePredictRequest& r) {
                                 .cache = cache ? &*cache : nullptr,
                                 .progress = r.options.quiet ? nullptr : stderr,
                                 .cancel = interrupt.flag()};
-  const std::vector<study::FePoint> points = r.model == "auto"
-                                                 ? dataset::auto_curve(pair, r.velocities, options)
-                                                 : study::fe_curve(pair, r.velocities, options);
+  if (r.options.tolerance != 0.0 && r.model != "fe") {
+    throw_invalid("--tolerance", r.options.tolerance, "0 (unset) with --model auto");
+  }
+  const std::vector<study::FePoint> points =
+      r.model == "auto" ? dataset::auto_curve(pair, r.velocities, options)
+      : r.options.tolerance != 0.0
+          ? study::fe_curve_refined(pair, r.velocities, r.options.tolerance, options)
+          : study::fe_curve(pair, r.velocities, options);
   if (interrupt.requested()) {
     fmt::print(stderr, "corlab predict: interrupted ({}); finished speeds are cached\n",
                interrupt.signal_name());

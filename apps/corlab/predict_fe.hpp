@@ -15,8 +15,9 @@ namespace corlab::cli {
 struct FeOptions {
   std::string shape;  ///< flat | sphere | rigid; empty: sphere for a radius ratio > 0, else flat
   int jobs = 0;       ///< speeds run at once (0: one per core)
-  bool no_cache = false;  ///< compute every speed, store nothing
-  bool quiet = false;     ///< no progress line
+  bool no_cache = false;   ///< compute every speed, store nothing
+  bool quiet = false;      ///< no progress line
+  double tolerance = 0.0;  ///< > 0: fe at fewer speeds, interpolated to this error [-]
 };
 
 /// Whether `model` is answered here: "fe" or "auto".

@@ -218,12 +218,16 @@ std::vector<study::FePoint> fe_points(const std::string& model,
                                       double radius_ratio,
                                       const std::string& shape,
                                       int jobs,
-                                      bool cache) {
+                                      bool cache,
+                                      double tolerance = 0.0) {
   if (!is_fe_model(model)) throw_invalid("model", model, "fe or auto");
   const study::FePair pair{.sphere = to_material(sphere, "sphere"),
                            .substrate = to_material(substrate, "substrate"),
                            .shape = study::resolve_fe_shape(shape, radius_ratio),
                            .radius_ratio = radius_ratio};
+  if (tolerance != 0.0 && model != "fe") {
+    throw_invalid("tolerance", tolerance, "0 (unset) with model 'auto'");
+  }
   if (velocities.empty()) throw_invalid("v", "[]", "at least one speed [m/s]");
   for (const double v : velocities) restitution::require_velocity(v);
   std::vector<std::string> warnings;
@@ -237,8 +241,9 @@ std::vector<study::FePoint> fe_points(const std::string& model,
   std::vector<study::FePoint> points;
   {
     py::gil_scoped_release release;
-    points = model == "auto" ? dataset::auto_curve(pair, speeds, options)
-                             : study::fe_curve(pair, speeds, options);
+    points = model == "auto"    ? dataset::auto_curve(pair, speeds, options)
+             : tolerance != 0.0 ? study::fe_curve_refined(pair, speeds, tolerance, options)
+                                : study::fe_curve(pair, speeds, options);
   }
   for (const auto& w : warnings) {
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
@@ -285,19 +290,22 @@ void bind_predict_curve(py::module_& m) {
   m.def(
       "predict_curve",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
-         const Speeds& v, double radius_ratio, const std::string& shape, int jobs, bool cache) {
-        return curve_dict(
-            fe_points(model, sphere, substrate, speeds_of(v), radius_ratio, shape, jobs, cache));
+         const Speeds& v, double radius_ratio, const std::string& shape, int jobs, bool cache,
+         double tolerance) {
+        return curve_dict(fe_points(model, sphere, substrate, speeds_of(v), radius_ratio, shape,
+                                    jobs, cache, tolerance));
       },
       py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
       py::arg("radius_ratio") = 0.0, py::arg("shape") = "", py::arg("jobs") = 0,
-      py::arg("cache") = true,
+      py::arg("cache") = true, py::arg("tolerance") = 0.0,
       "e(v) with its uncertainty, as `corlab predict --model fe|auto`: model 'fe' (the FE "
       "solver with its discretisation error bar at each speed, from the result cache when it was "
       "computed before) or 'auto' (corlab2026p with its 95 % prediction interval where it is "
       "accurate, else the FE). v [m/s]: a float or an array; shape 'flat', 'sphere' (R1/R2 = "
       "radius_ratio) or 'rigid' ('' : sphere for radius_ratio > 0, else flat); jobs: speeds run "
-      "at once (0: one per core); cache=False computes all and stores nothing. Returns a dict: "
+      "at once (0: one per core); cache=False computes all and stores nothing; tolerance > 0 "
+      "(model 'fe'): the FE at fewer speeds, refined until the interpolation between them is "
+      "within it, the others interpolated (answered_by 'fe-interpolated'). Returns a dict: "
       "velocity, e, e_error (arrays; nan where there is none), cached (bool array), status, "
       "answered_by, detail (lists: the run's status, 'model' for corlab2026p, and why a speed "
       "has no e or no error bar). Bad input raises ValueError.");

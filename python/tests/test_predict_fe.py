@@ -111,7 +111,9 @@ def test_bad_input_is_one_line_and_exit_2(corlab_bin, tmp_path):
                          "substrate.nu"),
                         (["--model", "fe", "--substrate", AL, "--shape", "sphere"],
                          "--radius-ratio"),
-                        (["--model", "ma2023", "--substrate", AL, "--shape", "rigid"], "--shape")):
+                        (["--model", "ma2023", "--substrate", AL, "--shape", "rigid"], "--shape"),
+                        (["--model", "auto", "--substrate", AL, "--tolerance", "0.01"],
+                         "--tolerance")):
         out = subprocess.run([corlab_bin, "predict", "--sphere", SPHERE, "--velocity", "1",
                               *args], capture_output=True, text=True, timeout=60,
                              env={**os.environ, "CORLAB_CACHE_DIR": str(tmp_path)})

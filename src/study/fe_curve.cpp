@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <numeric>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "corlab/fem/solver/run_status.hpp"
 #include "corlab/fem/solver/simd_level.hpp"
 #include "corlab/fem/solver/simulate.hpp"
+#include "corlab/study/fe_interpolation.hpp"
 #include "corlab/study/progress.hpp"
 
 namespace corlab::study {
@@ -186,6 +188,56 @@ std::vector<FePoint> fe_curve(const FePair& pair,
       options.cancel);
   if (bar) bar->finish();
   return points;
+}
+
+std::vector<FePoint> fe_curve_refined(const FePair& pair,
+                                      const std::vector<double>& velocities,
+                                      double tolerance,
+                                      const FeCurveOptions& options) {
+  if (!(std::isfinite(tolerance) && tolerance > 0.0)) {
+    throw_invalid("tolerance", tolerance, "a finite number > 0 [-]");
+  }
+  const auto [lo, hi] = std::minmax_element(velocities.begin(), velocities.end());
+  std::map<double, FePoint> computed;
+  std::vector<double> next;
+  for (std::size_t i = 0; i < kRefinementStart; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(kRefinementStart - 1);
+    next.push_back(i + 1 == kRefinementStart ? *hi : *lo * std::pow(*hi / *lo, t));
+  }
+  std::sort(next.begin(), next.end());
+  next.erase(std::unique(next.begin(), next.end()), next.end());
+  std::vector<CurveNode> nodes;
+  while (!next.empty() && !(options.cancel != nullptr && options.cancel->load())) {
+    for (FePoint& p : fe_curve(pair, next, options)) computed[p.velocity] = std::move(p);
+    nodes.clear();
+    for (const auto& [v, p] : computed) {
+      if (std::isfinite(p.e)) nodes.push_back({v, p.e, p.e_error});
+    }
+    next = refinement_speeds(nodes, tolerance, kRefinementMax - computed.size());
+  }
+  std::vector<FePoint> out;
+  out.reserve(velocities.size());
+  for (const double v : velocities) {
+    if (const auto it = computed.find(v); it != computed.end()) {
+      out.push_back(it->second);
+      continue;
+    }
+    const Interpolated at = interpolate_curve(nodes, v);
+    FePoint p;
+    p.velocity = v;
+    p.e = at.e;
+    p.e_error = at.e_error;
+    p.answered_by = "fe-interpolated";
+    p.status = std::isfinite(at.e) ? "interpolated" : "not_computed";
+    if (!std::isfinite(at.e)) {
+      p.detail = "outside the FE speeds that rebounded";
+    } else if (at.interpolation > tolerance) {
+      p.detail = fmt::format("interpolation error {:.2g} above the tolerance: {} FE speeds ran",
+                             at.interpolation, computed.size());
+    }
+    out.push_back(std::move(p));
+  }
+  return out;
 }
 
 }  // namespace corlab::study

@@ -77,4 +77,21 @@ std::vector<FePoint> fe_curve(const FePair& pair,
                               const std::vector<double>& velocities,
                               const FeCurveOptions& options);
 
+/// Speeds computed first by fe_curve_refined, log-spaced over the asked range [-].
+inline constexpr std::size_t kRefinementStart = 5;
+/// Most speeds fe_curve_refined computes [-].
+inline constexpr std::size_t kRefinementMax = 33;
+
+/// e(v) at `velocities` [m/s] from FE runs at fewer speeds: kRefinementStart log-spaced over
+/// their range, then the midpoints (ln v) of the intervals whose interpolation error
+/// (fe_interpolation.hpp) exceeds `tolerance` [-], until none does or kRefinementMax speeds ran.
+/// A speed that was computed is its FE point; another is the interpolant's (answered_by
+/// "fe-interpolated", status "interpolated", e_error the interpolated FE error bars plus the
+/// interpolation error; detail says when the tolerance was not reached there). InputError for a
+/// tolerance that is not a finite number > 0.
+std::vector<FePoint> fe_curve_refined(const FePair& pair,
+                                      const std::vector<double>& velocities,
+                                      double tolerance,
+                                      const FeCurveOptions& options);
+
 }  // namespace corlab::study

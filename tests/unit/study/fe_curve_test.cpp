@@ -69,5 +69,11 @@ TEST(FeCurve, ASpeedTheSolverRefusesIsARowABadPairThrows) {
   EXPECT_THROW(fe_curve(bad, {1.0}, {}), InputError);
 }
 
+TEST(FeCurve, TheRefinedCurveNeedsAPositiveTolerance) {
+  for (const double tolerance : {0.0, -1e-3, std::nan("")}) {
+    EXPECT_THROW(fe_curve_refined(alumina_on_aluminium(), {1.0, 2.0}, tolerance, {}), InputError);
+  }
+}
+
 }  // namespace
 }  // namespace corlab::study
