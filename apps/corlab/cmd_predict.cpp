@@ -142,10 +142,6 @@ int run_predict(const PredictOptions& o) {
   const Material sphere = parse_material_spec(o.sphere, "sphere");
   const Material substrate = parse_material_spec(o.substrate, "substrate");
   const std::vector<double> velocities = parse_velocities(o.velocity, o.spacing);
-  if (is_fe_model(o.model)) {
-    return run_predict_fe({o.model, o.sphere, o.substrate, sphere, substrate, velocities,
-                           o.radius_ratio, o.format, o.fe});
-  }
   require_no_fe_options(o.fe, o.radius_ratio);
   std::vector<std::string> names;
   if (o.model == "all") {
@@ -222,6 +218,13 @@ int run_predict(const PredictOptions& o) {
   return 0;
 }
 
+// --model fe|auto (predict_fe.hpp).
+int run_predict_fe_model(const PredictOptions& o) {
+  return run_predict_fe({o.model, o.sphere, o.substrate, parse_material_spec(o.sphere, "sphere"),
+                         parse_material_spec(o.substrate, "substrate"),
+                         parse_velocities(o.velocity, o.spacing), o.radius_ratio, o.format, o.fe});
+}
+
 const CommandRegistration kRegistration{Command{
     "predict", "Evaluate analytic CoR models e(v) for a sphere on a substrate",
     [](CLI::App& sub) -> std::function<int()> {
@@ -252,7 +255,7 @@ const CommandRegistration kRegistration{Command{
                      "R1/R2, the sphere's radius over the substrate's: the substrate is a free "
                      "second sphere at rest (0, the default: a flat) [-]");
       add_fe_options(sub, o->fe);
-      return [o] { return run_predict(*o); };
+      return [o] { return is_fe_model(o->model) ? run_predict_fe_model(*o) : run_predict(*o); };
     },
     21}};
 
