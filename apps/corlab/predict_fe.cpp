@@ -16,6 +16,7 @@
 #include "corlab/study/fe_curve.hpp"
 #include "corlab/study/result_cache.hpp"
 #include "corlab/study/results_table.hpp"
+#include "corlab/study/sweep.hpp"
 
 namespace corlab::cli {
 namespace {
@@ -63,6 +64,12 @@ void require_no_fe_options(const FeOptions& options, double radius_ratio) {
 }
 
 int run_predict_fe(const FePredictRequest& r) {
+  // Every rank would run every speed and print the table: the speeds run on threads (--jobs).
+  if (const int ranks = study::launched_world_size(); ranks > 1) {
+    throw_invalid("mpirun ranks", ranks,
+                  "1 for predict --model fe|auto (its speeds run on threads, --jobs; a "
+                  "distributed study: corlab sweep)");
+  }
   study::FePair pair{.sphere = r.sphere,
                      .substrate = r.substrate,
                      .shape = resolve_shape(r.options, r.radius_ratio),

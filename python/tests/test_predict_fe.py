@@ -65,6 +65,11 @@ def test_fe_is_cached_and_a_corrupted_or_foreign_entry_is_recomputed(corlab_bin,
     (rebuilt,), _ = predict(corlab_bin, cache_dir, *args)
     assert rebuilt["cached"] == "false" and rebuilt["e"] == cold["e"]
     assert "1 entries (1 of this build" in cache_cmd(corlab_bin, cache_dir, "size")
+    assert cache_cmd(corlab_bin, cache_dir, "path").strip() == str(cache_dir)
+    assert cache_cmd(corlab_bin, cache_dir, "clear", "--other-builds").startswith("removed 0 ")
+    assert cache_cmd(corlab_bin, cache_dir, "clear").startswith("removed 1 ")
+    (cleared,), _ = predict(corlab_bin, cache_dir, *args)
+    assert cleared["cached"] == "false" and cleared["e"] == cold["e"]
 
 
 def test_auto_answers_with_the_model_inside_its_range_and_the_fe_beyond(corlab_bin, tmp_path):
@@ -119,6 +124,11 @@ def test_bad_input_is_one_line_and_exit_2(corlab_bin, tmp_path):
                              env={**os.environ, "CORLAB_CACHE_DIR": str(tmp_path)})
         assert out.returncode == 2 and out.stdout == ""
         assert out.stderr.count("\n") == 1 and f"invalid {field} = " in out.stderr
+    out = subprocess.run([corlab_bin, "predict", "--model", "fe", "--sphere", SPHERE,
+                          "--substrate", AL, "--velocity", "1"], capture_output=True, text=True,
+                         timeout=60, env={**os.environ, "OMPI_COMM_WORLD_SIZE": "2",
+                                          "CORLAB_CACHE_DIR": str(tmp_path)})
+    assert out.returncode == 2 and "invalid mpirun ranks = 2" in out.stderr
 
 
 def test_the_accurate_interval_is_measured():
