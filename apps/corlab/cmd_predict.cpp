@@ -20,6 +20,7 @@
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/registry.hpp"
 #include "corlab/restitution/validity.hpp"
+#include "predict_fe.hpp"
 
 namespace corlab::cli {
 namespace {
@@ -36,6 +37,7 @@ struct PredictOptions {
   std::string clamp = "default";
   double radius = 1.0;
   double radius_ratio = 0.0;  ///< R1/R2 of a free second sphere of the substrate's material [-]
+  FeOptions fe;               ///< --model fe|auto only (predict_fe.hpp)
 };
 
 /// Most velocities one `predict` evaluates: a million points, each model's e and k1 held in
@@ -140,6 +142,7 @@ int run_predict(const PredictOptions& o) {
   const Material sphere = parse_material_spec(o.sphere, "sphere");
   const Material substrate = parse_material_spec(o.substrate, "substrate");
   const std::vector<double> velocities = parse_velocities(o.velocity, o.spacing);
+  require_no_fe_options(o.fe, o.radius_ratio);
   std::vector<std::string> names;
   if (o.model == "all") {
     names = restitution::model_names();
@@ -215,11 +218,22 @@ int run_predict(const PredictOptions& o) {
   return 0;
 }
 
+// --model fe|auto (predict_fe.hpp).
+int run_predict_fe_model(const PredictOptions& o) {
+  return run_predict_fe({o.model, o.sphere, o.substrate, parse_material_spec(o.sphere, "sphere"),
+                         parse_material_spec(o.substrate, "substrate"),
+                         parse_velocities(o.velocity, o.spacing), o.radius_ratio, o.format, o.fe});
+}
+
 const CommandRegistration kRegistration{Command{
     "predict", "Evaluate analytic CoR models e(v) for a sphere on a substrate",
     [](CLI::App& sub) -> std::function<int()> {
       auto o = std::make_shared<PredictOptions>();
-      sub.add_option("--model", o->model, "model name (see `corlab models`) or 'all'")->required();
+      sub.add_option(
+             "--model", o->model,
+             "model name (see `corlab models`), 'all', 'fe' (the FE solver, with error bars) or "
+             "'auto' (corlab2026p where accurate, else the FE)")
+          ->required();
       sub.add_option("--sphere", o->sphere,
                      "sphere material: database name or E=..,nu=..,rho=..[,sy=..]")
           ->required();
@@ -240,7 +254,8 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--radius-ratio", o->radius_ratio,
                      "R1/R2, the sphere's radius over the substrate's: the substrate is a free "
                      "second sphere at rest (0, the default: a flat) [-]");
-      return [o] { return run_predict(*o); };
+      add_fe_options(sub, o->fe);
+      return [o] { return is_fe_model(o->model) ? run_predict_fe_model(*o) : run_predict(*o); };
     },
     21}};
 

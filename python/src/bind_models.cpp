@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <variant>
@@ -10,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/dataset/auto_restitution.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/corlab2026.hpp"
 #include "corlab/restitution/corlab2026p.hpp"
@@ -17,6 +19,8 @@
 #include "corlab/restitution/oblique_impact.hpp"
 #include "corlab/restitution/registry.hpp"
 #include "corlab/restitution/validity.hpp"
+#include "corlab/study/fe_curve.hpp"
+#include "corlab/study/result_cache.hpp"
 
 namespace py = pybind11;
 
@@ -203,9 +207,115 @@ void bind_oblique_rebound(py::module_& m) {
       "normal], slides. Bad input raises ValueError.");
 }
 
+bool is_fe_model(const std::string& model) { return model == "fe" || model == "auto"; }
+
+// `corlab predict --model fe|auto` for Python: the points, the GIL released while the solver runs;
+// a cache that cannot be written is one UserWarning.
+std::vector<study::FePoint> fe_points(const std::string& model,
+                                      const MaterialArg& sphere,
+                                      const MaterialArg& substrate,
+                                      std::span<const double> velocities,
+                                      double radius_ratio,
+                                      const std::string& shape,
+                                      int jobs,
+                                      bool cache,
+                                      double tolerance = 0.0) {
+  if (!is_fe_model(model)) throw_invalid("model", model, "fe or auto");
+  const study::FePair pair{.sphere = to_material(sphere, "sphere"),
+                           .substrate = to_material(substrate, "substrate"),
+                           .shape = study::resolve_fe_shape(shape, radius_ratio),
+                           .radius_ratio = radius_ratio};
+  if (tolerance != 0.0 && model != "fe") {
+    throw_invalid("tolerance", tolerance, "0 (unset) with model 'auto'");
+  }
+  if (velocities.empty()) throw_invalid("v", "[]", "at least one speed [m/s]");
+  for (const double v : velocities) restitution::require_velocity(v);
+  std::vector<std::string> warnings;
+  std::optional<study::ResultCache> store;
+  if (cache) {
+    store.emplace(study::default_cache_directory(), study::cache_build_id(),
+                  [&warnings](const std::string& w) { warnings.push_back(w); });
+  }
+  const study::FeCurveOptions options{.jobs = jobs, .cache = store ? &*store : nullptr};
+  const std::vector<double> speeds(velocities.begin(), velocities.end());
+  std::vector<study::FePoint> points;
+  {
+    py::gil_scoped_release release;
+    points = model == "auto"    ? dataset::auto_curve(pair, speeds, options)
+             : tolerance != 0.0 ? study::fe_curve_refined(pair, speeds, tolerance, options)
+                                : study::fe_curve(pair, speeds, options);
+  }
+  for (const auto& w : warnings) {
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  }
+  return points;
+}
+
+py::dict curve_dict(const std::vector<study::FePoint>& points) {
+  py::array_t<double> v(static_cast<py::ssize_t>(points.size()));
+  py::array_t<double> e(v.size());
+  py::array_t<double> e_error(v.size());
+  py::array_t<bool> cached(v.size());
+  py::list status;
+  py::list answered_by;
+  py::list detail;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto j = static_cast<py::ssize_t>(i);
+    v.mutable_at(j) = points[i].velocity;
+    e.mutable_at(j) = points[i].e;
+    e_error.mutable_at(j) = points[i].e_error;
+    cached.mutable_at(j) = points[i].cached;
+    status.append(points[i].status);
+    answered_by.append(points[i].answered_by);
+    detail.append(points[i].detail);
+  }
+  py::dict d;
+  d["velocity"] = v;
+  d["e"] = e;
+  d["e_error"] = e_error;
+  d["status"] = status;
+  d["answered_by"] = answered_by;
+  d["detail"] = detail;
+  d["cached"] = cached;
+  return d;
+}
+
+using Speeds = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::span<const double> speeds_of(const Speeds& v) {
+  return {v.data(), static_cast<std::size_t>(v.size())};
+}
+
+void bind_predict_curve(py::module_& m) {
+  m.def(
+      "predict_curve",
+      [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
+         const Speeds& v, double radius_ratio, const std::string& shape, int jobs, bool cache,
+         double tolerance) {
+        return curve_dict(fe_points(model, sphere, substrate, speeds_of(v), radius_ratio, shape,
+                                    jobs, cache, tolerance));
+      },
+      py::arg("model"), py::arg("sphere"), py::arg("substrate"), py::arg("v"),
+      py::arg("radius_ratio") = 0.0, py::arg("shape") = "", py::arg("jobs") = 0,
+      py::arg("cache") = true, py::arg("tolerance") = 0.0,
+      "e(v) with its uncertainty, as `corlab predict --model fe|auto`: model 'fe' (the FE "
+      "solver with its discretisation error bar at each speed, from the result cache when it was "
+      "computed before) or 'auto' (corlab2026p with its 95 % prediction interval where it is "
+      "accurate, else the FE). v [m/s]: a float or an array; shape 'flat', 'sphere' (R1/R2 = "
+      "radius_ratio) or 'rigid' ('' : sphere for radius_ratio > 0, else flat); jobs: speeds run "
+      "at once (0: one per core); cache=False computes all and stores nothing; tolerance > 0 "
+      "(model 'fe'): the FE at fewer speeds, refined until the interpolation between them is "
+      "within it, the others interpolated (answered_by 'fe-interpolated'). Returns a dict: "
+      "velocity, e, e_error (arrays; nan where there is none), cached (bool array), status, "
+      "answered_by, detail (lists: the run's status, 'model' for corlab2026p, and why a speed "
+      "has no e or no error bar). Bad input raises ValueError.");
+  m.attr("CORLAB2026P_ACCURATE_INTERVAL_95") = dataset::kCorlab2026pAccurateInterval95;
+}
+
 }  // namespace
 
 void bind_models(py::module_& m) {
+  bind_predict_curve(m);
   bind_corlab2026(m);
   bind_corlab2026p(m);
   m.def(
@@ -225,6 +335,9 @@ void bind_models(py::module_& m) {
       "predict",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
          double v, std::optional<bool> clamp, double radius, double radius_ratio) {
+        if (is_fe_model(model)) {
+          return fe_points(model, sphere, substrate, {&v, 1}, radius_ratio, "", 0, true)[0].e;
+        }
         const auto bound = bind_model(model, sphere, substrate, clamp, radius, radius_ratio);
         const double e = bound.cor(v);
         warn_if_outside(bound, sphere, substrate, std::span<const double>(&v, 1), radius_ratio);
@@ -236,15 +349,22 @@ void bind_models(py::module_& m) {
       "substrate are Material objects or specs ('alumina_ma2023', 'E=..,nu=..,rho=..,sy=..'). "
       "radius_ratio = R1/R2 > 0: the substrate is a free second sphere at rest (0: a flat). "
       "v may be a float (returns a float) or a numpy array (returns an array of the same "
-      "shape). clamp: None = model default. Raises ValueError on bad input; warns "
+      "shape). model 'fe' or 'auto': e of predict_curve (nan where a speed has none). clamp: None "
+      "= model default. Raises ValueError on bad input; warns "
       "(UserWarning) when the model is unverified.");
   m.def(
       "predict",
       [](const std::string& model, const MaterialArg& sphere, const MaterialArg& substrate,
          const py::array_t<double, py::array::c_style | py::array::forcecast>& v,
          std::optional<bool> clamp, double radius, double radius_ratio) {
-        const auto bound = bind_model(model, sphere, substrate, clamp, radius, radius_ratio);
         py::array_t<double> out(v.request().shape);
+        if (is_fe_model(model)) {
+          const auto points =
+              fe_points(model, sphere, substrate, speeds_of(v), radius_ratio, "", 0, true);
+          for (std::size_t i = 0; i < points.size(); ++i) out.mutable_data()[i] = points[i].e;
+          return out;
+        }
+        const auto bound = bind_model(model, sphere, substrate, clamp, radius, radius_ratio);
         const std::span<const double> in(v.data(), static_cast<std::size_t>(v.size()));
         const std::span<double> res(out.mutable_data(), static_cast<std::size_t>(out.size()));
         {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/hash.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/core/text.hpp"
 #include "corlab/core/text_file.hpp"
@@ -241,13 +242,8 @@ std::string case_id(const Settings& settings) {
   Settings sorted = settings;
   std::sort(sorted.begin(), sorted.end());
   // FNV-1a, 64 bit: stable across platforms and runs (std::hash is not).
-  std::uint64_t hash = 14695981039346656037ULL;
-  auto feed = [&hash](std::string_view text) {
-    for (const char c : text) {
-      hash ^= static_cast<unsigned char>(c);
-      hash *= 1099511628211ULL;
-    }
-  };
+  std::uint64_t hash = fnv1a64("");
+  auto feed = [&hash](std::string_view text) { hash = fnv1a64(text, hash); };
   for (const auto& [k, v] : sorted) {
     feed(k);
     feed("=");

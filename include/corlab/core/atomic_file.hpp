@@ -12,6 +12,12 @@ namespace corlab {
 /// std::runtime_error naming the file if it cannot be written.
 void write_file_atomically(const std::filesystem::path& file, std::string_view text);
 
+/// The same for a file that other processes may replace at the same time (a result cache
+/// entry): the temporary is unique (`<file>.tmp.XXXXXX`), so concurrent writers never share one;
+/// the last rename wins and every reader sees one writer's whole file. A failed write removes
+/// its temporary.
+void write_file_atomically_shared(const std::filesystem::path& file, std::string_view text);
+
 /// Writes all of `data` to the open descriptor `fd` (retries short writes and EINTR). Throws
 /// std::runtime_error naming `file` on failure.
 void write_all(int fd, std::string_view data, const std::filesystem::path& file);

@@ -24,5 +24,24 @@ TEST(AtomicFile, ReplacesTheContentAndLeavesNoTemporary) {
   fs::remove_all(dir);
 }
 
+TEST(AtomicFile, TheSharedVariantLeavesNoTemporaryEvenWhenItFails) {
+  const fs::path dir = test::fresh_dir("atomic");
+  const fs::path file = dir / "a.json";
+  write_file_atomically_shared(file, "first");
+  write_file_atomically_shared(file, "second\n");
+  EXPECT_EQ(test::slurp(file), "second\n");
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& item : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1U);
+  EXPECT_THROW(write_file_atomically_shared(dir / "no" / "dir.json", "x"), std::runtime_error);
+  // A directory in the file's place: the rename fails and the temporary goes.
+  fs::create_directories(dir / "d.json" / "x");
+  EXPECT_THROW(write_file_atomically_shared(dir / "d.json", "x"), std::runtime_error);
+  files = 0;
+  for ([[maybe_unused]] const auto& item : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 2U);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace corlab
