@@ -74,7 +74,7 @@ double param(const std::map<std::string, double>& p, const std::string& key) {
 std::map<std::string, double> number_dict(const py::dict& d, std::string_view field) {
   std::map<std::string, double> out;
   for (const auto& [key, value] : d) {
-    const std::string name = py::str(key).cast<std::string>();
+    const auto name = py::str(key).cast<std::string>();
     const std::string where = fmt::format("{}['{}']", field, name);
     if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value)) {
       throw_invalid(where, py::repr(value).cast<std::string>(), "a number");
@@ -125,6 +125,36 @@ dem::ForceLaw make_law(const std::string& law, const std::map<std::string, doubl
   throw_invalid("law", law,
                 "one of [hertz, hysteresis, tsuji, viscoelastic, linear, thornton, "
                 "liggghts_thornton_ning]");
+}
+
+// corlab.dem.simulate_impact: one impact of a law given by name and parameters; a bad parameter,
+// or a law that never separates the bodies or whose force stops being finite, is a ValueError.
+py::dict simulate_impact_py(const std::string& law,
+                            const py::dict& params_dict,
+                            double mass,
+                            double velocity) {
+  const auto params = number_dict(params_dict, "params");
+  const auto force = make_law(law, params);
+  std::string shown;
+  for (const auto& [k, v] : params)
+    shown += fmt::format("{}{}={}", shown.empty() ? "" : ", ", k, v);
+  dem::ImpactOutcome out;
+  try {
+    out = dem::simulate_impact(force, mass, velocity);
+  } catch (const dem::NotSeparated&) {
+    throw_invalid("params of law " + law, shown,
+                  fmt::format("a law that separates the bodies (e >= {}); at m* = {} kg, v = {} "
+                              "m/s it is overdamped or sticks",
+                              dem::kMinRestitution, mass, velocity));
+  } catch (const std::runtime_error& e) {
+    throw_invalid("params of law " + law, shown,
+                  fmt::format("a law with a finite force through the impact ({})", e.what()));
+  }
+  py::dict r;
+  r["e"] = out.restitution;
+  r["contact_time"] = out.contact_time;
+  r["max_overlap"] = out.max_overlap;
+  return r;
 }
 
 py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
@@ -237,34 +267,9 @@ void bind_dem(py::module_& m) {
   d.def("tsuji_alpha", &dem::calibrate_tsuji_alpha, py::arg("e"), "Exact alpha of TsujiLaw");
   d.def("lammps_tsuji_input", &dem::lammps_tsuji_input, py::arg("e"),
         "e_in for LAMMPS damping tsuji so that it delivers e");
-  d.def(
-      "simulate_impact",
-      [](const std::string& law, const py::dict& params_dict, double mass, double velocity) {
-        const auto params = number_dict(params_dict, "params");
-        const auto force = make_law(law, params);
-        std::string shown;
-        for (const auto& [k, v] : params)
-          shown += fmt::format("{}{}={}", shown.empty() ? "" : ", ", k, v);
-        dem::ImpactOutcome out;
-        try {
-          out = dem::simulate_impact(force, mass, velocity);
-        } catch (const dem::NotSeparated&) {
-          throw_invalid("params of law " + law, shown,
-                        fmt::format("a law that separates the bodies (e >= {}); at m* = {} kg, v = "
-                                    "{} m/s it is overdamped or sticks",
-                                    dem::kMinRestitution, mass, velocity));
-        } catch (const std::runtime_error& e) {
-          throw_invalid("params of law " + law, shown,
-                        fmt::format("a law with a finite force through the impact ({})", e.what()));
-        }
-        py::dict r;
-        r["e"] = out.restitution;
-        r["contact_time"] = out.contact_time;
-        r["max_overlap"] = out.max_overlap;
-        return r;
-      },
-      py::arg("law"), py::arg("params"), py::arg("effective_mass"), py::arg("velocity"),
-      "Integrates one head-on impact (GSL ODE) and returns e, contact time [s], max overlap [m]");
+  d.def("simulate_impact", &simulate_impact_py, py::arg("law"), py::arg("params"),
+        py::arg("effective_mass"), py::arg("velocity"),
+        "Integrates one head-on impact (GSL ODE) and returns e, contact time [s], max overlap [m]");
   d.def("export", &export_dem, py::arg("types"), py::arg("wall") = "",
         py::arg("restitution") = std::nullopt, py::arg("model") = "", py::arg("v_min") = 0.1,
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
