@@ -28,7 +28,7 @@ struct DesignArgs {
 };
 
 int run_design(const DesignArgs& args) {
-  if (args.points < 1) throw_invalid("--points", static_cast<double>(args.points), ">= 1");
+  dataset::validate_design_points(args.points, "--points");
   if (args.box != "flat" && args.box != "pairs") throw_invalid("--box", args.box, "flat | pairs");
   dataset::DatasetDesign design =
       args.box == "pairs" ? dataset::pair_design() : dataset::DatasetDesign{};

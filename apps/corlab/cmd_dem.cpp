@@ -12,6 +12,7 @@
 #include "command.hpp"
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
+#include "corlab/core/output_directory.hpp"
 #include "corlab/dem/dem_export.hpp"
 #include "corlab/dem/tangential.hpp"
 #include "corlab/materials/material_database.hpp"
@@ -71,7 +72,7 @@ dem::RestitutionCurve read_table(const std::string& file) {
 
 void write_file(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path);
-  if (!out) throw_invalid("out", path.string(), "a writable directory");
+  if (!out) throw_invalid("--out", path.string(), "a writable directory");
   out << text;
 }
 
@@ -81,7 +82,7 @@ int run_dem(const DemArgs& args) {
   if (!args.wall.empty()) {
     auto wall = dem::parse_labelled_material(args.wall, "wall");
     spec.wall = std::move(wall.material);
-    spec.wall_label = std::move(wall.label);
+    if (wall.label_given) spec.wall_label = std::move(wall.label);
   }
   for (const auto& p : args.pairs) spec.pair_restitution.push_back(dem::parse_pair_restitution(p));
   for (const auto& p : args.pair_tables) {
@@ -100,11 +101,12 @@ int run_dem(const DemArgs& args) {
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
   spec.friction = args.friction;
+  dem::validate_table_points(args.table_points);
   // A pair no model covers (an elastic particle pair) is refused by calibrate_pairs with the ways
   // out (--pair, a yield stress, --wall-only).
   const std::vector<dem::PairCalibration> pairs = dem::calibrate_pairs(spec);
   const std::filesystem::path dir(args.out);
-  std::filesystem::create_directories(dir);
+  ensure_output_directory(dir, "--out");
   write_file(dir / "lammps.in", dem::write_lammps(spec, pairs));
   write_file(dir / "lammps_nopython.in", dem::write_lammps(spec, pairs, false));
   write_file(dir / "liggghts.in", dem::write_liggghts(spec, pairs));
@@ -166,7 +168,8 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--v-min", a->v_min, "lower end of the e(v) range [m/s]");
       sub.add_option("--v-max", a->v_max, "upper end of the e(v) range [m/s]");
       sub.add_option("--fit-points", a->fit_points, "speeds of the e(v) fits (log-uniform)");
-      sub.add_option("--table-points", a->table_points, "rows per pair of the output tables");
+      sub.add_option("--table-points", a->table_points,
+                     "rows per pair of the output tables, in [2, 10000]");
       sub.add_option("--out", a->out, "output directory");
       sub.add_flag("--wall-only", a->wall_only, "only type-wall contacts (no particle pairs)");
       return [a] { return run_dem(*a); };

@@ -5,9 +5,11 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "bindings.hpp"
@@ -35,10 +37,55 @@ dem::ChiFormula formula_by_name(const std::string& name) {
                 "carvalho_martins]");
 }
 
+// The bounds of a law parameter (contact_laws.hpp): > 0, or >= 0 where 0 means none.
+struct ParamRule {
+  std::string_view name;
+  bool zero_allowed;
+  std::string_view unit;
+};
+constexpr std::array<ParamRule, 10> kParamRules{{{"stiffness", false, "[N/m^n]"},
+                                                 {"chi", true, "[-]"},
+                                                 {"impact_velocity", false, "[m/s]"},
+                                                 {"exponent", false, "[-]"},
+                                                 {"alpha", true, "[-]"},
+                                                 {"effective_mass", false, "[kg]"},
+                                                 {"damping", true, "[N s/m^1.5 or N s/m]"},
+                                                 {"effective_modulus", false, "[Pa]"},
+                                                 {"radius", false, "[m]"},
+                                                 {"limiting_pressure", false, "[Pa]"}}};
+
 double param(const std::map<std::string, double>& p, const std::string& key) {
   const auto it = p.find(key);
   if (it == p.end()) throw_invalid("params", key, "present for this law");
+  const std::string field = "params['" + key + "']";
+  for (const auto& rule : kParamRules) {
+    if (rule.name != key) continue;
+    if (rule.zero_allowed) {
+      require_non_negative(field, it->second, rule.unit);
+    } else {
+      require_positive(field, it->second, rule.unit);
+    }
+  }
   return it->second;
+}
+
+// A dict of numbers (law parameters, pair restitutions) with each value checked to be one:
+// ValueError naming `field`['key'] for a string or another non-number.
+std::map<std::string, double> number_dict(const py::dict& d, std::string_view field) {
+  std::map<std::string, double> out;
+  for (const auto& [key, value] : d) {
+    const auto name = py::str(key).cast<std::string>();
+    const std::string where = fmt::format("{}['{}']", field, name);
+    if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value)) {
+      throw_invalid(where, py::repr(value).cast<std::string>(), "a number");
+    }
+    try {
+      out[name] = value.cast<double>();
+    } catch (const py::cast_error&) {
+      throw_invalid(where, py::repr(value).cast<std::string>(), "a number");
+    }
+  }
+  return out;
 }
 
 // A ForceLaw from a law name and its parameters (SI units, see contact_laws.hpp).
@@ -80,6 +127,36 @@ dem::ForceLaw make_law(const std::string& law, const std::map<std::string, doubl
                 "liggghts_thornton_ning]");
 }
 
+// corlab.dem.simulate_impact: one impact of a law given by name and parameters; a bad parameter,
+// or a law that never separates the bodies or whose force stops being finite, is a ValueError.
+py::dict simulate_impact_py(const std::string& law,
+                            const py::dict& params_dict,
+                            double mass,
+                            double velocity) {
+  const auto params = number_dict(params_dict, "params");
+  const auto force = make_law(law, params);
+  std::string shown;
+  for (const auto& [k, v] : params)
+    shown += fmt::format("{}{}={}", shown.empty() ? "" : ", ", k, v);
+  dem::ImpactOutcome out;
+  try {
+    out = dem::simulate_impact(force, mass, velocity);
+  } catch (const dem::NotSeparated&) {
+    throw_invalid("params of law " + law, shown,
+                  fmt::format("a law that separates the bodies (e >= {}); at m* = {} kg, v = {} "
+                              "m/s it is overdamped or sticks",
+                              dem::kMinRestitution, mass, velocity));
+  } catch (const std::runtime_error& e) {
+    throw_invalid("params of law " + law, shown,
+                  fmt::format("a law with a finite force through the impact ({})", e.what()));
+  }
+  py::dict r;
+  r["e"] = out.restitution;
+  r["contact_time"] = out.contact_time;
+  r["max_overlap"] = out.max_overlap;
+  return r;
+}
+
 py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     const std::string& wall,
                     std::optional<double> restitution,
@@ -90,8 +167,9 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     int fit_points,
                     const std::optional<std::pair<std::vector<double>, std::vector<double>>>& table,
                     const std::string& table_source,
-                    const std::map<std::string, double>& pairs,
+                    const py::dict& pairs_dict,
                     double friction) {
+  const auto pairs = number_dict(pairs_dict, "pairs");
   dem::ExportSpec spec;
   spec.friction = friction;  // Coulomb mu [-] of every pair
   for (const auto& [material, radius] : types) {
@@ -101,7 +179,7 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
   if (!wall.empty()) {
     auto labelled = dem::parse_labelled_material(wall, "wall");
     spec.wall = std::move(labelled.material);
-    spec.wall_label = std::move(labelled.label);
+    if (labelled.label_given) spec.wall_label = std::move(labelled.label);
   }
   for (const auto& [pair, e] : pairs) {
     spec.pair_restitution.push_back(dem::parse_pair_restitution(fmt::format("{}={}", pair, e)));
@@ -189,24 +267,14 @@ void bind_dem(py::module_& m) {
   d.def("tsuji_alpha", &dem::calibrate_tsuji_alpha, py::arg("e"), "Exact alpha of TsujiLaw");
   d.def("lammps_tsuji_input", &dem::lammps_tsuji_input, py::arg("e"),
         "e_in for LAMMPS damping tsuji so that it delivers e");
-  d.def(
-      "simulate_impact",
-      [](const std::string& law, const std::map<std::string, double>& params, double mass,
-         double velocity) {
-        const auto out = dem::simulate_impact(make_law(law, params), mass, velocity);
-        py::dict r;
-        r["e"] = out.restitution;
-        r["contact_time"] = out.contact_time;
-        r["max_overlap"] = out.max_overlap;
-        return r;
-      },
-      py::arg("law"), py::arg("params"), py::arg("effective_mass"), py::arg("velocity"),
-      "Integrates one head-on impact (GSL ODE) and returns e, contact time [s], max overlap [m]");
+  d.def("simulate_impact", &simulate_impact_py, py::arg("law"), py::arg("params"),
+        py::arg("effective_mass"), py::arg("velocity"),
+        "Integrates one head-on impact (GSL ODE) and returns e, contact time [s], max overlap [m]");
   d.def("export", &export_dem, py::arg("types"), py::arg("wall") = "",
         py::arg("restitution") = std::nullopt, py::arg("model") = "", py::arg("v_min") = 0.1,
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
         py::arg("table") = std::nullopt, py::arg("table_source") = "",
-        py::arg("pairs") = std::map<std::string, double>{}, py::arg("friction") = 0.0,
+        py::arg("pairs") = py::dict(), py::arg("friction") = 0.0,
         "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables. "
         "table = (velocities [m/s], e [-]): an FE e(v) table instead of `restitution` or "
         "`model` (e.g. t = corlab.read_results('results.csv'); table=(t['velocity'], t['e'])); "

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "corlab/core/escaped_text.hpp"
 #include "corlab/core/text_file.hpp"
 
 namespace corlab {
@@ -57,6 +58,8 @@ std::string shown_value(std::string_view value) {
 }  // namespace
 
 std::string message_text(std::string_view value) { return shown_value(value); }
+
+std::string escaped_text(std::string_view value) { return printable(value); }
 
 InputError::InputError(std::string field, std::string value, std::string constraint, bool quoted)
     : std::invalid_argument(quoted ? fmt::format("invalid {} = '{}': must be {}",

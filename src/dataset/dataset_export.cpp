@@ -12,6 +12,7 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
+#include "corlab/core/output_directory.hpp"
 #include "corlab/dataset/impact_box.hpp"
 #include "corlab/fem/output/impact_output.hpp"
 #include "corlab/fem/solver/result_fields.hpp"
@@ -278,7 +279,7 @@ ExportSummary export_dataset(const std::filesystem::path& sweep_dir,
   std::vector<std::string> header;
   for (const auto& c : columns.described) header.push_back(c["name"].get<std::string>());
 
-  std::filesystem::create_directories(out_dir);
+  ensure_output_directory(out_dir, "--out");
   ExportSummary summary;
   summary.design_points = runs.size();
   std::string csv = study::csv_line(header) + "\n";

@@ -1,22 +1,32 @@
 #include "corlab/dataset/dataset_spec.hpp"
 
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <algorithm>
+#include <sstream>
 
+#include "corlab/core/error.hpp"
+#include "corlab/core/escaped_text.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/dataset/sobol_sequence.hpp"
 
 namespace corlab::dataset {
 namespace {
 
-std::string toml_value(const std::string& v) {
-  return parse_double(v) ? v : fmt::format("\"{}\"", v);
+// `v` as a TOML basic string: "..." with quotes, backslashes and control characters escaped.
+std::string toml_string(const std::string& v) {
+  std::ostringstream out;
+  const toml::value<std::string> node(v);
+  out << toml::toml_formatter{node, toml::format_flags::allow_unicode_strings};
+  return out.str();
 }
+
+std::string toml_value(const std::string& v) { return parse_double(v) ? v : toml_string(v); }
 
 void append_settings(std::string& out, const study::Settings& settings) {
   for (const auto& [key, value] : settings) {
-    out += fmt::format("\"{}\" = {}\n", key, toml_value(value));
+    out += fmt::format("{} = {}\n", toml_string(key), toml_value(value));
   }
 }
 
@@ -36,7 +46,16 @@ DatasetDesign pair_design() {
   return DatasetDesign{.name = "fe_restitution_pairs", .points = 2048, .box = pair_box()};
 }
 
+void validate_design_points(std::size_t points, std::string_view field) {
+  if (points < 1 || points > study::kMaxRunsLimit) {
+    throw_invalid(
+        field, static_cast<double>(points),
+        fmt::format("in [1, {}] (the most runs a sweep spec may hold)", study::kMaxRunsLimit));
+  }
+}
+
 std::vector<DesignPoint> design_points(const DatasetDesign& design) {
+  validate_design_points(design.points, "points");
   const auto u = sobol_points(box_dimension(design.box), design.points);
   std::vector<DesignPoint> points;
   points.reserve(u.size());
@@ -75,13 +94,13 @@ std::string dataset_spec_toml(const DatasetDesign& design, std::string_view comm
       "# point of the box k2 in [{}, {}], v/v_y in [{}, min({} m/s, damage number {})],\n"
       "# E_sphere/E_substrate in [{}, {}], sphere elastic or sigma_y ratio in [{}, {}],\n"
       "# nu in [{}, {}], H/E in [{}, {}]{}.\n"
-      "[study]\nname = \"{}\"\ndescription = \"FE restitution dataset: {} Sobol points of the "
+      "[study]\nname = {}\ndescription = \"FE restitution dataset: {} Sobol points of the "
       "dimensionless box\"\nmax_runs = {}\n\n[base]\n",
-      command, box.k2.min, box.k2.max, box.velocity_ratio_min, box.velocity_max,
+      escaped_text(command), box.k2.min, box.k2.max, box.velocity_ratio_min, box.velocity_max,
       box.damage_number_max, box.modulus_ratio.min, box.modulus_ratio.max,
       box.sphere_yield_ratio.min, box.sphere_yield_ratio.max, box.nu.min, box.nu.max,
-      box.hardening_ratio.min, box.hardening_ratio.max, pair_box_comment(box), design.name,
-      design.points, std::max<std::size_t>(design.points, 1));
+      box.hardening_ratio.min, box.hardening_ratio.max, pair_box_comment(box),
+      toml_string(design.name), design.points, std::max<std::size_t>(design.points, 1));
   append_settings(out, dataset_base_settings(box));
   for (const DesignPoint& p : design_points(design)) {
     out += fmt::format("\n[[cases]]  # design point {}\n", p.index);

@@ -25,8 +25,7 @@ double point_effective_modulus(const ImpactBox& box, const DimensionlessImpact& 
 
 // rho* of the point's pair [kg/m^3].
 double point_effective_density(const ImpactBox& box, const DimensionlessImpact& p) {
-  return pair_effective_density(p.radius_ratio, p.density_ratio * box.density,
-                                             p.density_ratio);
+  return pair_effective_density(p.radius_ratio, p.density_ratio * box.density, p.density_ratio);
 }
 
 // Largest impact speed of the point: velocity_max, or less where the damage number
@@ -156,8 +155,7 @@ DimensionlessInputs dimensionless_inputs(const fem::ImpactConfig& config) {
   DimensionlessInputs d;
   d.radius_ratio =
       fem::sphere_target(config) ? config.sphere.radius / config.substrate.radius : 0.0;
-  d.effective_density =
-      pair_effective_density(d.radius_ratio, s.density, s.density / b.density);
+  d.effective_density = pair_effective_density(d.radius_ratio, s.density, s.density / b.density);
   d.k1 = k1(e_star, d.effective_density, v);
   d.k2 = b.yield_stress ? k2(*b.yield_stress, e_star) : kNan;
   d.velocity_ratio = kNan;

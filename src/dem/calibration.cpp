@@ -1,5 +1,7 @@
 #include "corlab/dem/calibration.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -94,7 +96,9 @@ double tsuji_restitution(double alpha) {
 }
 
 double calibrate_tsuji_alpha(double e) {
-  require_open_range("restitution", e, 0.0, 1.0);
+  if (!(e >= kMinRestitution && e < 1.0)) {
+    throw_invalid("restitution", e, fmt::format("in [{}, 1)", kMinRestitution));
+  }
   const auto f = [e](double alpha) {
     const TsujiLaw law{.stiffness = 1.0, .alpha = alpha, .effective_mass = 1.0};
     return restitution_or_stuck(
@@ -187,7 +191,7 @@ RestitutionCurve tabulated_curve(std::vector<double> v, std::vector<double> e) {
   if (v.size() < 2) throw_invalid("table rows", static_cast<double>(v.size()), ">= 2");
   for (std::size_t i = 0; i < v.size(); ++i) {
     require_positive("table velocity", v[i], "[m/s]");
-    require_closed_range("table restitution", e[i], 1e-12, 1.0);
+    require_closed_range("table restitution", e[i], kMinRestitution, 1.0);
     if (i > 0 && !(v[i] > v[i - 1])) throw_invalid("table velocity", v[i], "strictly increasing");
   }
   return [v = std::move(v), e = std::move(e)](double speed) {

@@ -18,7 +18,7 @@ double linear_restitution(double damping, double effective_mass, double stiffnes
 }
 
 double linear_damping_for_restitution(double restitution, double effective_mass, double stiffness) {
-  require_closed_range("restitution", restitution, 1e-12, 1.0);
+  require_closed_range("restitution", restitution, kMinRestitution, 1.0);
   const double log_e = std::log(restitution);
   return 2.0 * std::sqrt(effective_mass * stiffness) * std::abs(log_e) /
          std::sqrt(log_e * log_e + units::kPi * units::kPi);

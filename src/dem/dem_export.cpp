@@ -17,143 +17,15 @@
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/first_yield.hpp"
 #include "corlab/restitution/registry.hpp"
+#include "dem/detail/export_spec.hpp"
+#include "dem/detail/export_text.hpp"
+#include "dem/detail/script_text.hpp"
 
 namespace corlab::dem {
 namespace {
 
-constexpr std::string_view kLabelChars =
-    "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.+";
-
-bool is_label(std::string_view s) {
-  return !s.empty() && s.find_first_not_of(kLabelChars) == std::string_view::npos;
-}
-
-// The keys of an inline material spec: "E=..." is a material, not a label "E".
-bool is_material_key(std::string_view s) {
-  return s == "E" || s == "nu" || s == "rho" || s == "sy" || s == "sigma_y" || s == "H";
-}
-
 double sphere_mass(const ParticleType& t) {
   return 4.0 / 3.0 * units::kPi * t.radius * t.radius * t.radius * t.material.density;
-}
-
-// A label as written: labels go into LAMMPS comments, YADE strings and file names.
-std::string clean_label(std::string name) {
-  for (char& c : name) {
-    if (kLabelChars.find(c) == std::string_view::npos) c = '_';
-  }
-  return name;
-}
-
-void validate_spec(const ExportSpec& spec) {
-  if (spec.types.empty()) throw_invalid("types", 0.0, "at least one particle type");
-  for (const auto& t : spec.types) {
-    require_positive("type radius", t.radius, "[m]");
-    validate(t.material, "type material");
-  }
-  if (spec.wall) validate(*spec.wall, "wall");
-  if (spec.wall_only && !spec.wall) throw_invalid("wall_only", 1.0, "used with a wall");
-  const int targets = static_cast<int>(spec.restitution.has_value()) +
-                      static_cast<int>(!spec.model.empty()) +
-                      static_cast<int>(spec.table.has_value());
-  const bool own_targets = !spec.pair_restitution.empty() || !spec.pair_tables.empty();
-  if (targets > 1 || (targets == 0 && !own_targets)) {
-    throw_invalid("target", static_cast<double>(targets),
-                  "exactly one of --restitution, --model, --table (none: --pair or --pair-table "
-                  "for every pair)");
-  }
-  if (spec.restitution) require_open_range("restitution", *spec.restitution, 0.0, 1.0);
-  validate_friction(spec.friction);
-  require_positive("v_min", spec.v_min, "[m/s]");
-  if (!(spec.v_max > spec.v_min)) throw_invalid("v_max", spec.v_max, "> v_min");
-  if (spec.fit_points < 2 || spec.fit_points > 200)
-    throw_invalid("fit_points", spec.fit_points, "in [2, 200]");
-  std::vector<std::string> labels;
-  for (int i = 1; i <= static_cast<int>(spec.types.size()); ++i) {
-    const std::string label = type_label(spec, i);
-    if (std::find(labels.begin(), labels.end(), label) != labels.end() || label == "wall") {
-      throw_invalid("type label", label, "unique among the types and not 'wall' (LABEL=MATERIAL)");
-    }
-    labels.push_back(label);
-  }
-}
-
-// The type id (0 = wall) a pair override (`field`: pair or pair-table) names, by label or id.
-int resolve_type(const ExportSpec& spec,
-                 const std::string& name,
-                 std::string_view field,
-                 const std::string& text) {
-  if (name == "wall" || (spec.wall && name == wall_label(spec))) {
-    if (!spec.wall) throw_invalid(field, text, "a pair of existing types (no --wall given)");
-    return 0;
-  }
-  const int n = static_cast<int>(spec.types.size());
-  for (int i = 1; i <= n; ++i) {
-    if (name == type_label(spec, i) || name == std::to_string(i)) return i;
-  }
-  std::string known;
-  for (int i = 1; i <= n; ++i) known += type_label(spec, i) + ", ";
-  throw_invalid(field, text,
-                fmt::format("two of [{}wall] (labels or type ids) and ={}", known,
-                            field == "pair" ? "E" : "FILE"));
-}
-
-// Whether `first`/`second` (labels or ids) name the pair (i, j) (j = 0: the wall).
-bool names_pair(
-    const ExportSpec& spec, const std::string& first, const std::string& second, int i, int j) {
-  const std::string text = first + "/" + second;
-  const int a = resolve_type(spec, first, "pair", text);
-  const int b = resolve_type(spec, second, "pair", text);
-  return (a == i && b == j) || (a == j && b == i);
-}
-
-// The pair's own constant e, if the spec sets one for (i, j) (j = 0: the wall).
-std::optional<double> pair_override(const ExportSpec& spec, int i, int j) {
-  std::optional<double> e;
-  for (const auto& p : spec.pair_restitution) {
-    if (names_pair(spec, p.first, p.second, i, j)) e = p.restitution;
-  }
-  return e;
-}
-
-// The pair's own e(v) table, if the spec gives one for (i, j).
-const PairTable* pair_table(const ExportSpec& spec, int i, int j) {
-  for (const auto& t : spec.pair_tables) {
-    if (names_pair(spec, t.first, t.second, i, j)) return &t;
-  }
-  return nullptr;
-}
-
-// The pair (lower id first, 0 = wall) that `first`/`second` name; with --wall-only it must be a
-// type-wall pair.
-std::pair<int, int> named_pair(const ExportSpec& spec,
-                               const std::string& first,
-                               const std::string& second,
-                               std::string_view field,
-                               const std::string& text) {
-  const int a = resolve_type(spec, first, field, text);
-  const int b = resolve_type(spec, second, field, text);
-  if (spec.wall_only && a != 0 && b != 0) {
-    throw_invalid(field, text, "a type-wall pair (the export is --wall-only)");
-  }
-  return {std::min(a, b), std::max(a, b)};
-}
-
-// Each pair a --pair or --pair-table names exists, and a pair with a table has no other target
-// of its own (a repeated --pair: the last one counts).
-void validate_pair_targets(const ExportSpec& spec) {
-  std::vector<std::pair<int, int>> named;
-  for (const auto& p : spec.pair_restitution) {
-    named.push_back(named_pair(spec, p.first, p.second, "pair", p.first + "/" + p.second));
-  }
-  for (const auto& t : spec.pair_tables) {
-    const std::string text = t.first + "/" + t.second + "=" + t.source;
-    const auto key = named_pair(spec, t.first, t.second, "pair-table", text);
-    if (std::find(named.begin(), named.end(), key) != named.end()) {
-      throw_invalid("pair-table", text, "a pair that no other --pair or --pair-table names");
-    }
-    named.push_back(key);
-  }
 }
 
 // e(v) of the pair (material `a` of type_i against `b`). A registered model is written for a
@@ -191,7 +63,7 @@ RestitutionCurve model_curve(const ExportSpec& spec,
   const std::string flat_label = !b_is_flat      ? type_label(spec, c.type_i)
                                  : c.type_j == 0 ? wall_label(spec)
                                                  : type_label(spec, c.type_j);
-  description = spec.model + " (" + sphere_label + " on " + flat_label;
+  description = detail::script_text(spec.model) + " (" + sphere_label + " on " + flat_label;
   if (sphere.density != c.effective_density) {
     description += fmt::format(", sphere density rho* = {:.6g} kg/m^3", c.effective_density);
   }
@@ -214,12 +86,12 @@ RestitutionCurve pair_curve(const ExportSpec& spec,
                             const Material& a,
                             const Material& b,
                             std::string& description) {
-  if (const PairTable* t = pair_table(spec, c.type_i, c.type_j)) {
-    description = "table " + t->source + " (--pair-table)";
+  if (const PairTable* t = detail::pair_table(spec, c.type_i, c.type_j)) {
+    description = "table " + detail::script_text(t->source) + " (--pair-table)";
     return t->curve;
   }
   if (spec.table) {
-    description = "table " + spec.table_source;
+    description = "table " + detail::script_text(spec.table_source);
     return *spec.table;
   }
   if (spec.model.empty()) {
@@ -246,6 +118,23 @@ CurveFit best_constant_fit(std::span<const double> speeds, const RestitutionCurv
   }
   fit.rms_error = std::sqrt(sum / static_cast<double>(speeds.size()));
   return fit;
+}
+
+// The pair's e(v) target is an e in [1e-12, 1] (kMinRestitution) at every speed the fits and the
+// hook tables read; else refused, naming the pair, its target (the model) and the speed.
+void require_physical_target(const ExportSpec& spec, const PairCalibration& c) {
+  auto speeds = log_speeds(spec.v_min, spec.v_max, spec.fit_points);
+  const auto rows = detail::table_speeds(spec, detail::kHookTableRows);
+  speeds.insert(speeds.end(), rows.begin(), rows.end());
+  for (const double v : speeds) {
+    const double e = c.curve(v);
+    if (!(e >= kMinRestitution && e <= 1.0)) {
+      throw_invalid("target e of pair " + c.name(), e,
+                    fmt::format("in [{}, 1]: {} gives it at v = {:.6g} m/s, outside the range "
+                                "where it holds (narrow --v-min/--v-max or choose another model)",
+                                kMinRestitution, c.target, v));
+    }
+  }
 }
 
 PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
@@ -275,10 +164,10 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
   c.friction = spec.friction;
   c.contact_time_fast = hertz_contact_time(c.hertz_stiffness, c.effective_mass, spec.v_max);
   c.contact_time_slow = hertz_contact_time(c.hertz_stiffness, c.effective_mass, spec.v_min);
-  c.constant = pair_override(spec, i, j);
+  c.constant = detail::pair_override(spec, i, j);
   if (c.constant) {
     c.target = fmt::format("constant e = {:.6g} (--pair)", *c.constant);
-  } else if (spec.restitution && !pair_table(spec, i, j)) {
+  } else if (spec.restitution && !detail::pair_table(spec, i, j)) {
     c.constant = spec.restitution;
     c.target = fmt::format("constant e = {:.6g}", *c.constant);
   }
@@ -293,6 +182,7 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
     return c;
   }
   c.curve = pair_curve(spec, c, ti.material, *other, c.target);
+  require_physical_target(spec, c);
   c.viscoelastic = fit_viscoelastic_damping(c.hertz_stiffness, c.effective_mass, speeds, c.curve);
   c.liggghts = fit_liggghts_thornton_pressure(c.effective_modulus, c.effective_radius,
                                               c.effective_mass, speeds, c.curve);
@@ -329,74 +219,6 @@ std::vector<double> liggghts_type_ratios(const ExportSpec& spec,
   return ratios;
 }
 
-LabelledMaterial parse_labelled_material(std::string_view text, std::string_view field) {
-  LabelledMaterial out;
-  const auto eq = text.find('=');
-  const std::string_view head = trim(text.substr(0, eq == std::string_view::npos ? 0 : eq));
-  if (eq != std::string_view::npos && head.find(',') == std::string_view::npos &&
-      !is_material_key(head)) {
-    if (!is_label(head)) {
-      throw_invalid(std::string(field) + " label", head,
-                    "letters, digits, _ . + (LABEL=MATERIAL, e.g. glass=E=63e9,nu=0.22,rho=2500)");
-    }
-    out.label = std::string(head);
-    out.material = parse_material_spec(text.substr(eq + 1), field);
-    return out;
-  }
-  out.material = parse_material_spec(text, field);
-  if (out.material.name != "inline") out.label = clean_label(out.material.name);
-  return out;
-}
-
-PairRestitution parse_pair_restitution(std::string_view text) {
-  constexpr std::string_view kSyntax = "A/B=E with type labels or ids (or wall) and e in (0, 1]";
-  const auto slash = text.find('/');
-  const auto eq = text.rfind('=');
-  if (slash == std::string_view::npos || eq == std::string_view::npos || eq < slash) {
-    throw_invalid("pair", text, kSyntax);
-  }
-  PairRestitution p;
-  p.first = std::string(trim(text.substr(0, slash)));
-  p.second = std::string(trim(text.substr(slash + 1, eq - slash - 1)));
-  if (p.first.empty() || p.second.empty()) throw_invalid("pair", text, kSyntax);
-  p.restitution = parse_finite("pair " + p.first + "/" + p.second, text.substr(eq + 1));
-  if (!(p.restitution > 0.0 && p.restitution <= 1.0)) {
-    throw_invalid("pair " + p.first + "/" + p.second, p.restitution, "in (0, 1] (1: elastic)");
-  }
-  return p;
-}
-
-PairTable parse_pair_table(std::string_view text) {
-  constexpr std::string_view kSyntax =
-      "A/B=FILE with type labels or ids (or wall) and an FE results.csv (columns velocity, e)";
-  const auto slash = text.find('/');
-  const auto eq = text.find('=');
-  if (slash == std::string_view::npos || eq == std::string_view::npos || eq < slash) {
-    throw_invalid("pair-table", text, kSyntax);
-  }
-  PairTable t;
-  t.first = std::string(trim(text.substr(0, slash)));
-  t.second = std::string(trim(text.substr(slash + 1, eq - slash - 1)));
-  t.source = std::string(trim(text.substr(eq + 1)));
-  if (t.first.empty() || t.second.empty() || t.source.empty()) {
-    throw_invalid("pair-table", text, kSyntax);
-  }
-  return t;
-}
-
-std::string type_label(const ExportSpec& spec, int id) {
-  const ParticleType& t = spec.types[static_cast<std::size_t>(id - 1)];
-  if (!t.label.empty()) return t.label;
-  if (t.material.name != "inline") return clean_label(t.material.name);
-  return fmt::format("type{}", id);
-}
-
-std::string wall_label(const ExportSpec& spec) {
-  if (!spec.wall_label.empty()) return spec.wall_label;
-  if (spec.wall && spec.wall->name != "inline") return clean_label(spec.wall->name);
-  return "wall";
-}
-
 std::string PairCalibration::name() const {
   return (type_j == 0 ? fmt::format("{}-wall", type_i) : fmt::format("{}-{}", type_i, type_j)) +
          " (" + label + ")";
@@ -426,8 +248,7 @@ bool liggghts_uses_thornton_ning(const std::vector<PairCalibration>& pairs) {
 }
 
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec) {
-  validate_spec(spec);
-  validate_pair_targets(spec);
+  detail::validate_export_spec(spec);
   std::vector<PairCalibration> pairs;
   const int n = static_cast<int>(spec.types.size());
   for (int i = 1; i <= n && !spec.wall_only; ++i) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "corlab/core/error.hpp"
+#include "corlab/dem/contact_laws.hpp"
 #include "dem/detail/gsl_solvers.hpp"
 
 namespace corlab::dem {
@@ -46,7 +47,7 @@ std::string_view to_string(ChiFormula formula) {
 }
 
 double published_chi(ChiFormula formula, double e) {
-  require_closed_range("restitution", e, 1e-12, 1.0);
+  require_closed_range("restitution", e, kMinRestitution, 1.0);
   switch (formula) {
     case ChiFormula::kHuntCrossley:
       return 1.5 * (1.0 - e);
@@ -77,7 +78,7 @@ double exact_restitution(double chi) {
 }
 
 double exact_chi(double e) {
-  require_closed_range("restitution", e, 1e-12, 1.0);
+  require_closed_range("restitution", e, kMinRestitution, 1.0);
   if (e == 1.0) return 0.0;
   if (e > 0.97) {
     // chi* < 0.06 there.

@@ -9,6 +9,7 @@
 #include "corlab/dem/dem_export.hpp"
 #include "corlab/dem/tangential.hpp"
 #include "dem/detail/export_text.hpp"
+#include "dem/detail/script_text.hpp"
 
 namespace corlab::dem {
 namespace {
@@ -25,8 +26,9 @@ std::string material_line(const std::string& var,
                           double friction) {
   return fmt::format(
       "{0} = O.materials.append(FrictMat(young={1:.10g}, poisson={2:.6g}, density={3:.8g}, "
-      "frictionAngle={6:.17g}, label='{4}'))\ncorlab_type_of_material[{0}] = {5}\n",
-      var, m.youngs_modulus, m.poisson_ratio, m.density, label, type, std::atan(friction));
+      "frictionAngle={6:.17g}, label={4}))\ncorlab_type_of_material[{0}] = {5}\n",
+      var, m.youngs_modulus, m.poisson_ratio, m.density, detail::python_string(label), type,
+      std::atan(friction));
 }
 
 // The header's paragraph on the tangential part.

@@ -35,7 +35,11 @@ struct DesignPoint {
   study::Settings settings;
 };
 
-/// The points of the design, in Sobol order.
+/// Requires `points` in [1, study::kMaxRunsLimit] (the most runs a sweep spec may hold): InputError
+/// naming `field` (e.g. "--points").
+void validate_design_points(std::size_t points, std::string_view field);
+
+/// The points of the design, in Sobol order (validate_design_points first).
 std::vector<DesignPoint> design_points(const DatasetDesign& design);
 
 /// Settings every run shares: the box's E_substrate and densities (rho_substrate only for a
@@ -44,7 +48,9 @@ std::vector<DesignPoint> design_points(const DatasetDesign& design);
 /// quasi-static runs just above first yield at the smallest k2.
 study::Settings dataset_base_settings(const ImpactBox& box);
 
-/// The spec text; `command` (the command line that wrote it) goes into its header comment.
+/// The spec text; `command` (the command line that wrote it) goes into its header comment as one
+/// line of text (line breaks and other control characters escaped: a file name given to --out
+/// stays a comment). Every string value is a TOML basic string (toml++'s escaping).
 std::string dataset_spec_toml(const DatasetDesign& design, std::string_view command);
 
 }  // namespace corlab::dataset

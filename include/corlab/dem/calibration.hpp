@@ -19,7 +19,7 @@ using RestitutionCurve = std::function<double(double)>;
 /// closed form; the tests compare both).
 double calibrate_chi_by_ode(double restitution);
 
-/// alpha of TsujiLaw delivering e in (0, 1) (exact, ODE).
+/// alpha of TsujiLaw delivering e in [kMinRestitution, 1) (exact, ODE); InputError outside.
 double calibrate_tsuji_alpha(double restitution);
 
 /// Restitution of TsujiLaw for alpha >= 0 (ODE; independent of K, m*, v).

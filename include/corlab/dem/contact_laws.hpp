@@ -13,6 +13,11 @@
 
 namespace corlab::dem {
 
+/// Smallest restitution the DEM tools take [-]: exact chi(e), the Tsuji alpha and the linear
+/// damping are accurate down to it (the alpha's ODE e within 1e-6 relative at 1e-12; below it the
+/// root finder's tolerance is the answer: asked 1e-20, e = 7e-13).
+inline constexpr double kMinRestitution = 1e-12;
+
 /// Per-contact memory of the history-dependent laws. A fresh contact starts zero-initialised.
 struct ContactHistory {
   double max_overlap = 0.0;      ///< largest overlap reached so far [m]

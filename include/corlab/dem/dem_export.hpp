@@ -27,6 +27,7 @@ struct ParticleType {
 struct LabelledMaterial {
   std::string label;
   Material material;
+  bool label_given = false;  ///< "LABEL=SPEC": the user's label (else the database name's)
 };
 /// Parses "LABEL=SPEC" or "SPEC" (materials/material_database.hpp); InputError naming `field`.
 LabelledMaterial parse_labelled_material(std::string_view text, std::string_view field);
@@ -65,13 +66,21 @@ struct ExportSpec {
   double v_max = 10.0;                    ///< upper end [m/s]
   int fit_points = 9;                     ///< speeds of the e(v) fits (log-uniform)
   bool wall_only = false;                 ///< only type-wall contacts (no particle pairs)
-  std::string wall_label;                 ///< the wall's name in the exports; empty: material's
+  /// The wall's label as the user gave it (LABEL=MATERIAL); empty: its material's name, or "wall".
+  std::string wall_label;
   std::vector<PairRestitution> pair_restitution;  ///< constant e of single pairs
   std::vector<PairTable> pair_tables;             ///< e(v) tables of single pairs
   /// Coulomb friction coefficient mu [-] of every pair (0: frictionless, the normal part only);
   /// above 0 each fragment adds Mindlin's tangential stiffness (tangential.hpp).
   double friction = 0.0;
 };
+
+/// Most rows per pair of the e(v) tables (write_table_csv, write_json): each row of a fitted pair
+/// integrates two impacts (the viscoelastic and thornton_ning columns), 1000 rows of two pairs
+/// take about 1.5 s; the hooks interpolate 64.
+inline constexpr int kMaxTablePoints = 10'000;
+/// Requires `points` in [2, kMaxTablePoints] (InputError naming table-points).
+void validate_table_points(int points);
 
 /// The label of type `id` (1-based) and of the wall, as written in the exports.
 std::string type_label(const ExportSpec& spec, int id);
@@ -117,7 +126,10 @@ struct PairCalibration {
   double liggghts_yield_ratio() const;
 };
 
-/// Validates the spec (InputError naming the field) and calibrates every pair i <= j and each
+/// Validates the spec (InputError naming the field: radii in [1e-9, 1e3] m, labels unique over the
+/// types and the wall and not a bare type id, each pair named by --pair or --pair-table once and
+/// with a particle; a target e outside [kMinRestitution, 1] at a speed of the range names the
+/// pair, the model and the speed) and calibrates every pair i <= j and each
 /// type against the wall. A pair's target: its --pair constant or --pair-table, else the export's
 /// (restitution, model or table; with none, every pair needs its own).
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec);

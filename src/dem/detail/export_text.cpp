@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "corlab/version.hpp"
+#include "dem/detail/script_text.hpp"
 
 namespace corlab::dem::detail {
 
@@ -15,10 +16,11 @@ std::string export_header(const ExportSpec& spec, std::string_view code) {
   for (std::size_t i = 0; i < spec.types.size(); ++i) {
     const auto id = static_cast<int>(i) + 1;
     out += fmt::format("#   type {} = {}: {}, radius {:.6g} m\n", id, type_label(spec, id),
-                       spec.types[i].material.name, spec.types[i].radius);
+                       script_text(spec.types[i].material.name), spec.types[i].radius);
   }
   if (spec.wall) {
-    out += fmt::format("#   wall = {}: {} (rigid, flat)\n", wall_label(spec), spec.wall->name);
+    out += fmt::format("#   wall = {}: {} (rigid, flat)\n", wall_label(spec),
+                       script_text(spec.wall->name));
   }
   return out;
 }
@@ -30,6 +32,7 @@ std::string fit_comment(const CurveFit& fit) {
 }
 
 std::vector<double> table_speeds(const ExportSpec& spec, int points) {
+  validate_table_points(points);
   std::vector<double> v(static_cast<std::size_t>(points));
   for (int i = 0; i < points; ++i) {
     v[static_cast<std::size_t>(i)] = spec.v_min + (spec.v_max - spec.v_min) * i / (points - 1);
