@@ -203,10 +203,12 @@ void WorkProgress::draw_locked() {
   last_draw_ = std::chrono::steady_clock::now();
   const double elapsed = std::chrono::duration<double>(last_draw_ - start_).count();
   const double done = done_here_ + done_disk_;
-  const double fraction = total_ > 0.0 ? done / total_ : 1.0;
+  // The same costs summed in another order may miss the total by a rounding error.
+  const bool all_done = !(total_ - done > 1e-9 * total_);
+  const double fraction = all_done ? 1.0 : done / total_;
   const std::string text =
       work_progress_text(fraction, stage_, stage_done_, stage_runs_, elapsed,
-                         remaining_seconds(total_ - done, done_here_, elapsed));
+                         remaining_seconds(all_done ? 0.0 : total_ - done, done_here_, elapsed));
   if (terminal_) {
     std::fprintf(out_, "\r%s\033[K", text.c_str());
   } else {
