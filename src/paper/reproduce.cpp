@@ -80,7 +80,8 @@ json run_study(const std::string& name,
   const fs::path dir = opt.out_dir / name;
   if (progress != nullptr) {
     progress->stage(
-        name, static_cast<int>(cost.cases.size()), cost.skipped(),
+        name, static_cast<int>(cost.cases.size()),
+        static_cast<int>(std::count(cost.done.begin(), cost.done.end(), true)), cost.skipped(),
         fmt::format("corlab: reproduce {}: study {} ({} runs{})", opt.preset, name,
                     spec.run_count(),
                     name == kOnsetStudy ? " x (elastic reference + 2 bracket runs)" : ""));

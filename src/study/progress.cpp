@@ -147,13 +147,14 @@ WorkProgress::~WorkProgress() {
 
 void WorkProgress::stage(const std::string& name,
                          int runs,
+                         int runs_done,
                          double skipped_cost,
                          const std::string& line) {
   const std::lock_guard lock(mutex_);
   if (!line.empty()) print_locked(line);
   stage_ = name;
   stage_runs_ = runs;
-  stage_done_ = 0;
+  stage_done_ = runs_done;
   done_disk_ += skipped_cost;
   maybe_draw_locked(true);
 }
@@ -162,6 +163,7 @@ void WorkProgress::done(double cost, bool ran_here) {
   const std::lock_guard lock(mutex_);
   ++stage_done_;
   (ran_here ? done_here_ : done_disk_) += cost;
+  drawn_latest_ = false;
   maybe_draw_locked(false);
 }
 
@@ -187,7 +189,7 @@ void WorkProgress::finish() {
   if (finished_) return;
   finished_ = true;
   if (stage_.empty()) return;  // nothing ran
-  draw_locked();
+  if (!drawn_latest_) draw_locked();
   if (terminal_) std::fputc('\n', out_);
   std::fflush(out_);
 }
@@ -201,6 +203,7 @@ void WorkProgress::maybe_draw_locked(bool force) {
 
 void WorkProgress::draw_locked() {
   last_draw_ = std::chrono::steady_clock::now();
+  drawn_latest_ = true;
   const double elapsed = std::chrono::duration<double>(last_draw_ - start_).count();
   const double done = done_here_ + done_disk_;
   // The same costs summed in another order may miss the total by a rounding error.

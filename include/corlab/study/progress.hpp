@@ -89,9 +89,13 @@ class WorkProgress {
   WorkProgress(const WorkProgress&) = delete;
   WorkProgress& operator=(const WorkProgress&) = delete;
 
-  /// Starts a stage of `runs` runs, `skipped_cost` of whose cost was found done on disk; prints
-  /// `line` (its title) first unless empty.
-  void stage(const std::string& name, int runs, double skipped_cost, const std::string& line = "");
+  /// Starts a stage of `runs` runs, `runs_done` of which, costing `skipped_cost`, were found done
+  /// on disk; prints `line` (its title) first unless empty.
+  void stage(const std::string& name,
+             int runs,
+             int runs_done,
+             double skipped_cost,
+             const std::string& line = "");
   /// One run of the stage finished: `cost` done here (`ran_here`) or found done on disk.
   void done(double cost, bool ran_here = true);
   /// Prints one line (above the progress line on a terminal).
@@ -113,6 +117,7 @@ class WorkProgress {
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_draw_{};
   bool finished_ = false;
+  bool drawn_latest_ = false;  ///< the last line drawn shows every finished run
   std::jthread ticker_;
   void draw_locked();
   void print_locked(const std::string& line);

@@ -79,7 +79,7 @@ TEST(WorkProgress, PlainLinesCountTheCostDoneOnDiskAndHere) {
   ASSERT_NE(file, nullptr);
   {
     WorkProgress progress(file, 100.0, /*terminal=*/0);
-    progress.stage("first", 4, 40.0);  // 40 of 100 on disk already: drawn at once
+    progress.stage("first", 5, 1, 40.0);  // 1 run, 40 of 100, on disk already: drawn at once
     progress.log("a line");
     progress.done(10.0);  // throttled: no line
     progress.done(10.0);
@@ -89,9 +89,9 @@ TEST(WorkProgress, PlainLinesCountTheCostDoneOnDiskAndHere) {
   std::fclose(file);
   EXPECT_EQ(text.find('\r'), std::string::npos) << text;
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 3) << text;
-  EXPECT_NE(text.find(" 40%  first 0/4"), std::string::npos) << text;
+  EXPECT_NE(text.find(" 40%  first 1/5"), std::string::npos) << text;
   EXPECT_NE(text.find("a line\n"), std::string::npos) << text;
-  EXPECT_NE(text.find(" 60%  first 2/4"), std::string::npos) << text;
+  EXPECT_NE(text.find(" 60%  first 3/5"), std::string::npos) << text;
 }
 
 TEST(WorkProgress, NothingStartedPrintsNothing) {
