@@ -25,6 +25,7 @@ TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy \
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
   bench format clean dem-check install deb golden-rebaseline explorer
+.PHONY: build-all first-answer
 
 # Installs the missing packages of $(1) with apt-get (as root).
 define apt_install
@@ -47,14 +48,26 @@ deps-test:
 configure: deps
 	cmake --preset $(PRESET) -DCMAKE_BUILD_TYPE=Release
 
+# `make build`: the tool only (target `tool`: the CLI, libcorlab, libcorlab_dem, the Python module);
+# `make build-all`: also the tests, fuzz targets, benchmarks and examples (what `make test` needs).
 build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target tool
+
+build-all: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The main job: the paper's pipeline end to end (studies, fits, report) at the paper's resolution.
-run: build
+# The main job: a first answer in a second (corlab2026's e(v), alumina on aluminium), then the
+# paper's pipeline end to end (studies, fits, report) at the paper's resolution.
+run: build first-answer
 	./$(BUILD_DIR)/bin/corlab reproduce --preset $(REPORT_PRESET) --out $(REPORT_DIR)
 
-test: deps-test build explorer test-cpp test-python lint test-asan
+FIRST_ANSWER := predict --model corlab2026 --sphere alumina_ma2023 --substrate aluminium_ma2023 \
+  --velocity 0.1:10:6 --spacing log
+first-answer: build
+	@echo "corlab: first answer (e at 0.1-10 m/s): corlab $(FIRST_ANSWER)"
+	@./$(BUILD_DIR)/bin/corlab $(FIRST_ANSWER)
+
+test: deps-test build-all explorer test-cpp test-python lint test-asan
 
 test-cpp:
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS) $(CTEST_ARGS)
@@ -93,14 +106,14 @@ $(GSL_SOURCE)/gsl/configure:
 # and flake8 (.flake8) on the Python sources. Both fail on any finding.
 lint: lint-python lint-cpp
 
-lint-cpp: build
+lint-cpp: build-all
 	scripts/lint/clang_tidy.sh $(BUILD_DIR) $(JOBS)
 
 lint-python:
 	/usr/bin/python3 -m flake8 python scripts tests explorer
 
 # DEM exports checked by running Debian's LAMMPS and LIGGGHTS (ctest label dem; part of `make test`).
-dem-check: deps-test build
+dem-check: deps-test build-all
 	cd $(BUILD_DIR) && ctest --output-on-failure -L dem $(CTEST_ARGS)
 
 # Everything into PREFIX (default /usr/local; docs/user/install.md): the corlab program, the C++
@@ -134,10 +147,10 @@ test-asan: deps
 
 # The golden tier (docs/dev/testing.md): rerun its cases, print old and new side by side, rewrite
 # tests/golden/golden.json.
-golden-rebaseline: build
+golden-rebaseline: build-all
 	./$(BUILD_DIR)/tests/golden_test --rebaseline
 
-bench: build
+bench: build-all
 	for b in $(BUILD_DIR)/bin/*_benchmark; do $$b; done
 
 format:

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <ctime>
 #include <map>
+#include <optional>
 #include <thread>
 
 #include "corlab/core/atomic_file.hpp"
@@ -17,6 +18,7 @@
 #include "corlab/core/thread_pool.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/paper/fit_paper.hpp"
+#include "corlab/study/progress.hpp"
 #include "corlab/study/sweep_spec.hpp"
 #include "corlab/version.hpp"
 #include "reproduce_internal.hpp"
@@ -41,8 +43,7 @@ using json = nlohmann::json;
 using reproduce_detail::kOnsetStudy;
 using reproduce_detail::now_s;
 using reproduce_detail::spec_file;
-
-const std::vector<std::string> kHistoryStudies = {"verification_mesh", "verification_hertz"};
+using reproduce_detail::StudyCost;
 
 /// Checks the options and parses the spec of every selected study, so that a bad spec fails
 /// before anything runs; returns the specs by study name.
@@ -71,20 +72,27 @@ std::map<std::string, SweepSpec> selected_specs(const ReproduceOptions& opt) {
 }
 
 /// Runs one study (what is not yet on disk) and returns its entry of fit.json's "studies".
-json run_study(const std::string& name, const SweepSpec& spec, const ReproduceOptions& opt) {
+json run_study(const std::string& name,
+               const SweepSpec& spec,
+               const ReproduceOptions& opt,
+               const StudyCost& cost,
+               WorkProgress* progress) {
   const fs::path dir = opt.out_dir / name;
-  if (opt.progress) {
-    std::fprintf(stderr, "corlab: reproduce %s: study %s (%zu runs%s)\n", opt.preset.c_str(),
-                 name.c_str(), spec.run_count(),
-                 name == kOnsetStudy ? " x (elastic reference + 2 bracket runs)" : "");
+  if (progress != nullptr) {
+    progress->stage(
+        name, static_cast<int>(cost.cases.size()),
+        static_cast<int>(std::count(cost.done.begin(), cost.done.end(), true)), cost.skipped(),
+        fmt::format("corlab: reproduce {}: study {} ({} runs{})", opt.preset, name,
+                    spec.run_count(),
+                    name == kOnsetStudy ? " x (elastic reference + 2 bracket runs)" : ""));
   }
   json s;
-  if (std::find(kHistoryStudies.begin(), kHistoryStudies.end(), name) != kHistoryStudies.end()) {
-    s = reproduce_detail::run_history_study(spec, dir, opt);
+  if (reproduce_detail::is_history_study(name)) {
+    s = reproduce_detail::run_history_study(spec, dir, opt, cost, progress);
   } else if (name == kOnsetStudy) {
-    s = reproduce_detail::run_onset_study(spec, dir, opt);
+    s = reproduce_detail::run_onset_study(spec, dir, opt, cost, progress);
   } else {
-    s = reproduce_detail::run_sweep_study(spec, dir, opt);
+    s = reproduce_detail::run_sweep_study(spec, dir, opt, cost, progress);
   }
   s["spec"] = spec_file(opt.studies_dir, opt.preset, name).string();
   s["description"] = spec.description;
@@ -170,15 +178,32 @@ json reproduce(const ReproduceOptions& opt) {
   const std::map<std::string, SweepSpec> specs = selected_specs(opt);
   fs::create_directories(opt.out_dir);
   const double t0 = now_s();
+  // Every run's cost first, for the progress of the whole: one mesh per run (3.5 CPU-s for the
+  // paper preset's 467 runs).
+  if (opt.progress) {
+    std::size_t runs = 0;
+    for (const auto& [name, spec] : specs) runs += spec.run_count();
+    std::fprintf(stderr, "corlab: reproduce %s: estimating the cost of its %zu runs\n",
+                 opt.preset.c_str(), runs);
+  }
+  std::map<std::string, StudyCost> costs;
+  double total_cost = 0.0;
+  for (const auto& [name, spec] : specs) {
+    costs[name] = reproduce_detail::study_cost(name, spec, opt.out_dir / name, opt);
+    total_cost += costs[name].total();
+  }
+  std::optional<WorkProgress> progress;
+  if (opt.progress) progress.emplace(stderr, total_cost);
   json studies = json::object();
   int runs_total = 0;
   for (const auto& name : reproduce_study_names()) {
     const auto it = specs.find(name);
     if (it == specs.end()) continue;
     if (opt.cancel && opt.cancel->load()) break;
-    studies[name] = run_study(name, it->second, opt);
+    studies[name] = run_study(name, it->second, opt, costs[name], progress ? &*progress : nullptr);
     runs_total += studies[name].value("ran", 0);
   }
+  if (progress) progress->finish();
   json out = provenance(opt);
   out["studies"] = studies;
   out["runs_this_invocation"] = runs_total;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <tuple>
@@ -17,9 +18,7 @@
 #include "corlab/fem/output/impact_output.hpp"
 #include "corlab/fem/output/vtu_writer.hpp"
 #include "corlab/fem/solver/discretisation_error.hpp"
-#include "corlab/fem/solver/run_cost.hpp"
 #include "corlab/fem/solver/simulate.hpp"
-#include "corlab/materials/material.hpp"
 #include "corlab/study/results_table.hpp"
 #include "corlab/study/sweep.hpp"
 #include "reproduce_internal.hpp"
@@ -79,30 +78,25 @@ std::string setting_value(const Settings& settings, const std::string& key) {
   return value;
 }
 
-/// The onset cases, most expensive first: each costs about three loading-half runs near its
-/// Hertz onset velocity, and a low yield stress (a tiny, finely meshed, slow contact) costs up to
-/// ten times more than a high one; started last on two workers, it would run alone at the end.
-std::vector<std::size_t> onset_cases_longest_first(const std::vector<SweepCase>& cases) {
-  std::vector<double> cost(cases.size(), 0.0);
-  for (std::size_t i = 0; i < cases.size(); ++i) {
-    try {
-      fem::ImpactConfig probe = cases[i].config;
-      const auto& substrate = probe.substrate.material;
-      if (substrate.yield_stress) {
-        probe.impact.velocity = hertz_yield_onset_velocity(
-            probe.sphere.material.density, effective_modulus(probe.sphere.material, substrate),
-            *substrate.yield_stress);
-      }
-      cost[i] = fem::estimate_run_cost(probe).element_steps();
-    } catch (const std::exception&) {
-      cost[i] = 0.0;  // an invalid case fails at once when it runs: last
-    }
-  }
-  std::vector<std::size_t> order(cases.size());
+/// Case indices by decreasing a-priori cost: the onset cases cost about three loading-half runs
+/// near their Hertz onset velocity each, and a low yield stress (a tiny, finely meshed, slow
+/// contact) costs up to ten times more than a high one; started last on two workers, it would run
+/// alone at the end.
+std::vector<std::size_t> longest_first(const std::vector<double>& cost) {
+  std::vector<std::size_t> order(cost.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
                    [&cost](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
   return order;
+}
+
+/// A line on stderr, above the progress line when there is one.
+void say(WorkProgress* progress, const std::string& line) {
+  if (progress != nullptr) {
+    progress->log(line);
+  } else {
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
 }
 
 }  // namespace
@@ -110,11 +104,19 @@ std::vector<std::size_t> onset_cases_longest_first(const std::vector<SweepCase>&
 /// A study whose runs keep their time histories (Figs. 2, 3, 5): runs/<case>/{history.csv,
 /// summary.json}, plus fields_<t>.vtu at each `output.times` (Fig. 4; only when it is set); a run
 /// with summary.json is done.
-json run_history_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
+bool is_history_study(const std::string& name) {
+  return name == "verification_mesh" || name == "verification_hertz";
+}
+
+json run_history_study(const SweepSpec& spec,
+                       const fs::path& dir,
+                       const ReproduceOptions& opt,
+                       const StudyCost& cost,
+                       WorkProgress* progress) {
   const double t0 = now_s();
   fs::create_directories(dir / "runs");
   write_file_atomically(dir / "spec.toml", spec.to_toml());
-  const auto cases = spec.expand();
+  const auto& cases = cost.cases;
   const auto keys = spec.swept_keys();
   {
     std::vector<std::string> header{"case_id"};
@@ -127,17 +129,14 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
     }
     write_file_atomically(dir / "cases.csv", text);
   }
-  std::vector<int> todo;
-  for (int i = 0; i < static_cast<int>(cases.size()); ++i) {
-    if (!fs::exists(dir / "runs" / cases[static_cast<std::size_t>(i)].id / "summary.json")) {
-      todo.push_back(i);
-    }
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    if (!cost.done[i]) todo.push_back(i);
   }
   std::atomic<int> failed{0};
   std::atomic<int> ran{0};
-  std::mutex log;
   parallel_for(todo.size(), worker_count(opt.jobs), [&](std::size_t k) {
-    const auto& c = cases[static_cast<std::size_t>(todo[k])];
+    const auto& c = cases[todo[k]];
     if (opt.cancel && opt.cancel->load()) return;
     const fs::path run_dir = dir / "runs" / c.id;
     try {
@@ -155,33 +154,58 @@ json run_history_study(const SweepSpec& spec, const fs::path& dir, const Reprodu
       fem::write_history_csv(r.history, run_dir / "history.csv");
       fem::write_summary_json(r, c.config, run_dir / "summary.json");  // atomic: see its doc
       ++ran;
-      if (opt.progress) {
-        std::lock_guard lock(log);
-        std::fprintf(stderr, "corlab: %s %s: e = %.4f (%.1f s)\n", spec.name.c_str(), c.id.c_str(),
-                     r.e, r.wall_s);
+      if (progress != nullptr) {
+        progress->log(
+            fmt::format("corlab: {} {}: e = {:.4f} ({:.1f} s)", spec.name, c.id, r.e, r.wall_s));
       }
     } catch (const std::exception& err) {
       ++failed;
-      std::lock_guard lock(log);
-      std::fprintf(stderr, "corlab: %s %s failed: %s\n", spec.name.c_str(), c.id.c_str(),
-                   err.what());
+      say(progress, fmt::format("corlab: {} {} failed: {}", spec.name, c.id, err.what()));
     }
+    if (progress != nullptr) progress->done(cost.cost[todo[k]]);
   });
   return {
       {"kind", "history"}, {"total", cases.size()},   {"already_done", cases.size() - todo.size()},
       {"ran", ran.load()}, {"failed", failed.load()}, {"wall_s", now_s() - t0}};
 }
 
-json run_sweep_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
+json run_sweep_study(const SweepSpec& spec,
+                     const fs::path& dir,
+                     const ReproduceOptions& opt,
+                     const StudyCost& cost,
+                     WorkProgress* progress) {
   SweepOptions so;
   so.jobs = opt.jobs;
-  so.progress = opt.progress;
+  so.progress = opt.progress && progress == nullptr;  // one progress line: the whole reproduction
   so.cancel = opt.cancel;
-  if (opt.error_estimate) {
-    so.runner = [](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
-      return fem::simulate_with_error_estimate(config, control);
+  const bool estimate = opt.error_estimate;
+  CaseRunner run = [estimate](const fem::ImpactConfig& config,
+                              const fem::SimulationControl& control) {
+    return estimate ? fem::simulate_with_error_estimate(config, control)
+                    : fem::simulate(config, control);
+  };
+  if (progress != nullptr) {
+    // run_sweep hands the runner a config only: its case's cost is found by its swept values.
+    auto cost_by_key = std::make_shared<std::map<std::string, double>>();
+    const std::vector<std::string> keys = spec.swept_keys();
+    for (std::size_t i = 0; i < cost.cases.size(); ++i) {
+      (*cost_by_key)[swept_key(cost.cases[i].config, keys)] = cost.cost[i];
+    }
+    run = [run, cost_by_key, keys, progress](const fem::ImpactConfig& config,
+                                             const fem::SimulationControl& control) {
+      const auto it = cost_by_key->find(swept_key(config, keys));
+      const double c = it == cost_by_key->end() ? 0.0 : it->second;
+      try {
+        fem::ImpactResult r = run(config, control);
+        progress->done(c);
+        return r;
+      } catch (...) {
+        progress->done(c);
+        throw;
+      }
     };
   }
+  so.runner = run;
   const SweepSummary s = run_sweep(spec, dir, so);
   return {{"kind", "sweep"},    {"total", s.total},     {"already_done", s.already_done},
           {"ran", s.ran},       {"failed", s.failed},   {"not_separated", s.not_separated},
@@ -190,11 +214,15 @@ json run_sweep_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
 
 /// Yield onset per case by elastic scaling + a confirming bracket (find_yield_onset_scaled);
 /// every probe goes to probes.csv (resume).
-json run_onset_study(const SweepSpec& spec, const fs::path& dir, const ReproduceOptions& opt) {
+json run_onset_study(const SweepSpec& spec,
+                     const fs::path& dir,
+                     const ReproduceOptions& opt,
+                     const StudyCost& cost,
+                     WorkProgress* progress) {
   const double t0 = now_s();
   fs::create_directories(dir);
   write_file_atomically(dir / "spec.toml", spec.to_toml());
-  const auto cases = spec.expand();
+  const auto& cases = cost.cases;
   const ScaledOnsetOptions options = onset_options(opt.preset);
   const fs::path probes_file = dir / "probes.csv";
   // "onset_case", not "case_id": a case has several probe rows (read_results keeps a case_id once).
@@ -209,10 +237,11 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
   std::mutex mutex;
   std::atomic<int> ran{0};
   std::atomic<int> failed{0};
-  const std::vector<std::size_t> order = onset_cases_longest_first(cases);
+  const std::vector<std::size_t> order = longest_first(cost.cost);
   parallel_for(cases.size(), worker_count(opt.jobs), [&](std::size_t i) {
     const auto& c = cases[order[i]];
     if (opt.cancel && opt.cancel->load()) return;
+    std::atomic<int> ran_here{0};  // 0: every probe was on disk already
     try {
       KindProbeCache lookup = [&](bool elastic, double v) -> std::optional<OnsetProbe> {
         std::lock_guard lock(mutex);
@@ -226,28 +255,29 @@ json run_onset_study(const SweepSpec& spec, const fs::path& dir, const Reproduce
         fem::ImpactResult r = fem::simulate(config, control);
         if (r.status == fem::RunStatus::kCancelled) throw std::runtime_error("interrupted");
         ++ran;
+        ++ran_here;
         const bool elastic = !config.substrate.material.yield_stress.has_value();
         std::lock_guard lock(mutex);
         appender.append({c.id, elastic ? kElasticKind : kPlasticKind,
                          format_number(config.impact.velocity), format_number(r.plastic_strain_max),
                          format_number(r.substrate_von_mises_max), format_number(r.e),
                          format_number(r.wall_s)});
-        if (opt.progress) {
-          std::fprintf(stderr,
-                       "corlab: yield_onset %s %s v = %.4g m/s: eps_p,max = %.3g, "
-                       "von Mises max = %.4g Pa (%.1f s)\n",
-                       c.id.c_str(), elastic ? "elastic reference" : "probe",
-                       config.impact.velocity, r.plastic_strain_max, r.substrate_von_mises_max,
-                       r.wall_s);
+        if (progress != nullptr) {
+          progress->log(fmt::format(
+              "corlab: yield_onset {} {} v = {:.4g} m/s: eps_p,max = {:.3g}, von Mises max = "
+              "{:.4g} Pa ({:.1f} s)",
+              c.id, elastic ? "elastic reference" : "probe", config.impact.velocity,
+              r.plastic_strain_max, r.substrate_von_mises_max, r.wall_s));
         }
         return r;
       };
       find_yield_onset_scaled(c.config, options, runner, lookup);
     } catch (const std::exception& err) {
       ++failed;
-      std::lock_guard lock(mutex);
-      std::fprintf(stderr, "corlab: yield_onset %s failed: %s\n", c.id.c_str(), err.what());
+      const std::lock_guard lock(mutex);
+      say(progress, fmt::format("corlab: yield_onset {} failed: {}", c.id, err.what()));
     }
+    if (progress != nullptr) progress->done(cost.cost[order[i]], ran_here.load() > 0);
   });
   return {{"kind", "onset"},        {"total", cases.size()},
           {"ran", ran.load()},      {"failed", failed.load()},

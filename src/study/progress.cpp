@@ -102,4 +102,122 @@ void ProgressBar::draw() {
   std::fflush(out_);
 }
 
+double remaining_seconds(double remaining_cost, double done_cost, double elapsed_s) {
+  if (!(remaining_cost > 0.0)) return 0.0;
+  if (!(done_cost > 0.0) || !(elapsed_s > 0.0)) return -1.0;
+  return remaining_cost * elapsed_s / done_cost;
+}
+
+std::string work_progress_text(double fraction,
+                               const std::string& stage,
+                               int stage_done,
+                               int stage_runs,
+                               double elapsed_s,
+                               double left_s) {
+  constexpr int kWidth = 24;
+  fraction = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 1.0) : 0.0;
+  const int filled = std::clamp(static_cast<int>(fraction * kWidth), 0, kWidth);
+  return fmt::format("[{}{}] {:3.0f}%  {} {}/{}  elapsed {}  left {}",
+                     std::string(static_cast<std::size_t>(filled), '#'),
+                     std::string(static_cast<std::size_t>(kWidth - filled), '.'), 100.0 * fraction,
+                     stage, stage_done, stage_runs, format_duration(elapsed_s),
+                     format_duration(left_s));
+}
+
+WorkProgress::WorkProgress(std::FILE* out, double total_cost, int terminal)
+    : out_(out),
+      total_(total_cost),
+      terminal_(terminal < 0 ? (out != nullptr && ::isatty(::fileno(out)) != 0) : terminal != 0),
+      start_(std::chrono::steady_clock::now()) {
+  if (out_ == nullptr) return;
+  // Redraws once a second (throttled to 10 s off a terminal) so that the times move between runs.
+  ticker_ = std::jthread([this](const std::stop_token& stop) {
+    std::unique_lock lock(mutex_);
+    while (!stop.stop_requested()) {
+      wake_.wait_for(lock, stop, std::chrono::seconds(1), [] { return false; });
+      if (!stop.stop_requested()) maybe_draw_locked(false);
+    }
+  });
+}
+
+WorkProgress::~WorkProgress() {
+  ticker_.request_stop();
+  if (ticker_.joinable()) ticker_.join();
+}
+
+void WorkProgress::stage(const std::string& name,
+                         int runs,
+                         int runs_done,
+                         double skipped_cost,
+                         const std::string& line) {
+  const std::lock_guard lock(mutex_);
+  if (!line.empty()) print_locked(line);
+  stage_ = name;
+  stage_runs_ = runs;
+  stage_done_ = runs_done;
+  done_disk_ += skipped_cost;
+  maybe_draw_locked(true);
+}
+
+void WorkProgress::done(double cost, bool ran_here) {
+  const std::lock_guard lock(mutex_);
+  ++stage_done_;
+  (ran_here ? done_here_ : done_disk_) += cost;
+  drawn_latest_ = false;
+  maybe_draw_locked(false);
+}
+
+void WorkProgress::log(const std::string& line) {
+  if (out_ == nullptr) return;
+  const std::lock_guard lock(mutex_);
+  print_locked(line);
+  if (terminal_ && !finished_ && !stage_.empty()) draw_locked();
+  std::fflush(out_);
+}
+
+void WorkProgress::print_locked(const std::string& line) {
+  if (out_ == nullptr) return;
+  if (terminal_) std::fputs("\r\033[K", out_);
+  std::fprintf(out_, "%s\n", line.c_str());
+}
+
+void WorkProgress::finish() {
+  ticker_.request_stop();
+  if (ticker_.joinable()) ticker_.join();
+  if (out_ == nullptr) return;
+  const std::lock_guard lock(mutex_);
+  if (finished_) return;
+  finished_ = true;
+  if (stage_.empty()) return;  // nothing ran
+  if (!drawn_latest_) draw_locked();
+  if (terminal_) std::fputc('\n', out_);
+  std::fflush(out_);
+}
+
+void WorkProgress::maybe_draw_locked(bool force) {
+  if (out_ == nullptr || finished_ || stage_.empty()) return;
+  const auto since = std::chrono::steady_clock::now() - last_draw_;
+  const auto every = terminal_ ? std::chrono::milliseconds(200) : std::chrono::milliseconds(10000);
+  if (force || since >= every) draw_locked();
+}
+
+void WorkProgress::draw_locked() {
+  last_draw_ = std::chrono::steady_clock::now();
+  drawn_latest_ = true;
+  const double elapsed = std::chrono::duration<double>(last_draw_ - start_).count();
+  const double done = done_here_ + done_disk_;
+  // The same costs summed in another order may miss the total by a rounding error.
+  const bool all_done = !(total_ - done > 1e-9 * total_);
+  const double fraction = all_done ? 1.0 : done / total_;
+  const std::string text =
+      work_progress_text(fraction, stage_, stage_done_, stage_runs_, elapsed,
+                         remaining_seconds(all_done ? 0.0 : total_ - done, done_here_, elapsed));
+  if (terminal_) {
+    std::fprintf(out_, "\r%s\033[K", text.c_str());
+  } else {
+    std::fprintf(out_, "%s\n", text.c_str());
+  }
+  std::fflush(out_);
+}
+
 }  // namespace corlab::study
