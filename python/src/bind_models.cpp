@@ -52,7 +52,10 @@ void warn_if_outside(const restitution::Model& bound,
                      double radius_ratio) {
   const Material other = to_material(substrate, "substrate");
   const Material reduced = pair_reduced_sphere(to_material(sphere, "sphere"), other, radius_ratio);
-  for (const auto& w : restitution::validity_warnings(bound.info(), velocities, reduced, other)) {
+  auto warnings = restitution::validity_warnings(bound.info(), velocities, reduced, other);
+  if (auto w = restitution::radius_ratio_warning(bound.info(), radius_ratio); !w.empty())
+    warnings.push_back(std::move(w));
+  for (const auto& w : warnings) {
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
   }
 }

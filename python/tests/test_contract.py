@@ -86,3 +86,20 @@ def test_a_nul_in_a_config_path_is_named(tmp_path):
     with pytest.raises(ValueError, match=r"^invalid config file = '.*\\x00x': must be a path "
                        r"without a NUL byte \(byte \d+ is NUL\)$"):
         corlab.simulate(config_file=str(tmp_path) + "\x00x")
+
+
+def test_predict_refuses_speeds_from_the_speed_of_light_and_warns_beyond_the_fitted_ratio():
+    # corlab2026 and corlab2026p at 1e307 m/s gave e = -nan
+    for model in ("corlab2026", "corlab2026p"):
+        with pytest.raises(ValueError,
+                           match=r"^invalid velocity = 1e\+307: must be < 2\.99792e\+08"):
+            corlab.predict(model, "alumina_ma2023", "aluminium_ma2023", 1e307)
+        with pytest.raises(ValueError, match=r"^invalid velocity\[1\] = 1e\+307"):
+            corlab.predict(model, "alumina_ma2023", "aluminium_ma2023", np.array([5.0, 1e307]))
+    with pytest.warns(UserWarning, match=r"model 'corlab2026p' extrapolates: radius_ratio = "
+                      r"R1/R2 = 5 is beyond its fitted 1"):
+        e = corlab.predict("corlab2026p", "alumina_ma2023", "aluminium_ma2023", 5.0,
+                           radius_ratio=5.0)
+    assert 0.0 < e <= 1.0
+    e = corlab.predict("ma2023", "alumina_ma2023", "aluminium_ma2023", 5.0, radius_ratio=1e200)
+    assert np.isfinite(e)

@@ -63,6 +63,7 @@ ImpactResult simulate(const ImpactConfig& config, const SimulationControl& contr
   const Mesh mesh = build_impact_mesh(config);
   ImpactResult r = run_impact(config, mesh, control);
   r.e_n = r.e;
+  if (r.separated) r.suspect = suspect_reason(r);  // again, with every impact's e (repeats)
   return r;
 }
 
