@@ -9,9 +9,11 @@
 //   corlab dataset export out/dataset --out data/fe_restitution
 #include <fmt/core.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <string>
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
@@ -61,8 +63,12 @@ int run_export(const ExportArgs& args) {
   fmt::print("corlab: dataset {}: {} of {} design points run, {} in the fitting set", args.out,
              s.rows, s.design_points, s.included);
   for (const auto& [reason, count] : s.excluded) fmt::print(", {} excluded ({})", count, reason);
-  fmt::print("; {:.0f} CPU-s; e_error/e median {:.2g}, max {:.2g}\n", s.cpu_s, s.e_error_median,
-             s.e_error_max);
+  // no e_error in any row (a sweep without --error-estimate): said so, not "median nan"
+  fmt::print(
+      "; {:.0f} CPU-s; {}\n", s.cpu_s,
+      std::isfinite(s.e_error_median)
+          ? fmt::format("e_error/e median {:.2g}, max {:.2g}", s.e_error_median, s.e_error_max)
+          : std::string("no e_error (the sweep ran without --error-estimate)"));
   return 0;
 }
 

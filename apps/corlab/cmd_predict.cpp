@@ -138,6 +138,14 @@ void warn_outside_validity(const std::vector<restitution::Model>& models,
   }
 }
 
+// One stderr warning per model fitted to smaller radius ratios than asked (validity.hpp).
+void warn_radius_ratio(const std::vector<restitution::Model>& models, double radius_ratio) {
+  for (const auto& m : models) {
+    if (const auto w = restitution::radius_ratio_warning(m.info(), radius_ratio); !w.empty())
+      std::fprintf(stderr, "corlab: warning: %s\n", w.c_str());
+  }
+}
+
 int run_predict(const PredictOptions& o) {
   const Material sphere = parse_material_spec(o.sphere, "sphere");
   const Material substrate = parse_material_spec(o.substrate, "substrate");
@@ -170,8 +178,10 @@ int run_predict(const PredictOptions& o) {
   // k1 and the validity boxes at the pair's rho* [kg/m^3] (the sphere's own density on a flat).
   const Material reduced = pair_reduced_sphere(sphere, substrate, o.radius_ratio);
   const double rho = reduced.density;
-  require_finite_k1(velocities.front(), e_star, rho);  // k1 falls with v
+  // k1 falls with v: the slowest listed speed (a list is in the order given) bounds them all
+  require_finite_k1(*std::min_element(velocities.begin(), velocities.end()), e_star, rho);
   warn_outside_validity(models, velocities, reduced, substrate);
+  warn_radius_ratio(models, o.radius_ratio);
   std::vector<double> e(velocities.size());
   if (o.format == "json") {
     // The document of out.dump(2), written one model at a time (a million points of every model
@@ -253,7 +263,8 @@ const CommandRegistration kRegistration{Command{
                      "sphere radius [m] for the energy models (e is R-independent)");
       sub.add_option("--radius-ratio", o->radius_ratio,
                      "R1/R2, the sphere's radius over the substrate's: the substrate is a free "
-                     "second sphere at rest (0, the default: a flat) [-]");
+                     "second sphere at rest (0, the default: a flat; above 1 the sphere is the "
+                     "larger body) [-]");
       add_fe_options(sub, o->fe);
       return [o] { return is_fe_model(o->model) ? run_predict_fe_model(*o) : run_predict(*o); };
     },

@@ -1,11 +1,15 @@
 // Analytic CoR models: corlab.models(), corlab.predict(), corlab.yield_velocity().
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -51,7 +55,10 @@ void warn_if_outside(const restitution::Model& bound,
                      double radius_ratio) {
   const Material other = to_material(substrate, "substrate");
   const Material reduced = pair_reduced_sphere(to_material(sphere, "sphere"), other, radius_ratio);
-  for (const auto& w : restitution::validity_warnings(bound.info(), velocities, reduced, other)) {
+  auto warnings = restitution::validity_warnings(bound.info(), velocities, reduced, other);
+  if (auto w = restitution::radius_ratio_warning(bound.info(), radius_ratio); !w.empty())
+    warnings.push_back(std::move(w));
+  for (const auto& w : warnings) {
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
   }
 }
@@ -85,31 +92,74 @@ py::dict coefficients_dict(const restitution::Corlab2026Coefficients& k) {
   return d;
 }
 
+// A finite float from `value` (a Python number), else ValueError naming dict[key].
+double finite_number(const py::handle& value, std::string_view dict, std::string_view key) {
+  const std::string field = fmt::format("{}[\"{}\"]", dict, key);
+  double x = 0.0;
+  try {
+    x = value.cast<double>();
+  } catch (const py::cast_error&) {
+    throw_invalid(field, utf8_text(py::str(value), field), "a finite number");
+  }
+  if (!std::isfinite(x)) throw_invalid(field, x, "a finite number");
+  return x;
+}
+
 restitution::Corlab2026Coefficients coefficients_from(const py::dict& d) {
   restitution::Corlab2026Coefficients k;
   for (const auto& [name, member] : restitution::kCorlab2026Coefficients) {
     const py::str key{std::string(name)};
     if (!d.contains(key)) throw_invalid("coefficients", name, "a key of the dict (missing)");
-    k.*member = d[key].cast<double>();
+    k.*member = finite_number(d[key], "coefficients", name);
   }
   return k;
 }
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-// corlab2026_restitution over arrays of inputs (the fit's inner loop).
+// inputs[name] as a 1-D array of finite numbers of `size` elements (the first array's, named
+// `first`); ValueError naming the array otherwise (arrays of different lengths read past the end).
+Array input_column(const py::dict& inputs,
+                   std::string_view name,
+                   std::optional<std::pair<std::string_view, py::ssize_t>> first) {
+  const py::str key{std::string(name)};
+  const std::string field = fmt::format("inputs[\"{}\"]", name);
+  if (!inputs.contains(key)) throw_invalid("inputs", name, "a key of the dict (missing)");
+  Array column;
+  try {
+    column = inputs[key].cast<Array>();
+  } catch (const py::cast_error&) {
+    throw_invalid(field, utf8_text(py::str(inputs[key]), field), "an array of numbers");
+  } catch (const py::error_already_set& err) {
+    throw_invalid(field, utf8_text(py::str(inputs[key]), field),
+                  fmt::format("an array of numbers ({})", err.what()));
+  }
+  if (column.ndim() != 1) {
+    throw_invalid(fmt::format("{}.ndim", field), static_cast<double>(column.ndim()), "1");
+  }
+  if (first && column.size() != first->second) {
+    throw_invalid(fmt::format("len({})", field), static_cast<double>(column.size()),
+                  fmt::format("len(inputs[\"{}\"]) = {} (the arrays of one call have one length)",
+                              first->first, first->second));
+  }
+  for (py::ssize_t i = 0; i < column.size(); ++i) {
+    if (!std::isfinite(column.data()[i])) {
+      throw_invalid(fmt::format("{}[{}]", field, i), column.data()[i], "a finite number");
+    }
+  }
+  return column;
+}
+
+// corlab2026_restitution over arrays of inputs (the fit's inner loop): every array 1-D, of one
+// length and finite (a NaN velocity ratio returned e = 1; unequal lengths read past the end).
 py::array_t<double> corlab2026_over(const py::dict& inputs, const py::dict& coefficients) {
   const auto k = coefficients_from(coefficients);
+  const Array other_is_sphere = input_column(inputs, "other_is_sphere", std::nullopt);
+  const std::pair<std::string_view, py::ssize_t> first{"other_is_sphere", other_is_sphere.size()};
   std::vector<Array> columns;
   for (const auto& [name, member] : restitution::kCorlab2026Inputs) {
-    const py::str key{std::string(name)};
-    if (!inputs.contains(key)) throw_invalid("inputs", name, "a key of the dict (missing)");
-    columns.push_back(inputs[key].cast<Array>());
+    columns.push_back(input_column(inputs, name, first));
   }
-  if (!inputs.contains("other_is_sphere")) {
-    throw_invalid("inputs", "other_is_sphere", "a key of the dict (missing)");
-  }
-  const auto other_is_sphere = inputs["other_is_sphere"].cast<Array>();
   py::array_t<double> out(other_is_sphere.size());
   double* e = out.mutable_data();
   for (py::ssize_t i = 0; i < other_is_sphere.size(); ++i) {

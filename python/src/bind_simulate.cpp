@@ -35,7 +35,7 @@ py::array_t<double> to_numpy(const std::vector<double>& v) {
 // A setting value: text, or a number (formatted with full precision); a list only for a list key
 // (output.times), never a bool or None (ambiguous: refused, not guessed).
 std::string setting_text(const std::string& key, const py::handle& value) {
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::str>(value)) return utf8_text(value, key);
   if (value.is_none() || py::isinstance<py::bool_>(value)) {
     throw_invalid(key, py::repr(value).cast<std::string>(),
                   "a number or a string (`none` for an elastic body)");
@@ -187,7 +187,7 @@ void bind_simulate(py::module_& m) {
         if (config_file) config = fem::load_impact_config(*config_file);
         std::vector<std::string> items;
         for (const auto& [key, value] : settings) {
-          const auto name = py::str(key).cast<std::string>();
+          const auto name = utf8_text(py::str(key), "settings key");
           items.push_back(name + "=" + setting_text(name, value));
         }
         fem::apply_settings(config, items, "settings");

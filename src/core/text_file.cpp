@@ -40,6 +40,14 @@ struct Fd {
   throw_invalid(what, file.string(), constraint);
 }
 
+/// A path with a NUL byte names another file (the system reads it up to the NUL: "/tmp\0x" was
+/// read as the directory /tmp); refused as such.
+void require_no_nul(const std::filesystem::path& file, std::string_view what) {
+  if (const auto nul = file.native().find('\0'); nul != std::string::npos) {
+    refuse(file, what, fmt::format("a path without a NUL byte (byte {} is NUL)", nul));
+  }
+}
+
 /// The 1-based line of byte `offset` of `text`.
 std::size_t line_of(std::string_view text, std::size_t offset) {
   return 1 + static_cast<std::size_t>(std::count(
@@ -96,6 +104,7 @@ std::size_t invalid_utf8_offset(std::string_view text) {
 std::string read_text_file(const std::filesystem::path& file,
                            std::string_view what,
                            const TextFileRules& rules) {
+  require_no_nul(file, what);
   // O_NONBLOCK: opening a FIFO without a writer must not wait for one (it reads as empty).
   const Fd in{::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
   if (in.fd < 0) {
@@ -146,6 +155,7 @@ std::string read_text_file(const std::filesystem::path& file,
 void require_regular_file(const std::filesystem::path& file,
                           std::string_view what,
                           std::size_t max_bytes) {
+  require_no_nul(file, what);
   struct stat st {};
   if (::stat(file.c_str(), &st) != 0) {
     refuse(file, what, fmt::format("a readable file ({})", std::strerror(errno)));

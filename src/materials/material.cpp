@@ -58,8 +58,14 @@ double hertz_contact_time_factor() {
 }
 
 double pair_effective_density(double radius_ratio, double sphere_density, double density_ratio) {
-  const double r3 = radius_ratio * radius_ratio * radius_ratio;
-  return sphere_density * std::pow(1.0 + radius_ratio, 3) / (1.0 + density_ratio * r3);
+  const double r = radius_ratio;
+  if (r <= 1.0) {
+    const double r3 = r * r * r;
+    return sphere_density * std::pow(1.0 + r, 3) / (1.0 + density_ratio * r3);
+  }
+  // divided by r^3, so that a large ratio (1e200: inf / inf) stays finite, towards rho2
+  const double s = 1.0 / r;
+  return sphere_density * std::pow(1.0 + s, 3) / (s * s * s + density_ratio);
 }
 
 Material pair_reduced_sphere(const Material& sphere, const Material& other, double radius_ratio) {

@@ -307,7 +307,8 @@ void add_corlab2026p(std::vector<Registration>& r) {
                "worst -10 %, up to a damage number rho* v^2/sigma_y of 0.003; beyond it, "
                "worst -15 % (random 20 %) and +46 % (density ratio > 5)",
            .clamped_by_default = true,
-           .accurate_damage_number = kCorlab2026pAccurateDamageNumber},
+           .accurate_damage_number = kCorlab2026pAccurateDamageNumber,
+           .fitted_radius_ratio = 1.0},
        [](const ImpactPair&, bool, const FactoryContext& ctx) -> Model::Kernel {
          return corlab2026p(ctx.impactor, ctx.substrate, ctx.options.radius_ratio);
        }});
@@ -391,7 +392,12 @@ Model make_model(std::string_view name,
                  const Material& substrate,
                  const ModelOptions& options) {
   const ModelInfo& info = model_info(name);
-  require_positive("radius", options.radius, "[m]");
+  // e does not depend on R; a radius of 1e-300 or 1e300 m gave e = 0 (jg2) in round-off.
+  if (!(options.radius >= kMinModelRadius && options.radius <= kMaxModelRadius)) {
+    throw_invalid("radius", options.radius,
+                  fmt::format("in [{:g}, {:g}] [m] (a nanometre to a kilometre)", kMinModelRadius,
+                              kMaxModelRadius));
+  }
   make_impact_pair(sphere, substrate, info.name);  // validates both materials first
   // The pair's Hertz impact: a sphere of density rho* on a flat.
   const Material reduced = pair_reduced_sphere(sphere, substrate, options.radius_ratio);

@@ -67,4 +67,13 @@ std::vector<std::string> validity_warnings(const ModelInfo& info,
   return out;
 }
 
+std::string radius_ratio_warning(const ModelInfo& info, double radius_ratio) {
+  if (!info.fitted_radius_ratio || !(radius_ratio > *info.fitted_radius_ratio)) return {};
+  return fmt::format(
+      "model '{}' extrapolates: radius_ratio = R1/R2 = {:g} is beyond its fitted {:g} (the "
+      "sphere is the larger body; to stay in the fitted range give the other body as the "
+      "sphere and R2/R1 = {:.4g})",
+      info.name, radius_ratio, *info.fitted_radius_ratio, 1.0 / radius_ratio);
+}
+
 }  // namespace corlab::restitution

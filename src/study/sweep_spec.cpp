@@ -16,8 +16,10 @@
 #include "corlab/core/text.hpp"
 #include "corlab/core/text_file.hpp"
 #include "spec_error.hpp"
+#include "study/sweep_spec_detail.hpp"
 
 namespace corlab::study {
+
 namespace {
 
 constexpr std::string_view kTopLevel = "[study], [base], [grid], [[cases]]";
@@ -69,6 +71,35 @@ std::string value_text(const toml::node& node, const SpecError& error, const std
   if (const auto* b = node.as_boolean()) return b->get() ? "true" : "false";
   error.fail(where, "must be a number, a string or a boolean");
 }
+
+bool valid_name(std::string_view name) {
+  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
+           c == '-';
+  });
+}
+
+// A grid is a product: a few keys make millions of runs. Refuse more than [study] max_runs before
+// anything is read or expanded (the count in double: it may not fit an integer). `lengths` are the
+// grid's array lengths.
+void check_run_count(const SweepSpec& spec,
+                     const SpecError& error,
+                     const std::vector<std::size_t>& lengths = {}) {
+  double count = spec.cases.empty() ? 1.0 : static_cast<double>(spec.cases.size());
+  for (const std::size_t n : lengths) count *= static_cast<double>(n);
+  if (count > static_cast<double>(spec.max_runs)) {
+    error.fail(
+        "",
+        fmt::format("expands to {:.0f} runs, more than [study] max_runs = {} (default "
+                    "{}, at most {}){}",
+                    count, spec.max_runs, kDefaultMaxRuns, kMaxRunsLimit,
+                    count <= static_cast<double>(kMaxRunsLimit)
+                        ? fmt::format("; set max_runs = {:.0f} in [study] to run them all", count)
+                        : std::string("; split the study")));
+  }
+}
+
+}  // namespace
 
 std::string quoted_key(std::string_view key) { return fmt::format("\"{}\"", key); }
 
@@ -127,111 +158,6 @@ std::string settings_summary(const Settings& settings) {
   return text;
 }
 
-bool valid_name(std::string_view name) {
-  return !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '-';
-  });
-}
-
-/// Validates every setting where it was written, then every run; throws on the first problem.
-void validate_spec(const SweepSpec& spec,
-                   const SpecError& error,
-                   const std::vector<std::vector<std::string>>& case_where,
-                   const std::vector<std::string>& base_where) {
-  // 1. [base] alone over the defaults.
-  fem::ImpactConfig base_config;
-  const Settings base_ordered = application_order(spec.base);
-  for (const Setting& setting : base_ordered) {
-    const std::string& key = setting.first;
-    const std::string& value = setting.second;
-    const auto pos = std::find_if(spec.base.begin(), spec.base.end(),
-                                  [&key](const Setting& s) { return s.first == key; });
-    const std::string& where = base_where[static_cast<std::size_t>(pos - spec.base.begin())];
-    try {
-      fem::apply_setting(base_config, key, value);
-    } catch (const InputError& err) {
-      error.rethrow_at(where, key, value, err);
-    }
-  }
-  try {
-    fem::validate(base_config);
-  } catch (const InputError& err) {
-    // Name the [base] key the error is about, if it is one of them.
-    for (std::size_t i = 0; i < spec.base.size(); ++i) {
-      const auto& [key, value] = spec.base[i];
-      if (err.field() == key) error.rethrow_at(base_where[i], key, value, err);
-    }
-    error.fail("[base]", err.what());
-  }
-  // 2. Every case value and every grid value on its own over [base].
-  auto check_one = [&](const std::string& where, const std::string& key, const std::string& value) {
-    fem::ImpactConfig config = base_config;
-    try {
-      fem::apply_setting(config, key, value);
-      fem::validate(config);
-    } catch (const InputError& err) {
-      error.rethrow_at(where, key, value, err);
-    }
-  };
-  for (std::size_t c = 0; c < spec.cases.size(); ++c) {
-    for (std::size_t i = 0; i < spec.cases[c].size(); ++i) {
-      check_one(case_where[c][i], spec.cases[c][i].first, spec.cases[c][i].second);
-    }
-  }
-  for (const auto& [key, values] : spec.grid) {
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      check_one(fmt::format("grid.{}[{}]", quoted_key(key), i), key, values[i]);
-    }
-  }
-  // 3. Every run (combinations), and no two identical runs.
-  std::map<std::string, std::size_t> seen;
-  const auto points = grid_points(spec);
-  const std::vector<Settings> cases =
-      spec.cases.empty() ? std::vector<Settings>{Settings{}} : spec.cases;
-  std::size_t index = 0;
-  for (const Settings& case_settings : cases) {
-    for (const auto& point : points) {
-      const Settings settings = merged(spec, case_settings, point);
-      const std::string id = case_id(settings);
-      fem::ImpactConfig config;
-      try {
-        apply_settings(config, settings);
-        fem::validate(config);
-      } catch (const InputError& err) {
-        error.fail(fmt::format("run {} ({})", index, settings_summary(settings)), err.what());
-      }
-      if (const auto [it, inserted] = seen.emplace(id, index); !inserted) {
-        error.fail("", fmt::format("runs {} and {} have identical settings ({})", it->second, index,
-                                   settings_summary(settings)));
-      }
-      ++index;
-    }
-  }
-}
-
-// A grid is a product: a few keys make millions of runs. Refuse more than [study] max_runs before
-// anything is read or expanded (the count in double: it may not fit an integer). `lengths` are the
-// grid's array lengths.
-void check_run_count(const SweepSpec& spec,
-                     const SpecError& error,
-                     const std::vector<std::size_t>& lengths = {}) {
-  double count = spec.cases.empty() ? 1.0 : static_cast<double>(spec.cases.size());
-  for (const std::size_t n : lengths) count *= static_cast<double>(n);
-  if (count > static_cast<double>(spec.max_runs)) {
-    error.fail(
-        "",
-        fmt::format("expands to {:.0f} runs, more than [study] max_runs = {} (default "
-                    "{}, at most {}){}",
-                    count, spec.max_runs, kDefaultMaxRuns, kMaxRunsLimit,
-                    count <= static_cast<double>(kMaxRunsLimit)
-                        ? fmt::format("; set max_runs = {:.0f} in [study] to run them all", count)
-                        : std::string("; split the study")));
-  }
-}
-
-}  // namespace
-
 void apply_settings(fem::ImpactConfig& config, const Settings& settings) {
   for (const auto& [key, value] : application_order(settings)) {
     fem::apply_setting(config, key, value);
@@ -241,16 +167,14 @@ void apply_settings(fem::ImpactConfig& config, const Settings& settings) {
 std::string case_id(const Settings& settings) {
   Settings sorted = settings;
   std::sort(sorted.begin(), sorted.end());
-  // FNV-1a, 64 bit: stable across platforms and runs (std::hash is not).
-  std::uint64_t hash = fnv1a64("");
-  auto feed = [&hash](std::string_view text) { hash = fnv1a64(text, hash); };
+  std::string text;
   for (const auto& [k, v] : sorted) {
-    feed(k);
-    feed("=");
-    feed(v);
-    feed("\n");
+    text += k;
+    text += '=';
+    text += v;
+    text += '\n';
   }
-  return fmt::format("c{:010x}", hash >> 24);
+  return fmt::format("c{:010x}", fnv1a64(text) >> 24);
 }
 
 std::vector<SweepCase> SweepSpec::expand() const {
@@ -479,10 +403,11 @@ SweepSpec parse_sweep_spec(std::string_view toml_text, std::string_view origin) 
   spec.toml_text = std::string(toml_text);
   check_top_level(root, error);
   read_study(root, error, spec);
-  const std::vector<std::string> base_where = read_base(root, error, spec);
-  const std::vector<std::vector<std::string>> case_where = read_cases(root, error, spec);
+  SpecPlaces places;
+  places.base = read_base(root, error, spec);
+  places.cases = read_cases(root, error, spec);
   read_grid(root, error, spec);
-  validate_spec(spec, error, case_where, base_where);
+  validate_spec(spec, error, places);
   return spec;
 }
 

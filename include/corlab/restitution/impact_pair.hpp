@@ -25,7 +25,11 @@ ImpactPair make_impact_pair(const Material& sphere,
                             const Material& substrate,
                             std::string_view model);
 
-/// Throws InputError "invalid velocity = <v>: must be > 0 [m/s]" unless v is finite and > 0.
+/// Largest speed a model is evaluated at [m/s], excluded: the speed of light.
+inline constexpr double kMaxEvaluatedVelocity = 299'792'458.0;
+
+/// Throws InputError "invalid velocity = <v>: must be > 0 [m/s]" unless v is finite, > 0 and
+/// below kMaxEvaluatedVelocity.
 void require_velocity(double velocity);
 
 /// Same for each element; the message names the index: "invalid velocity[3] = nan: ...".

@@ -53,6 +53,9 @@ struct ModelInfo {
   /// held-out errors were measured within 2 % RMS (`corlab predict` warns above); empty = none
   /// measured.
   std::optional<double> accurate_damage_number = std::nullopt;
+  /// Largest radius ratio R1/R2 of the data the model was fitted to [-] (`corlab predict` warns
+  /// above); empty = the model reads the pair only through rho* (exact for any R1/R2).
+  std::optional<double> fitted_radius_ratio = std::nullopt;
 };
 
 /// The model's description as JSON: name, title, citation, equation, validity, status,

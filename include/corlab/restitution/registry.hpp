@@ -25,12 +25,19 @@
 
 namespace corlab::restitution {
 
+/// Accepted sphere radii of ModelOptions::radius [m]: e does not depend on R, but the energy
+/// models' intermediate values leave double range beyond these.
+inline constexpr double kMinModelRadius = 1e-9;
+inline constexpr double kMaxModelRadius = 1e3;
+
 /// Options that apply across models.
 struct ModelOptions {
   std::optional<bool> clamp;  ///< clamp e to [0, 1]; empty = the model's default
   double radius = 1.0;        ///< sphere radius R [m] (energy models only; e is R-independent)
   /// R1/R2 [-] of a sphere hitting a free second sphere of the substrate's material at rest;
-  /// 0 (the default) is a flat. A sphere-on-flat model sees the pair as a sphere of density
+  /// 0 (the default) is a flat; above 1 the sphere is the larger body (accepted: the same impact
+  /// as the smaller body hitting the larger; corlab2026p warns beyond its fitted R1/R2 <= 1,
+  /// validity.hpp). A sphere-on-flat model sees the pair as a sphere of density
   /// rho* = 3 m*/(4 pi R*^3) on a flat (pair_effective_density, material.hpp), the same Hertz
   /// impact; corlab2026p reads the pair whole (corlab2026p.hpp).
   double radius_ratio = 0.0;

@@ -42,4 +42,10 @@ std::vector<std::string> validity_warnings(const ModelInfo& info,
                                            const Material& sphere,
                                            const Material& substrate);
 
+/// The warning for a radius ratio R1/R2 [-] beyond the data `info` was fitted to (R1/R2 > 1 is a
+/// sphere larger than the free sphere it hits: the same impact as the smaller one hitting the
+/// larger, with the bodies' roles swapped; rho* is symmetric, the fitted shares are not); empty
+/// when within it or the model has no such bound.
+std::string radius_ratio_warning(const ModelInfo& info, double radius_ratio);
+
 }  // namespace corlab::restitution

@@ -166,6 +166,16 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
       "refuse a run estimated to need more time steps (raise it to run anyway)",
       +[](ImpactConfig& c) { return &c.solver.max_steps; }));
   t.push_back(entry(
+      "solver.max_elements", "[-]", closed(1.0, 1e9),
+      "refuse, before meshing, a run whose mesh is estimated to have more elements (raise it to "
+      "run anyway)",
+      +[](ImpactConfig& c) { return &c.solver.max_elements; }));
+  t.push_back(entry(
+      "solver.max_element_steps", "[-]", closed(1.0, 1e16),
+      "refuse, before meshing, a run estimated to need more element updates (elements x "
+      "expected steps; raise it to run anyway)",
+      +[](ImpactConfig& c) { return &c.solver.max_element_steps; }));
+  t.push_back(entry(
       "solver.subcycling_levels", "[-]", closed(0.0, 6.0, "2^6 = 64 base steps per major cycle"),
       "element subcycling: elements step at up to 2^this x the base step (0 = off; axisymmetric "
       "model)",

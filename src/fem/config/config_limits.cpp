@@ -7,8 +7,10 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/units.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
@@ -37,16 +39,21 @@ void check_plastic_body(const Material& m, std::string_view body) {
   }
 }
 
+// With either model: an h_max below h_min left the 3-D mesh uniform at the contact size (15x
+// the elements, accepted while the axisymmetric model refused it).
+void check_sizes(const ImpactConfig& c) {
+  if (!(c.mesh.h_max >= c.mesh.h_min)) {
+    throw_invalid("mesh.h_max", c.mesh.h_max,
+                  fmt::format(">= mesh.h_min = {:g} [m]", c.mesh.h_min));
+  }
+}
+
 void check_geometry(const ImpactConfig& c) {
   if (c.impact.gap > c.sphere.radius) {
     throw_invalid("impact.gap", c.impact.gap,
                   fmt::format("<= sphere.radius = {:g} [m] (the gap is crossed in exact free "
                               "flight; a wider one only loses precision)",
                               c.sphere.radius));
-  }
-  if (!(c.mesh.h_max >= c.mesh.h_min)) {
-    throw_invalid("mesh.h_max", c.mesh.h_max,
-                  fmt::format(">= mesh.h_min = {:g} [m]", c.mesh.h_min));
   }
   if (c.mesh.transitions != 0.0 && c.mesh.transitions != 1.0) {
     throw_invalid("mesh.transitions", c.mesh.transitions, "0 (off) or 1 (on)");
@@ -82,6 +89,8 @@ void check_geometry(const ImpactConfig& c) {
   const double min_size = kMinSubstrateContactRadii * predicted_contact_radius(c);
   for (const auto& [key, value] : {std::pair{"substrate.radius", c.substrate.radius},
                                    std::pair{"substrate.depth", c.substrate.depth}}) {
+    // A second sphere has a radius, no depth: the unused key is not checked (as a rigid flat's).
+    if (sphere_target(c) && std::string_view(key) == "substrate.depth") continue;
     if (value < min_size) {
       throw_invalid(
           key, value,
@@ -174,6 +183,104 @@ void check_model(const ImpactConfig& c) {
   }
 }
 
+/// Element size at distance d from the contact [m]: h within `zone`, then growing by
+/// (growth - 1) per unit length (each element `growth` times its neighbour) up to h_max.
+struct Grading {
+  double h = 0.0;
+  double zone = 0.0;
+  double growth = 1.0;
+  double h_max = 0.0;
+  double at(double d) const {
+    return d <= zone ? h : std::min(h_max, h + (growth - 1.0) * (d - zone));
+  }
+};
+
+/// The integral of measure(d) / h(d)^dim over d in (0, extent]: the elements of a body whose
+/// part at distance d from the contact has length (2-D) or area (3-D) measure(d). Midpoint rule
+/// on a log-spaced grid from h/100 (the zone in a few uniform steps): 0.1 % of the exact value.
+template <class Measure>
+double graded_count(double extent, const Grading& g, int dim, Measure measure) {
+  constexpr int kUniform = 64;
+  constexpr int kLog = 512;
+  double sum = 0.0;
+  auto add = [&](double a, double b) {
+    const double d = 0.5 * (a + b);
+    sum += measure(d) / std::pow(g.at(d), dim) * (b - a);
+  };
+  const double inner = std::min(extent, g.zone);
+  for (int i = 0; i < kUniform; ++i) add(inner * i / kUniform, inner * (i + 1) / kUniform);
+  if (extent <= inner) return sum;
+  const double ratio = std::pow(extent / inner, 1.0 / kLog);
+  for (double a = inner; a < extent * (1.0 - 1e-12); a *= ratio)
+    add(a, std::min(a * ratio, extent));
+  return sum;
+}
+
+/// Elements of a sphere of radius r graded from its lowest point: its axisymmetric section (the
+/// half disc r >= 0) in 2-D, its half ball (y >= 0) in 3-D. A circle of radius d about the
+/// lowest point stays in the ball where cos(phi) >= d / 2r (phi from the axis).
+double sphere_elements(double r, const Grading& g, int dim) {
+  return graded_count(2.0 * r, g, dim, [r, dim](double d) {
+    const double c = std::min(1.0, d / (2.0 * r));
+    return dim == 2 ? d * std::acos(c) : units::kPi * d * d * (1.0 - c);
+  });
+}
+
+/// Elements of the axisymmetric flat block (width w, depth depth) with transitions: the quarter
+/// circle of radius d about the contact corner inside the rectangle.
+double block_elements_2d(double w, double depth, const Grading& g) {
+  return graded_count(std::hypot(w, depth), g, 2, [w, depth](double d) {
+    const double lo = std::acos(std::min(1.0, w / d));
+    const double hi = std::asin(std::min(1.0, depth / d));
+    return d * std::max(0.0, hi - lo);
+  });
+}
+
+/// Intervals of a 1-D grading of `length` (graded_positions).
+double intervals(double length, double h, double zone, double growth, double h_max) {
+  return static_cast<double>(graded_positions(length, h, zone, growth, h_max).size() - 1);
+}
+
+/// Steps to the expected end of the run: run_cost.hpp's rule (1.3 Hertz contact times and 4
+/// wave transits of the sphere and of a second sphere; 1.5 contact times in 3-D) over the step
+/// `dt`, for every impact.
+double expected_steps(const ImpactConfig& c, double dt) {
+  const double t_hertz = hertz_reference(c).contact_time;
+  double t = uses_3d_model(c) ? 1.5 * t_hertz : 1.3 * t_hertz;
+  if (!uses_3d_model(c)) {
+    double t_wave = 4.0 * c.sphere.radius / c.sphere.material.dilatational_wave_speed();
+    if (sphere_target(c)) {
+      t_wave = std::max(t_wave,
+                        4.0 * c.substrate.radius / c.substrate.material.dilatational_wave_speed());
+    }
+    t += t_wave;
+  }
+  return t / dt * c.impact.repeats;
+}
+
+// The work caps, from the mesh's sizes before it is built (a 10 m second sphere meshed 2.8
+// million elements and ran past 20 min).
+void check_work(const ImpactConfig& c) {
+  if (!c.mesh.file.empty()) return;  // element sizes unknown before reading the file
+  const RunEstimate e = estimate_run(c);
+  const auto raise = [](std::string_view key, double estimate, double cap, std::string_view what) {
+    throw InputError(fmt::format(
+        "invalid {} = {:.4g}: must be >= the {} estimated before meshing, {:.3g}; check "
+        "sphere.radius, substrate.radius/depth, mesh.h_min, mesh.h_max and mesh.growth, or "
+        "raise {} to run it",
+        key, cap, what, estimate, key));
+  };
+  if (e.elements > static_cast<double>(c.solver.max_elements)) {
+    raise("solver.max_elements", e.elements, static_cast<double>(c.solver.max_elements),
+          "element count");
+  }
+  if (e.element_steps() > c.solver.max_element_steps) {
+    raise("solver.max_element_steps", e.element_steps(), c.solver.max_element_steps,
+          fmt::format("work (elements x expected steps: {:.3g} x {:.3g})", e.elements,
+                      e.expected_steps));
+  }
+}
+
 void check_step_budget(const ImpactConfig& c) {
   if (!c.mesh.file.empty()) return;  // element sizes unknown before reading the file
   const RunEstimate e = estimate_run(c);
@@ -208,16 +315,52 @@ RunEstimate estimate_run(const ImpactConfig& c) {
                                           : 20.0 * hertz_reference(c).contact_time;
   e.simulated_time *= c.impact.repeats;
   e.steps = e.simulated_time / e.time_step;
+  e.elements = estimate_elements(c);
+  e.expected_steps = expected_steps(c, e.time_step);
   return e;
+}
+
+double estimate_elements(const ImpactConfig& c) {
+  if (uses_3d_model(c)) {
+    const HexMeshOptions o = hex_mesh_options_for(c);
+    const Grading g{o.h_contact, o.zone_radius, o.growth, o.h_max};
+    double n = sphere_elements(o.sphere_radius, g, 3);
+    if (o.block) {  // a tensor grid: x both ways from the fine band, y from 0, z down
+      const double w = o.block_half_width;
+      const double right = std::min(o.zone_radius + o.travel, 0.9 * w);
+      n += (intervals(w, o.h_contact, o.zone_radius, o.growth, o.h_max) +
+            intervals(w, o.h_contact, right, o.growth, o.h_max)) *
+           intervals(w, o.h_contact, o.zone_radius, o.growth, o.h_max) *
+           intervals(o.block_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
+    }
+    return n;
+  }
+  const MeshOptions o = mesh_options_for(c);
+  const Grading g{o.h_contact, o.zone_radius, o.growth, o.h_max};
+  double n = sphere_mesh_elements(o);
+  if (o.target == SubstrateShape::kSphere) {
+    MeshOptions target = o;
+    target.sphere_radius = o.target_radius;
+    n += sphere_mesh_elements(target);
+  }
+  if (o.target == SubstrateShape::kFlat) {
+    n += o.transitions
+             ? block_elements_2d(o.substrate_radius, o.substrate_depth, g)
+             : intervals(o.substrate_radius, o.h_contact, o.zone_radius, o.growth, o.h_max) *
+                   intervals(o.substrate_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
+  }
+  return n;
 }
 
 void validate_limits(const ImpactConfig& config) {
   check_plastic_body(config.sphere.material, "sphere");
   if (!rigid_target(config)) check_plastic_body(config.substrate.material, "substrate");
+  check_sizes(config);
   check_model(config);
   if (!uses_3d_model(config)) check_geometry(config);
   check_solver(config);
   check_step_budget(config);
+  check_work(config);
 }
 
 }  // namespace corlab::fem

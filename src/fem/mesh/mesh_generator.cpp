@@ -95,6 +95,10 @@ MeshOptions mesh_options_for(const ImpactConfig& config) {
   return o;
 }
 
+double sphere_mesh_elements(const MeshOptions& options) {
+  return meshing::sphere_block_elements(options);
+}
+
 Mesh generate_impact_mesh(const MeshOptions& options) {
   validate(options);
   Mesh mesh;

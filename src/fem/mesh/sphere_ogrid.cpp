@@ -341,6 +341,14 @@ std::vector<Point> points_at(const std::vector<Point>& pts, const std::vector<st
 
 }  // namespace
 
+double sphere_block_elements(const MeshOptions& o) {
+  const SphereLayout s = sphere_layout(o);
+  const auto ns = static_cast<double>(s.ns);
+  const auto nt = static_cast<double>(s.nt);
+  const auto nr = static_cast<double>(fit_core_right(s, o).nr);
+  return nt * (2.0 * ns + nr) + ns * nr;  // bottom, top and right rings; the core
+}
+
 void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh) {
   const SphereLayout s = sphere_layout(o);
   const CoreRight core = fit_core_right(s, o);

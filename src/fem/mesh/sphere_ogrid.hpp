@@ -15,4 +15,8 @@ namespace corlab::fem::meshing {
 /// mesh.sphere_surface_nodes: from the lowest point up to the first node past the equator.
 void generate_sphere(const MeshOptions& o, MeshBuilder& builder, Mesh& mesh);
 
+/// The O-grid's elements without transitions (each block a full tensor grid), from its 1-D
+/// distributions alone (no node is built): an upper bound of generate_sphere's count [-].
+double sphere_block_elements(const MeshOptions& o);
+
 }  // namespace corlab::fem::meshing

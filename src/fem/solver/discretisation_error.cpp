@@ -10,6 +10,7 @@
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/solver/error_bar.hpp"
+#include "corlab/fem/solver/run_quality.hpp"
 
 namespace corlab::fem {
 
@@ -86,6 +87,7 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   fine.e_t_error = error_bar(kDefaultErrorBar, e_t, ratios);
   if (std::isfinite(fine.e_t)) fine.omega_error = error_bar(kDefaultErrorBar, omega, ratios);
   if (!std::isfinite(fine.e_error)) fine.e_error_reason = reason;
+  fine.suspect = suspect_reason(fine);  // e above 1 is now judged against its error bar
   return fine;
 }
 

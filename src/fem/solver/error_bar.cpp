@@ -213,7 +213,14 @@ double error_bar(std::string_view name, std::span<const double> e, std::span<con
     throw_invalid("error bar grids", std::to_string(h.size()),
                   "one mesh ratio per value (" + std::to_string(e.size()) + " values)");
   }
-  if (!all_finite(e) || !all_finite(h) || e.empty() || h[0] != 1.0) return kNaN;
+  // The ratios are the caller's mesh sizes, not results: one that is not a size is refused (a
+  // ratio of 0 gave a number); the values may be a failed run's NaN.
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const std::string field = "error bar ratios[" + std::to_string(i) + "]";
+    if (i == 0 && h[0] != 1.0) throw_invalid(field, h[0], "1 (the run's own mesh first)");
+    require_positive(field, h[i], "[-] (a mesh size over the run's own)");
+  }
+  if (!all_finite(e) || e.empty()) return kNaN;
   if (name == "scatter") return scatter_bar(e, h);
   if (name == "two_grid") return two_grid_bar(e, h);
   if (name == "least_squares") return least_squares_bar(e, h);

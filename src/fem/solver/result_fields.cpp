@@ -82,9 +82,11 @@ FieldValue wall_time(const FieldInput& in) {
 
 double e_star(const FieldInput& in) { return contact_effective_modulus(*in.config); }
 
-// The substrate's yield stress [Pa]; NaN for an elastic substrate and for the rigid flat.
+// The yield stress of the body that yields [Pa]: the substrate's; on the rigid flat, where only
+// the sphere can yield, the sphere's (it was NaN, with k2, for a yielding sphere). NaN when that
+// body is elastic (documented in the field's description).
 double substrate_yield_stress(const FieldInput& in) {
-  if (rigid_target(*in.config)) return kNan;
+  if (rigid_target(*in.config)) return in.config->sphere.material.yield_stress.value_or(kNan);
   return in.config->substrate.material.yield_stress.value_or(kNan);
 }
 
@@ -198,12 +200,15 @@ const std::array kFields{
             "effective modulus (Ma et al. 2023 eq. 3)",
             [](const FieldInput& in) -> FieldValue { return e_star(in); }),
     derived("k1", "-", "E* / (rho v^2) (Ma et al. 2023 eq. 5; two spheres: rho*)", &k1_of),
-    derived("k2", "-", "sigma_y / E* (Ma et al. 2023 eq. 6; nan if elastic)", &k2_of),
+    derived("k2", "-", "sigma_y / E* (Ma et al. 2023 eq. 6; nan if that body is elastic)", &k2_of),
     derived("sphere_rho",
             "kg/m^3",
             "sphere density",
             [](const FieldInput& in) -> FieldValue { return in.config->sphere.material.density; }),
-    derived("sigma_y", "Pa", "substrate yield stress (nan if elastic)", &substrate_yield),
+    derived("sigma_y",
+            "Pa",
+            "substrate yield stress; on the rigid flat the sphere's (nan if that body is elastic)",
+            &substrate_yield),
     derived("velocity",
             "m/s",
             "impact velocity",

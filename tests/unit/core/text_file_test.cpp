@@ -118,6 +118,16 @@ TEST(ReadTextFile, RefusesNonUtf8AndNulBytesNamingTheLine) {
   EXPECT_NO_THROW((void)read_text_file(dir / "utf8.csv", "results file"));
 }
 
+// Issue 42: a path with a NUL byte was read up to the NUL ("/tmp\0x": "it is a directory").
+TEST(ReadTextFile, APathWithANulByteIsRefusedAsSuch) {
+  const std::filesystem::path path(std::string("/tmp\0x", 6));
+  EXPECT_EQ(
+      input_error_message([&] { (void)read_text_file(path, "config file"); }),
+      "invalid config file = '/tmp\\x00x': must be a path without a NUL byte (byte 4 is NUL)");
+  EXPECT_EQ(input_error_message([&] { require_regular_file(path, "mesh.file", 1); }),
+            "invalid mesh.file = '/tmp\\x00x': must be a path without a NUL byte (byte 4 is NUL)");
+}
+
 TEST(InvalidUtf8Offset, FindsTheFirstBadByte) {
   EXPECT_EQ(invalid_utf8_offset("plain ascii"), std::string_view::npos);
   EXPECT_EQ(invalid_utf8_offset("\xC3\xA9t\xC3\xA9"), std::string_view::npos);

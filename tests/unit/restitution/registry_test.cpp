@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "corlab/core/error.hpp"
 #include "corlab/materials/material.hpp"
 #include "corlab/restitution/corlab2026p.hpp"
+#include "corlab/restitution/impact_pair.hpp"
 #include "pairs.hpp"
 #include "support/input_errors.hpp"
 
@@ -156,7 +159,7 @@ TEST(Registry, BadMaterialMessages) {
       [&] {
         (void)make_model("jg1", alumina(), aluminium(), {.clamp = std::nullopt, .radius = 0.0});
       },
-      "invalid radius = 0: must be > 0 [m]");
+      "invalid radius = 0: must be in [1e-09, 1000] [m] (a nanometre to a kilometre)");
 }
 
 TEST(Registry, ScalarAndVectorAgree) {
@@ -275,12 +278,65 @@ TEST(RegistryProperties, TendsToOneForLargeYieldStress) {
   }
 }
 
+// Every accepted speed gives a number, for every pair of the test materials; speeds from the
+// speed of light on are refused (corlab2026 and corlab2026p gave -nan at 1e307 m/s, issue 42).
 TEST(RegistryProperties, ExtremeVelocitiesNeverNaN) {
-  const double extremes[] = {1e-300, 1e-12, 1e6, 1e12, 1e150, 1e300};
+  const double extremes[] = {1e-300, 1e-12, 1e6, 1e8, 2.99e8};
   for (const auto& name : model_names()) {
-    for (bool clamp : {true, false}) {
-      const Model m = make_model(name, alumina(), steel(), {.clamp = clamp, .radius = 1.0});
-      for (double v : extremes) EXPECT_FALSE(std::isnan(m.cor(v))) << name << " v=" << v;
+    for (const auto& [a, b] : {std::pair{alumina(), steel()}, std::pair{steel(), aluminium()},
+                               std::pair{alumina(), aluminium()}}) {
+      for (bool clamp : {true, false}) {
+        const Model m = make_model(name, a, b, {.clamp = clamp, .radius = 1.0});
+        for (double v : extremes) EXPECT_FALSE(std::isnan(m.cor(v))) << name << " v=" << v;
+        for (double v : {kMaxEvaluatedVelocity, 1e150, 1e307}) {
+          EXPECT_THROW((void)m.cor(v), InputError) << name << " v=" << v;
+        }
+      }
+    }
+  }
+  expect_input_error(
+      [] { (void)make_model("corlab2026", alumina(), steel()).cor(1e307); },
+      "invalid velocity = 1e+307: must be < 2.99792e+08 [m/s] (the speed of light; the models "
+      "warn above 1000 m/s)");
+}
+
+// Issue 42: jg2 gave e = 0 for R = 1e-300 m and 1e300 m, though e does not depend on R.
+TEST(Registry, RadiusIsBounded) {
+  for (const double r : {1e-9, 1e-3, 1.0, 1e3}) {
+    EXPECT_NEAR(
+        make_model("jg2", alumina(), aluminium(), {.clamp = std::nullopt, .radius = r}).cor(5.0),
+        make_model("jg2", alumina(), aluminium()).cor(5.0), 1e-12)
+        << r;
+  }
+  for (const double r : {1e-300, 1e-10, 2e3, 1e300}) {
+    EXPECT_THROW(
+        (void)make_model("jg2", alumina(), aluminium(), {.clamp = std::nullopt, .radius = r}),
+        InputError)
+        << r;
+  }
+  expect_input_error(
+      [] {
+        (void)make_model("jg2", alumina(), aluminium(), {.clamp = std::nullopt, .radius = 1e300});
+      },
+      "invalid radius = 1e+300: must be in [1e-09, 1000] [m] (a nanometre to a "
+      "kilometre)");
+}
+
+// Issue 42: R1/R2 above 1 (the sphere is the larger body) is computed, a huge one too (1e200 was
+// "invalid sphere.rho = -nan"), and rho* tends to the second sphere's density.
+TEST(Registry, LargeRadiusRatiosStayFinite) {
+  const Material a = alumina();
+  const Material b = aluminium();
+  EXPECT_NEAR(pair_effective_density(1e200, a.density, a.density / b.density), b.density,
+              1e-9 * b.density);
+  EXPECT_NEAR(pair_effective_density(2.0, a.density, a.density / b.density),
+              a.density * 27.0 / (1.0 + 8.0 * a.density / b.density), 1e-9 * a.density);
+  for (const double r : {5.0, 1e6, 1e200}) {
+    for (const auto& name : model_names()) {
+      const double e =
+          make_model(name, a, b, {.clamp = std::nullopt, .radius = 1.0, .radius_ratio = r})
+              .cor(5.0);
+      EXPECT_TRUE(std::isfinite(e)) << name << " r=" << r;
     }
   }
 }

@@ -85,5 +85,18 @@ TEST(ValidityWarnings, ADamageNumberAboveTheMeasuredAccuracy) {
   EXPECT_TRUE(validity_warnings(model_info("corlab2026"), speeds, steel(5e8), steel(5e8)).empty());
 }
 
+// Issue 42: `predict --radius-ratio 5` was accepted silently; the model fitted to R1/R2 <= 1
+// says it extrapolates (and how to stay in range), the others (rho* only) need not.
+TEST(ValidityWarnings, ARadiusRatioBeyondTheFittedOne) {
+  EXPECT_EQ(
+      radius_ratio_warning(model_info("corlab2026p"), 5.0),
+      "model 'corlab2026p' extrapolates: radius_ratio = R1/R2 = 5 is beyond its fitted 1 (the "
+      "sphere is the larger body; to stay in the fitted range give the other body as the "
+      "sphere and R2/R1 = 0.2)");
+  EXPECT_EQ(radius_ratio_warning(model_info("corlab2026p"), 1.0), "");
+  EXPECT_EQ(radius_ratio_warning(model_info("corlab2026p"), 0.0), "");
+  EXPECT_EQ(radius_ratio_warning(model_info("ma2023"), 1e6), "");
+}
+
 }  // namespace
 }  // namespace corlab::restitution

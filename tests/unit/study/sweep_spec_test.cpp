@@ -234,6 +234,67 @@ TEST(SweepSpec, EveryBadSpecGivesOneClearLine) {
       << unknown_key;
 }
 
+// Issue 42: each run is validated as `corlab simulate` would, all of its keys together: keys
+// that are only valid together (friction with an angle, h_max with a finer h_min) are accepted in
+// a grid or one case, and a combination that is invalid names its run.
+TEST(SweepSpec, EachRunIsValidatedWithAllOfItsKeys) {
+  const std::string head = "[study]\nname = \"t\"\n";
+  const auto grid =
+      parse_sweep_spec(head +
+                           "[base]\n\"mesh.h_min\" = 1e-3\n[grid]\n\"impact.angle\" = "
+                           "[30, 45]\n\"contact.friction\" = [0.2, 0.5]\n",
+                       "t.toml");
+  EXPECT_EQ(grid.expand().size(), 4u);
+  const auto one_case = parse_sweep_spec(
+      head +
+          "[[cases]]\n\"impact.angle\" = 30\n\"contact.friction\" = 0.3\n\"mesh.h_min\" = "
+          "1e-3\n[[cases]]\n\"mesh.h_min\" = 1e-4\n\"mesh.h_max\" = 2e-4\n",
+      "t.toml");
+  EXPECT_EQ(one_case.expand().size(), 2u);
+  EXPECT_EQ(message_of(head + "[grid]\n\"impact.angle\" = [0, 30]\n\"contact.friction\" = [0.3]\n"),
+            "invalid spec t.toml run 0 (impact.angle=0, contact.friction=0.3): "
+            "grid.\"contact.friction\"[0]: invalid contact.friction = 0.3: must be 0 with the "
+            "axisymmetric model (friction needs solver.model = 3d or impact.angle > 0)");
+  // A value that is wrong alone is still named where it was written.
+  EXPECT_EQ(message_of(head + "[[cases]]\n\"impact.angle\" = 30\n\"contact.friction\" = 11\n"),
+            "invalid spec t.toml cases[0].\"contact.friction\" = 11: must be in [0, 10] [-]");
+}
+
+// Issue 42: runs whose settings are written differently but resolve to the same configuration
+// (a number as text, the default model named, a material spelled with spaces) are refused, not
+// run twice.
+TEST(SweepSpec, RunsThatResolveToTheSameConfigurationAreRefused) {
+  const std::string head = "[study]\nname = \"t\"\n";
+  for (const char* velocity : {"\"5.0\"", "\"5e0\"", "\" 5\""}) {
+    SCOPED_TRACE(velocity);
+    const std::string message =
+        message_of(head + "[[cases]]\n\"impact.velocity\" = 5\n[[cases]]\n" +
+                   "\"impact.velocity\" = " + velocity + "\n");
+    EXPECT_EQ(
+        message.rfind("invalid spec t.toml: runs 0 (impact.velocity=5) and 1 (impact.velocity=", 0),
+        0u)
+        << message;
+    EXPECT_NE(message.find("resolve to the same configuration"), std::string::npos) << message;
+  }
+  const std::string material =
+      message_of(head +
+                 "[[cases]]\n\"sphere.material\" = \"E=370e9,nu=0.22,rho=3958\"\n[[cases]]\n"
+                 "\"sphere.material\" = \"E=370e9, nu=0.22, rho=3958\"\n");
+  EXPECT_NE(material.find("resolve to the same configuration"), std::string::npos) << material;
+  // The default model named and left out: the same run.
+  EXPECT_NE(message_of(head + "[[cases]]\n\"solver.model\" = \"axisymmetric\"\n[[cases]]\n"
+                              "\"impact.velocity\" = 5\n")
+                .find("runs 0 (solver.model=axisymmetric) and 1 (impact.velocity=5) resolve"),
+            std::string::npos);
+  // Runs that differ in physics are kept apart.
+  EXPECT_EQ(parse_sweep_spec(head + "[[cases]]\n\"impact.velocity\" = 5\n[[cases]]\n"
+                                    "\"impact.velocity\" = \"5.000001\"\n",
+                             "t.toml")
+                .expand()
+                .size(),
+            2u);
+}
+
 TEST(SweepSpec, MissingFileIsAnInputError) {
   EXPECT_THROW(load_sweep_spec("/nonexistent/spec.toml"), InputError);
 }

@@ -128,6 +128,10 @@ struct SolverConfig {
   /// Step budget [-]: validate() refuses a run whose estimated step count (estimate_run()) is
   /// larger; the solver stops a run that reaches it (status step_budget_exceeded).
   long long max_steps = 20'000'000;
+  /// Work caps [-]: validate() refuses, before meshing, a run whose a-priori element count, or
+  /// element count x expected steps, is larger (estimate_run(); docs/user/errors.md).
+  long long max_elements = 2'000'000;
+  double max_element_steps = 1e12;
   /// Multi-time-step integration (element subcycling, docs/theory/solver.md section 11): elements
   /// step at 2^L x the base step, L <= this (0 = every element at the base step) [-].
   int subcycling_levels = 4;

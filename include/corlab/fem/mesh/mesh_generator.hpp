@@ -46,6 +46,10 @@ void validate(const MeshOptions& options);
 /// (contact_estimate.hpp).
 MeshOptions mesh_options_for(const ImpactConfig& config);
 
+/// The sphere's O-grid elements (sphere_radius) without transitions, from its 1-D distributions
+/// alone, nothing built: an upper bound of its count [-] (config_limits' work caps).
+double sphere_mesh_elements(const MeshOptions& options);
+
 /// Generates both bodies (sphere elements first, then the target's: the substrate block or the
 /// second sphere, mirrored about z = 0; none for the rigid flat).
 Mesh generate_impact_mesh(const MeshOptions& options);

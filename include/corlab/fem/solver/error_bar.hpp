@@ -16,7 +16,7 @@
 ///     U = Fs |e_1 - e_0| + sigma + |e_1 - fit_1| (Fs = 1.25 for a good fit with 0.5 <= p < 2.1,
 ///     3 otherwise), or 3 sigma / Delta times that sum where the fit's standard deviation sigma
 ///     exceeds the data range.
-/// Every function returns NaN where a value is not finite or the grids are too few.
+/// Every function returns NaN where a value of e is not finite or the grids are too few.
 
 #include <span>
 #include <string_view>
@@ -48,7 +48,8 @@ ConvergenceFit fit_fixed_orders(std::span<const double> e,
 const std::vector<std::string_view>& error_bar_estimators();
 
 /// The error bar U of e_1 [-]: e_1 +/- U. `e` and `h` as in the file comment (h[0] = 1); `name`
-/// one of error_bar_estimators(); InputError for another name or unequal lengths.
+/// one of error_bar_estimators(); InputError for another name, unequal lengths, h[0] != 1 or a
+/// ratio that is not finite and > 0 (NaN, as the file comment says, only for a value of e).
 double error_bar(std::string_view name, std::span<const double> e, std::span<const double> h);
 
 }  // namespace corlab::fem

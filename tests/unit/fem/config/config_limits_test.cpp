@@ -4,12 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/config/impact_config.hpp"
+#include "corlab/fem/solver/run_cost.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "support/input_errors.hpp"
 #include "support/scratch_files.hpp"
@@ -144,6 +146,80 @@ TEST(ConfigLimits, TomlArrayForAScalarAndEmptyNumberAreErrors) {
             0u);
   EXPECT_NE(message(write("corlab_cfg_c.toml", "[impact]\nvelocity = 5.0\nvelocity = 6.0\n")), "");
   EXPECT_EQ(message(write("corlab_cfg_d.toml", "[output]\ntimes = [1e-5, 2e-5]\n")), "");
+}
+
+// Issue 42: a 10 m second sphere meshed 2.8 million elements and ran past 20 min with no word;
+// the work caps refuse it before anything is meshed, in one line with the estimate, the cap and
+// the key that raises it.
+TEST(ConfigLimits, WorkCapsRefuseBeforeMeshing) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string message =
+      refusal({"substrate.shape=sphere", "substrate.radius=10", "mesh.h_min=0.25e-3"});
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+  EXPECT_EQ(message.rfind("invalid solver.max_elements = 2e+06: must be >= the element count "
+                          "estimated before meshing, 3.",
+                          0),
+            0u)
+      << message;
+  EXPECT_NE(message.find("or raise solver.max_elements to run it"), std::string::npos);
+  ImpactConfig raised;
+  apply_settings(raised,
+                 {"substrate.shape=sphere", "substrate.radius=10", "solver.max_elements=10000000"},
+                 "--set");
+  EXPECT_NO_THROW(validate(raised));
+  // The work cap (elements x expected steps) names its own key.
+  EXPECT_EQ(refusal({"solver.max_element_steps=1e6"})
+                .rfind("invalid solver.max_element_steps = 1e+06: must be >= the work (elements x "
+                       "expected steps: ",
+                       0),
+            0u);
+  ImpactConfig paper;
+  validate(paper);
+  const RunEstimate e = estimate_run(paper);
+  EXPECT_GT(e.element_steps(), 1e6);
+  EXPECT_LT(e.element_steps(), paper.solver.max_element_steps / 1000.0);
+}
+
+// The a-priori element count against the built mesh: 0.63-2.0 of it in 2-D and 0.40-0.55 in 3-D
+// over the shipped studies (docs/user/errors.md); here a few shapes, held to 0.35-2.1. (The 3-D
+// sphere alone, on the rigid flat, is underestimated: 0.06 of it at impact.angle = 30.)
+TEST(ConfigLimits, ElementEstimateFollowsTheMesh) {
+  const std::vector<std::vector<std::string>> cases{
+      {},
+      {"mesh.transitions=0"},
+      {"substrate.shape=rigid"},
+      {"substrate.shape=sphere", "substrate.radius=0.1"},
+      {"substrate.shape=sphere", "substrate.radius=1", "mesh.h_max=0.02"},
+      {"impact.velocity=0.01", "mesh.h_min=1e-3"},
+      {"solver.model=3d", "mesh.h_min=1.5e-3", "mesh.contact_elements=3"},
+      {"impact.angle=30", "mesh.h_min=1.5e-3", "mesh.contact_elements=3"},
+  };
+  for (const auto& settings : cases) {
+    ImpactConfig c;
+    apply_settings(c, settings, "--set");
+    const double estimate = estimate_elements(c);
+    const double built = estimate_run_cost(c).elements;
+    SCOPED_TRACE(::testing::PrintToString(settings) + " estimate " + std::to_string(estimate) +
+                 " built " + std::to_string(built));
+    EXPECT_GT(estimate, 0.35 * built);
+    EXPECT_LT(estimate, 2.1 * built);
+  }
+}
+
+// Issue 42: mesh.h_max below mesh.h_min is refused with the 3-D model too (it left the 3-D mesh
+// uniform at the contact size: 15x the elements); an unused key is not refused (a second
+// sphere's substrate.depth, like a rigid flat's sizes).
+TEST(ConfigLimits, SizesAndUnusedKeysAreTreatedAlikeInEveryGeometry) {
+  for (const char* model : {"solver.model=axisymmetric", "solver.model=3d"}) {
+    EXPECT_EQ(refusal({model, "mesh.h_max=1e-5"}),
+              "invalid mesh.h_max = 1e-05: must be >= mesh.h_min = 0.00025 [m]");
+  }
+  ImpactConfig sphere;
+  apply_settings(sphere, {"substrate.shape=sphere", "substrate.depth=1e-5"}, "--set");
+  EXPECT_NO_THROW(validate(sphere));
+  EXPECT_EQ(
+      refusal({"substrate.depth=1e-5"}).rfind("invalid substrate.depth = 1e-05: must be >=", 0),
+      0u);
 }
 
 }  // namespace

@@ -99,6 +99,14 @@ TEST(ErrorBar, BadInputNamesItsField) {
   const std::vector<double> e{0.5, 0.51};
   EXPECT_THROW(error_bar("gci3", power_law(0.5, 0.01, 1.0), kRatios), InputError);
   EXPECT_THROW(error_bar("least_squares", e, kRatios), InputError);
+  // Issue 42: a ratio that is not a mesh size is refused, not turned into a number.
+  for (const std::vector<double>& ratios :
+       {std::vector<double>{1.0, 0.0}, std::vector<double>{1.0, -2.0},
+        std::vector<double>{1.0, std::nan("")}, std::vector<double>{2.0, 4.0}}) {
+    for (const auto name : error_bar_estimators()) {
+      EXPECT_THROW(error_bar(name, e, ratios), InputError) << name << " " << ratios[1];
+    }
+  }
 }
 
 }  // namespace
