@@ -194,6 +194,32 @@ std::string hook_python(const ExportSpec& spec, const std::vector<PairCalibratio
   return out;
 }
 
+// The wall/gran fixes, one per type on group corlab_typeN (fix wall/gran refuses dynamic groups
+// in LAMMPS 29Sep2021), and a guard (fix halt) that stops a run holding an atom outside its
+// type's group: it would pass through the wall unseen.
+std::string wall_fixes(const std::vector<PairCalibration>& pairs, bool python_hook) {
+  std::string out =
+      "# Walls act on group corlab_typeN: atoms added later must join it. fix pour / fix deposit\n"
+      "# put what they insert into their own group: `fix ID corlab_typeN pour ... N ...`; after\n"
+      "# a later create_atoms repeat `group corlab_typeN type N`. corlab_guard stops the run\n"
+      "# (checked every 100 steps) if an atom of a walled type is outside its group.\n";
+  std::vector<std::string> orphan;
+  for (const auto& p : pairs) {
+    if (p.type_j != 0) continue;
+    out += fmt::format("group corlab_type{0} type {0}\n", p.type_i);
+    out += fmt::format("fix corlab_wall{0} corlab_type{0} wall/gran granular {1} zplane 0.0 NULL\n",
+                       p.type_i, normal_model(p, route_of(p, python_hook)));
+    orphan.push_back(fmt::format("(type=={0})*(1-gmask(corlab_type{0}))", p.type_i));
+  }
+  if (orphan.empty()) return out;
+  out += fmt::format(
+      "variable corlab_orphan atom {}\ncompute corlab_orphans all reduce sum v_corlab_orphan\n"
+      "variable corlab_orphans equal c_corlab_orphans\n"
+      "fix corlab_guard all halt 100 v_corlab_orphans > 0.5 error hard message yes\n",
+      fmt::join(orphan, "+"));
+  return out;
+}
+
 }  // namespace
 
 Delivery lammps_delivery(const ExportSpec& spec, const PairCalibration& pair, bool python_hook) {
@@ -232,7 +258,8 @@ std::string write_lammps(const ExportSpec& spec,
   out +=
       "# Needs: units si, atom_style sphere, comm_modify vel yes, fix nve/sphere; include it "
       "after\n"
-      "# the atoms exist. Normal model `hertz` with kn = 4/3 E* [Pa]: F = kn sqrt(R* delta) delta\n"
+      "# create_box (atoms added later: see the walls).\n# Normal model `hertz` with kn = 4/3 E* "
+      "[Pa]: F = kn sqrt(R* delta) delta\n"
       "# (exact Hertz; `hertz/material` is avoided: this LAMMPS's fix wall/gran uses about\n"
       "# E/(2(1-nu)) for the wall).\n";
   out += tangential_comment(spec);
@@ -257,14 +284,16 @@ std::string write_lammps(const ExportSpec& spec,
   }
   out += "# Type pairs, the target and how this fragment delivers it:\n";
   for (const auto& p : pairs) out += route_comment(spec, p, route_of(p, python_hook));
-  const double r_min =
-      std::min_element(spec.types.begin(), spec.types.end(), [](const auto& a, const auto& b) {
-        return a.radius < b.radius;
-      })->radius;
+  const auto [smallest, largest] =
+      std::minmax_element(spec.types.begin(), spec.types.end(),
+                          [](const auto& a, const auto& b) { return a.radius < b.radius; });
   out += fmt::format(
-      "# The pair cutoff follows the radii (pair_style granular without a cutoff); skin 0.2 "
-      "r_min.\npair_style granular\nneighbor {:.6g} bin\nneigh_modify delay 0\n",
-      0.2 * r_min);
+      "# Cutoff 2 r_max = {0:.6g} m (r_max [m] the largest type's radius): the farthest contact.\n"
+      "# Without it LAMMPS sizes the pair cutoff from the atoms present at `run` and misses\n"
+      "# contacts of larger atoms inserted later until they overlap deeply (fix pour).\n"
+      "# Neighbour skin 0.2 r_min = {1:.6g} m.\npair_style granular {0:.6g}\nneighbor {1:.6g} bin\n"
+      "neigh_modify delay 0\n",
+      2.0 * largest->radius, 0.2 * smallest->radius);
   const auto n = static_cast<int>(spec.types.size());
   if (spec.wall_only) {
     out += "# --wall-only: particle-particle contacts elastic Hertz (e = 1), not calibrated\n";
@@ -284,12 +313,7 @@ std::string write_lammps(const ExportSpec& spec,
     out += fmt::format("pair_coeff {} {} {}\n", p.type_i, p.type_j,
                        normal_model(p, route_of(p, python_hook)));
   }
-  for (const auto& p : pairs) {
-    if (p.type_j != 0) continue;
-    out += fmt::format("group corlab_type{0} type {0}\n", p.type_i);
-    out += fmt::format("fix corlab_wall{0} corlab_type{0} wall/gran granular {1} zplane 0.0 NULL\n",
-                       p.type_i, normal_model(p, route_of(p, python_hook)));
-  }
+  out += wall_fixes(pairs, python_hook);
   if (hook) out += hook_python(spec, pairs);
   const auto law = [python_hook](const PairCalibration& p) {
     return law_of(route_of(p, python_hook));

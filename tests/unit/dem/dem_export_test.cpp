@@ -39,6 +39,14 @@ TEST(DemExport, ConstantEPairsAndCompensatedLammpsInput) {
   EXPECT_NE(lammps.find(fmt::format("pair_coeff 1 2 hertz")), std::string::npos);
   EXPECT_NE(lammps.find(fmt::format("{:.10g} tangential", e_in)), std::string::npos);
   EXPECT_NE(lammps.find("fix corlab_wall2 corlab_type2 wall/gran"), std::string::npos);
+  // Issue 41: the cutoff is the farthest contact, 2 r_max [m] (here two 5 mm spheres), and a
+  // guard stops a run whose atoms of a walled type are outside that type's group.
+  EXPECT_NE(lammps.find("pair_style granular 0.01\n"), std::string::npos);
+  EXPECT_NE(lammps.find("variable corlab_orphan atom (type==1)*(1-gmask(corlab_type1))+"
+                        "(type==2)*(1-gmask(corlab_type2))\n"),
+            std::string::npos);
+  EXPECT_NE(lammps.find("fix corlab_guard all halt 100 v_corlab_orphans > 0.5 error hard"),
+            std::string::npos);
   // 1-2: R* = R1 R2/(R1 + R2), kn = 4/3 E*
   EXPECT_NEAR(pairs[1].effective_radius, 0.005 * 0.003 / 0.008, 1e-15);
   const std::string liggghts = write_liggghts(spec, pairs);
@@ -89,7 +97,7 @@ TEST(DemExport, ModelCurveFitsAndJson) {
               pairs[0].liggghts_yield_ratio(), 1e-12);
   // --wall-only still defines the particle pairs (elastic), so many particles see each other.
   const std::string lammps = write_lammps(spec, pairs);
-  EXPECT_NE(lammps.find("\npair_style granular\n"), std::string::npos);
+  EXPECT_NE(lammps.find("\npair_style granular 0.01\n"), std::string::npos);  // 2 r_max [m]
   EXPECT_NE(lammps.find("pair_coeff 1 1 hertz"), std::string::npos);
   // e(v): the python/invoke hook in lammps.in, none in the fallback.
   EXPECT_NE(lammps.find("fix corlab_ev all python/invoke 1 post_force corlab_ev_force"),
