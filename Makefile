@@ -91,13 +91,17 @@ $(GSL_SOURCE)/gsl/configure:
 
 # Static analysis: clang-tidy (.clang-tidy; scripts/lint/clang_tidy.sh lists what it leaves out)
 # and flake8 (.flake8) on the Python sources. Both fail on any finding.
-lint: lint-python lint-cpp
+lint: lint-spdx lint-python lint-cpp
 
 lint-cpp: build
 	scripts/lint/clang_tidy.sh $(BUILD_DIR) $(JOBS)
 
 lint-python:
 	/usr/bin/python3 -m flake8 python scripts tests explorer
+
+# Every source file carries `SPDX-License-Identifier: BSD-3-Clause` (LICENSE); `--fix` adds it.
+lint-spdx:
+	/usr/bin/python3 scripts/lint/spdx_headers.py --check
 
 # DEM exports checked by running Debian's LAMMPS and LIGGGHTS (ctest label dem; part of `make test`).
 dem-check: deps-test build
