@@ -14,7 +14,8 @@ A file with no leading comment gets the line first (after a shebang or <!DOCTYPE
     scripts/lint/spdx_headers.py --fix     # adds the line where it is missing (idempotent)
 
 Data files (CSV, JSON, meshes, Markdown) are not source files: each data folder states its terms
-in its README.md. Fuzz corpora are inputs kept byte for byte and are left out.
+in its README.md. Fuzz corpora are inputs kept byte for byte and are left out, and so is
+packaging/debian/copyright, the licence statement itself.
 """
 import argparse
 import ast
@@ -35,7 +36,7 @@ KINDS = [
     (("*.py", "*.sh", "*.cmake", "*.cmake.in", "*.pc.in", "*.toml", "CMakeLists.txt", "Makefile",
       ".ci/run", "packaging/debian/*"), "#"),
 ]
-EXCLUDED = ("tests/fuzz/",)
+EXCLUDED = ("tests/fuzz/", "packaging/debian/copyright")
 
 
 def comment_syntax(path):
