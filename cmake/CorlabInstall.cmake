@@ -94,24 +94,9 @@ if(TARGET _core)
 endif()
 
 # The licence with every binary (BSD-3-Clause asks for it), as Debian's machine-readable copyright
-# file; the manual page, written from `corlab --help` by help2man when it is installed.
+# file. The manual page: apps/CMakeLists.txt.
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/debian/copyright
   DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT cli)
-find_program(CORLAB_HELP2MAN help2man)
-if(CORLAB_HELP2MAN)
-  set(corlab_man ${CMAKE_BINARY_DIR}/man/corlab.1)
-  add_custom_command(OUTPUT ${corlab_man}.gz
-    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/man
-    COMMAND ${CORLAB_HELP2MAN} --no-info --no-discard-stderr --version-string=${PROJECT_VERSION}
-      --name "coefficient of restitution of elastic-plastic impacts" --section 1
-      --output ${corlab_man} $<TARGET_FILE:corlab>
-    COMMAND gzip -9nf ${corlab_man}
-    DEPENDS corlab VERBATIM)
-  add_custom_target(corlab_manpage ALL DEPENDS ${corlab_man}.gz)
-  install(FILES ${corlab_man}.gz DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT cli)
-else()
-  message(STATUS "help2man not found: no manual page (apt-get install help2man)")
-endif()
 
 # find_package(corlab): corlab::corlab_dem always, corlab::corlab (component cxx) when installed
 # and its header-only dependencies are found.

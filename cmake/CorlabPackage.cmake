@@ -68,10 +68,7 @@ corlab (${PROJECT_VERSION}) unstable; urgency=medium
 
  -- ${CORLAB_MAINTAINER}  ${corlab_changelog_date}
 ")
-add_custom_command(OUTPUT ${CMAKE_BINARY_DIR}/debian/changelog.gz
-  COMMAND gzip -9nkf ${CMAKE_BINARY_DIR}/debian/changelog
-  DEPENDS ${CMAKE_BINARY_DIR}/debian/changelog VERBATIM)
-add_custom_target(corlab_deb_changelog ALL DEPENDS ${CMAKE_BINARY_DIR}/debian/changelog.gz)
+execute_process(COMMAND gzip -9nkf ${CMAKE_BINARY_DIR}/debian/changelog COMMAND_ERROR_IS_FATAL ANY)
 install(FILES ${CMAKE_BINARY_DIR}/debian/changelog.gz DESTINATION ${CMAKE_INSTALL_DOCDIR}
   COMPONENT deb EXCLUDE_FROM_ALL)
 install(FILES ${PROJECT_SOURCE_DIR}/packaging/debian/lintian-overrides
