@@ -1,5 +1,6 @@
 # corlab: the two set-up commands of the README are `make run` and `make test`.
 # Both install the missing Debian packages (apt-get, as root), configure and build Release.
+# SPDX-License-Identifier: BSD-3-Clause
 SHELL := /bin/bash
 PRESET ?= $(if $(CI),ci,release)
 BUILD_DIR := build

@@ -21,6 +21,7 @@
 //     throughput (element_steps_per_s, per CPU second: the machines are shared).
 //   BM_HexKharaz/angle: the same case run to the rebound (one iteration: minutes).
 // Sample run: ./build-solver/bin/solver_benchmark --benchmark_filter=PaperCase
+// SPDX-License-Identifier: BSD-3-Clause
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 

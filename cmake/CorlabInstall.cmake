@@ -3,6 +3,7 @@
 # Python package, find_package(corlab) and pkg-config (corlab, corlab-cxx). Every path is relative
 # to the prefix, so one build installs to any prefix; the installed code finds its data from where
 # it was loaded (corlab::installed_data_directory()), with no environment variable.
+# SPDX-License-Identifier: BSD-3-Clause
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 

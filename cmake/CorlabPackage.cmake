@@ -6,6 +6,7 @@
 # the CLI, the Python package and both libraries read the same data; lintian's two warnings on
 # that (package-name-doesnt-match-sonames, link-to-shared-library-in-wrong-package) are the cost.
 # Runtime libraries come from dpkg-shlibdeps; the Python side is listed.
+# SPDX-License-Identifier: BSD-3-Clause
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME corlab)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})

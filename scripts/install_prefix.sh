@@ -7,6 +7,7 @@
 #       byte-code beside them, then the folders of dirs.txt that are left empty, deepest first
 # As root, both rerun ldconfig when they installed or removed a shared library. The prefix is left
 # as it was before the install (tests/regression/install_test.sh compares its listing).
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
 usage="usage: install_prefix.sh install|uninstall BUILD_DIR PREFIX"
 action=${1:?$usage} build=${2:?$usage} prefix=${3:?$usage}

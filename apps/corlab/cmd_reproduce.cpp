@@ -8,6 +8,7 @@
 //   corlab reproduce --out out/r --only table2 --no-report
 // Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 128 + signal when
 // interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 #include <unistd.h>
 

@@ -20,6 +20,7 @@
  * $CORLAB_DATA_DIR/materials.toml, else from <prefix>/share/corlab when the library is
  * installed in <prefix>/lib/<multiarch> (any prefix), else from the source tree it was built from.
  */
+/* SPDX-License-Identifier: BSD-3-Clause */
 #ifndef CORLAB_DEM_H
 #define CORLAB_DEM_H
 

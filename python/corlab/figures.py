@@ -10,6 +10,7 @@ Every model line and reference value comes from fit.json (written by the C++ ``c
 reproduce``: "verification", "figure_lines", "fits", "paper"); this module holds no formula and
 no published constant of its own, it only plots.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
 
 import csv

@@ -1,5 +1,6 @@
 """HTML formatting of the report's numbers: escaping, significant digits, percentages, tables;
 the table of contents."""
+# SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
 
 import html

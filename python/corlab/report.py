@@ -11,6 +11,7 @@ reference of the verification runs, the model errors, our coefficients against t
 paper's published values, the runs on disk); this module holds no formula and no published
 constant: it only reads, formats and plots.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
 
 import json

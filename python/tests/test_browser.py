@@ -7,6 +7,7 @@ CLI's one-line message; the report opens with no console error and every image l
 screenshot of each goes to $CORLAB_ARTEFACTS (`make test` sets build/browser/).
 
 The page and the browser are `make test`'s: a missing one fails these tests, never skips them."""
+# SPDX-License-Identifier: BSD-3-Clause
 import csv
 import json
 import os

@@ -1,5 +1,6 @@
 """Figures with one series per case give every case its own look: Fig. 6 draws 15 cases, each in
 its own colour and marker, and no two colours of the first 20 cases are near each other."""
+# SPDX-License-Identifier: BSD-3-Clause
 import itertools
 import math
 

@@ -1,5 +1,6 @@
 """The report's table of contents (corlab.html_table.with_contents): one entry per <h2>, each
 linking to an id that exists, in order, with unique ids."""
+# SPDX-License-Identifier: BSD-3-Clause
 import re
 
 from corlab.html_table import with_contents

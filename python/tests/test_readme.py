@@ -1,6 +1,7 @@
 """The README: short, its set-up commands, links and code map real, its model scores those of the
 dataset, and its reproduction numbers checkable against fit.json (scripts/readme_numbers.py; the
 check against a coarse reproduction runs in test_report.py on the fit.json it already makes)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import copy
 import importlib.util
 import pathlib

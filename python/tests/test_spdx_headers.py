@@ -1,5 +1,6 @@
 """scripts/lint/spdx_headers.py: where the SPDX line goes in each comment syntax, that --fix is
 idempotent and leaves data alone (the tree itself is checked by `make lint-spdx`)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import importlib.util
 import pathlib
 

@@ -17,6 +17,7 @@ Data files (CSV, JSON, meshes, Markdown) are not source files: each data folder 
 in its README.md. Fuzz corpora are inputs kept byte for byte and are left out, and so is
 packaging/debian/copyright, the licence statement itself.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import ast
 import pathlib

@@ -6,6 +6,7 @@
 # the loader forgets its libraries). It changes /usr, so it runs only as root and only in CI (CI=true, as .ci/run sets) or with CORLAB_TEST_DEB=1; otherwise it is skipped
 # (exit 77). The package's dependencies must be installed (`make` installs them).
 # usage: deb_test.sh <build-dir> <source-dir> <work-dir>
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
 build=$1 src=$2 work=$3
 if [ "$(id -u)" -ne 0 ] || { [ "${CI:-}" != true ] && [ "${CORLAB_TEST_DEB:-}" != 1 ]; }; then

@@ -2,6 +2,7 @@
 # Installs the DEM component to a temporary prefix, then builds examples/dem_c from outside the
 # tree twice: with find_package(corlab) and with pkg-config; both programs must run and pass.
 # usage: dem_install_test.sh <build-dir> <source-dir> <work-dir> <lib-dir relative to the prefix>
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
 build=$1 src=$2 work=$3 libdir=$4
 rm -rf "$work" && mkdir -p "$work"

@@ -10,6 +10,7 @@
 # after the uninstall must equal the one before the install.
 # usage: install_test.sh <build-dir> <source-dir> <work-dir> <python-dir> <lib-dir>
 #        (the last two relative to the prefix)
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
 build=$1 src=$2 work=$3 pydir=$4 libdir=$5
 rm -rf "$work" && mkdir -p "$work/elsewhere"

@@ -1,4 +1,5 @@
 // The 3-D explicit impact solver (hex_impact.hpp): model, element update, time loop.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/hex_impact.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hex_model.hpp
 /// The 3-D solver's model (constant) and state (mutable), shared by its time loop

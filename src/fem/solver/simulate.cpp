@@ -1,4 +1,5 @@
 // simulate(): config -> mesh -> explicit solver (axisymmetric or 3-D).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/simulate.hpp"
 
 #include <cmath>
