@@ -14,8 +14,8 @@ A file with no leading comment gets the line first (after a shebang or <!DOCTYPE
     scripts/lint/spdx_headers.py --fix     # adds the line where it is missing (idempotent)
 
 Data files (CSV, JSON, meshes, Markdown) are not source files: each data folder states its terms
-in its README.md. Fuzz corpora are inputs kept byte for byte and are left out, and so is
-packaging/debian/copyright, the licence statement itself.
+in its README.md. Fuzz corpora, packaging/debian/copyright and the generated dataset specs are
+left out (EXCLUDED).
 """
 # SPDX-License-Identifier: BSD-3-Clause
 import argparse
@@ -37,7 +37,10 @@ KINDS = [
     (("*.py", "*.sh", "*.cmake", "*.cmake.in", "*.pc.in", "*.toml", "CMakeLists.txt", "Makefile",
       ".ci/run", "packaging/debian/*"), "#"),
 ]
-EXCLUDED = ("tests/fuzz/", "packaging/debian/copyright")
+# Left out: fuzz corpora (inputs kept byte for byte), the licence statement itself, and the
+# dataset specs `corlab dataset design` writes (a unit test compares them with its output).
+EXCLUDED = ("tests/fuzz/", "packaging/debian/copyright", "studies/dataset/fe_restitution.toml",
+            "studies/dataset/fe_restitution_pairs.toml")
 
 
 def comment_syntax(path):
