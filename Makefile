@@ -1,5 +1,6 @@
 # corlab: the two set-up commands of the README are `make run` and `make test`.
 # Both install the missing Debian packages (apt-get, as root), configure and build Release.
+# SPDX-License-Identifier: BSD-3-Clause
 SHELL := /bin/bash
 PRESET ?= $(if $(CI),ci,release)
 BUILD_DIR := build
@@ -13,19 +14,19 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   libgtest-dev libgmock-dev libbenchmark-dev pybind11-dev python3-dev python3-numpy \
   python3-matplotlib python3-scipy python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
   libgsl-dev libmuparser-dev python3-mypy \
-  clang-tidy python3-flake8
+  clang-tidy python3-flake8 help2man
 # Only the tests need these: the DEM codes the DEM exports are checked with (issue 11; apt install
 # time measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB
 # disk)). `make test` installs them, `make run` does not.
 TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy \
-  emscripten python3-plotly chromium chromium-driver python3-selenium
+  emscripten python3-plotly chromium chromium-driver python3-selenium lintian
 # The e(v) explorer (docs/user/explorer.md) and its browser tests need the second line: emscripten
 # compiles corlab's C++ to WebAssembly, python3-plotly ships plotly.js, the tests drive headless
 # chromium with selenium. python3-lammps, python3-scipy: the LAMMPS export's fix python/invoke hook.
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
-  bench format clean dem-check install deb golden-rebaseline explorer
-.PHONY: build-all first-answer
+  bench format clean dem-check install uninstall deb golden-rebaseline explorer
+.PHONY: build-all first-answer lint-spdx
 
 # Installs the missing packages of $(1) with apt-get (as root).
 define apt_install
@@ -104,13 +105,17 @@ $(GSL_SOURCE)/gsl/configure:
 
 # Static analysis: clang-tidy (.clang-tidy; scripts/lint/clang_tidy.sh lists what it leaves out)
 # and flake8 (.flake8) on the Python sources. Both fail on any finding.
-lint: lint-python lint-cpp
+lint: lint-spdx lint-python lint-cpp
 
 lint-cpp: build-all
 	scripts/lint/clang_tidy.sh $(BUILD_DIR) $(JOBS)
 
 lint-python:
 	/usr/bin/python3 -m flake8 python scripts tests explorer
+
+# Every source file carries `SPDX-License-Identifier: BSD-3-Clause` (LICENSE); `--fix` adds it.
+lint-spdx:
+	/usr/bin/python3 scripts/lint/spdx_headers.py --check
 
 # DEM exports checked by running Debian's LAMMPS and LIGGGHTS (ctest label dem; part of `make test`).
 dem-check: deps-test build-all
@@ -119,12 +124,15 @@ dem-check: deps-test build-all
 # Everything into PREFIX (default /usr/local; docs/user/install.md): the corlab program, the C++
 # library libcorlab and the DEM C library libcorlab_dem with their headers, find_package(corlab)
 # and pkg-config files, the data (share/corlab) and the Python package, where Debian's
-# /usr/bin/python3 finds it for /usr/local and /usr. ldconfig (as root) makes the new libraries
-# known to the loader.
+# /usr/bin/python3 finds it. ldconfig (as root) makes the new libraries known to the loader.
+# `make uninstall` (same PREFIX) removes exactly that (the files, and the folders the install
+# created when they are empty) and leaves PREFIX as it was (scripts/install_prefix.sh).
 PREFIX ?= /usr/local
 install: build
-	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
-	@if [ "$$(id -u)" -eq 0 ] && command -v ldconfig >/dev/null; then ldconfig; fi
+	scripts/install_prefix.sh install $(BUILD_DIR) $(PREFIX)
+
+uninstall:
+	scripts/install_prefix.sh uninstall $(BUILD_DIR) $(PREFIX)
 
 # A Debian package of the same (prefix /usr) with CPack: build/package/corlab_<version>_<arch>.deb.
 deb: build

@@ -3,6 +3,7 @@
 // over 10^6 query points, and chi(e(v)) chained as corlab_dem_force uses it. Target: >= 1e8/s.
 // Sample run:
 //   build/bin/dem_table_benchmark --benchmark_min_time=0.5
+// SPDX-License-Identifier: BSD-3-Clause
 #include <benchmark/benchmark.h>
 
 #include <vector>

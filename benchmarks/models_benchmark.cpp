@@ -2,6 +2,7 @@
 // (log-spaced 0.01-100 m/s, alumina sphere on aluminium alloy), one benchmark per model.
 // Sample run:
 //   build-models/bin/models_benchmark --benchmark_min_time=0.5
+// SPDX-License-Identifier: BSD-3-Clause
 #include <benchmark/benchmark.h>
 
 #include <cmath>

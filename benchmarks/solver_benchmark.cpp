@@ -25,6 +25,7 @@
 //   BM_HexKharaz/angle: the same case run to the rebound (one iteration: minutes); fails unless
 //     it rebounds.
 // Sample run: ./build-solver/bin/solver_benchmark --benchmark_filter=PaperCase
+// SPDX-License-Identifier: BSD-3-Clause
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 

@@ -1,5 +1,6 @@
 # Writes OUT (a C++ source defining corlab::build_id()) from `git describe` of SOURCE_DIR, only
 # when the text changes, so a commit recompiles one file. Run at every build (corlab_build_id).
+# SPDX-License-Identifier: BSD-3-Clause
 execute_process(COMMAND git -C ${SOURCE_DIR} describe --always --dirty --abbrev=12
   OUTPUT_VARIABLE describe OUTPUT_STRIP_TRAILING_WHITESPACE RESULT_VARIABLE status ERROR_QUIET)
 if(NOT status EQUAL 0 OR describe STREQUAL "")

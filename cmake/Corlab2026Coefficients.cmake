@@ -6,6 +6,7 @@
 #
 # corlab2026_coefficients(JSON <file> OUT <file>): writes OUT only when its text changes.
 # As a script (the unit test of the build errors): cmake -DJSON=... -DOUT=... -P <this file>.
+# SPDX-License-Identifier: BSD-3-Clause
 function(corlab2026_coefficients)
   cmake_parse_arguments(ARG "" "JSON;OUT" "" ${ARGN})
   if(NOT EXISTS "${ARG_JSON}")

@@ -1,5 +1,6 @@
 # The shared C library libcorlab_dem (include/corlab/corlab_dem.h) and its install rules (component
 # dem); the package files (find_package(corlab), pkg-config) are written by CorlabInstall.cmake.
+# SPDX-License-Identifier: BSD-3-Clause
 include(GNUInstallDirs)
 
 add_library(corlab_dem_c SHARED ${PROJECT_SOURCE_DIR}/src/dem_capi/corlab_dem.cpp)

@@ -3,13 +3,17 @@
 # Python package, find_package(corlab) and pkg-config (corlab, corlab-cxx). Every path is relative
 # to the prefix, so one build installs to any prefix; the installed code finds its data from where
 # it was loaded (corlab::installed_data_directory()), with no environment variable.
+# SPDX-License-Identifier: BSD-3-Clause
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(CORLAB_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/corlab)
 set(CORLAB_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/corlab)
-# Debian's /usr/bin/python3 has <prefix>/lib/python3.X/dist-packages on sys.path for both
-# /usr/local (make install) and /usr (the .deb); the extension is built for that one X.
+# The Python package, with no pip: Debian's /usr/bin/python3 searches
+# /usr/local/lib/python3.X/dist-packages (make install, default prefix) and
+# /usr/lib/python3/dist-packages (the .deb; Debian's place for python3 packages). The extension is
+# built for that one 3.X. `cmake --install` uses CORLAB_INSTALL_PYTHONDIR (component python); the
+# .deb uses CORLAB_DEB_PYTHONDIR (component python_deb, installed only when asked for by name).
 if(DEFINED PYTHON_VERSION_MAJOR AND DEFINED PYTHON_VERSION_MINOR)
   set(corlab_python_default lib/python${PYTHON_VERSION_MAJOR}.${PYTHON_VERSION_MINOR}/dist-packages)
 else()
@@ -17,11 +21,13 @@ else()
 endif()
 set(CORLAB_INSTALL_PYTHONDIR ${corlab_python_default} CACHE STRING
   "Where the Python package corlab is installed, relative to the prefix")
+set(CORLAB_DEB_PYTHONDIR lib/python3/dist-packages)
 
 # The data directory as seen from each directory code is installed to (bin/, lib/, the Python
 # package): compiled into corlab::installed_data_directory() and the CLI's report step.
 set(corlab_data_from_code "")
-foreach(code_dir ${CMAKE_INSTALL_BINDIR} ${CMAKE_INSTALL_LIBDIR} ${CORLAB_INSTALL_PYTHONDIR}/corlab)
+foreach(code_dir ${CMAKE_INSTALL_BINDIR} ${CMAKE_INSTALL_LIBDIR} ${CORLAB_INSTALL_PYTHONDIR}/corlab
+    ${CORLAB_DEB_PYTHONDIR}/corlab)
   file(RELATIVE_PATH rel /prefix/${code_dir} /prefix/${CORLAB_INSTALL_DATADIR})
   list(APPEND corlab_data_from_code ${rel})
 endforeach()
@@ -30,8 +36,13 @@ list(JOIN corlab_data_from_code ":" corlab_data_from_code)
 set_property(SOURCE ${PROJECT_SOURCE_DIR}/src/materials/data_directory.cpp
   TARGET_DIRECTORY corlab_materials APPEND PROPERTY
   COMPILE_DEFINITIONS CORLAB_INSTALL_DATA_FROM_CODE="${corlab_data_from_code}")
-file(RELATIVE_PATH corlab_python_from_bin /prefix/${CMAKE_INSTALL_BINDIR}
-  /prefix/${CORLAB_INSTALL_PYTHONDIR})
+set(corlab_python_from_bin "")
+foreach(python_dir ${CORLAB_INSTALL_PYTHONDIR} ${CORLAB_DEB_PYTHONDIR})
+  file(RELATIVE_PATH rel /prefix/${CMAKE_INSTALL_BINDIR} /prefix/${python_dir})
+  list(APPEND corlab_python_from_bin ${rel})
+endforeach()
+list(REMOVE_DUPLICATES corlab_python_from_bin)
+list(JOIN corlab_python_from_bin ":" corlab_python_from_bin)
 target_compile_definitions(corlab PRIVATE CORLAB_INSTALL_PYTHON_FROM_BIN="${corlab_python_from_bin}")
 
 # libcorlab: every static module in one shared library (no second compile), for C++ programs
@@ -67,11 +78,26 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/fe_restitution
   DESTINATION ${CORLAB_INSTALL_DATADIR} COMPONENT data)
 
 if(TARGET _core)
-  install(TARGETS _core LIBRARY DESTINATION ${CORLAB_INSTALL_PYTHONDIR}/corlab COMPONENT python)
-  install(DIRECTORY ${CMAKE_BINARY_DIR}/python/corlab/ DESTINATION ${CORLAB_INSTALL_PYTHONDIR}/corlab
-    COMPONENT python FILES_MATCHING PATTERN "*.py" PATTERN "*.pyi" PATTERN "py.typed"
-    PATTERN "__pycache__" EXCLUDE)
+  foreach(python_component python python_deb)
+    if(python_component STREQUAL "python")
+      set(python_dir ${CORLAB_INSTALL_PYTHONDIR})
+      set(python_all "")
+    else()
+      set(python_dir ${CORLAB_DEB_PYTHONDIR})
+      set(python_all EXCLUDE_FROM_ALL)
+    endif()
+    install(TARGETS _core LIBRARY DESTINATION ${python_dir}/corlab
+      COMPONENT ${python_component} ${python_all})
+    install(DIRECTORY ${CMAKE_BINARY_DIR}/python/corlab/ DESTINATION ${python_dir}/corlab
+      COMPONENT ${python_component} ${python_all} FILES_MATCHING PATTERN "*.py" PATTERN "*.pyi"
+      PATTERN "py.typed" PATTERN "__pycache__" EXCLUDE)
+  endforeach()
 endif()
+
+# The licence with every binary (BSD-3-Clause asks for it), as Debian's machine-readable copyright
+# file. The manual page: apps/CMakeLists.txt.
+install(FILES ${PROJECT_SOURCE_DIR}/packaging/debian/copyright
+  DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT cli)
 
 # find_package(corlab): corlab::corlab_dem always, corlab::corlab (component cxx) when installed
 # and its header-only dependencies are found.

@@ -1,6 +1,7 @@
 # corlab_module(NAME <name> DEPS <targets...>)
 # A module is a static library built from every .cpp under src/<name>/; its public headers live
 # under include/corlab/<name>/. Adding a source file needs no CMake edit (re-run configure).
+# SPDX-License-Identifier: BSD-3-Clause
 function(corlab_module)
   cmake_parse_arguments(ARG "" "NAME" "DEPS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${ARG_NAME}/*.cpp")

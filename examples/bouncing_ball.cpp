@@ -6,6 +6,7 @@
 // Sample runs:
 //   build/bin/example_bouncing_ball                  # ma2023, drop from 1 m
 //   build/bin/example_bouncing_ball thornton1997 0.5 # another model, drop height 0.5 m
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <cmath>

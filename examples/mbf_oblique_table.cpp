@@ -11,6 +11,7 @@
 //   build/bin/example_mbf_oblique_table angles 2 4 40   # e_t, omega, angle at those angles (CSV)
 //   build/bin/example_mbf_oblique_table chi             # the no-slip limit and psi2(1.2) vs chi
 //   build/bin/example_mbf_oblique_table steel           # the FE comparison's cases (steel, mu 0.3)
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <cmath>

@@ -3,6 +3,7 @@
 #   CORLAB_GSL_SOURCE_DIR  the unpacked source (`apt-get source gsl`; `make explorer` fetches it)
 # Defines the static library corlab_gsl (headers as <gsl/gsl_*.h>). A GSL function of another
 # part fails the link naming it: add its directory to gsl_parts.
+# SPDX-License-Identifier: BSD-3-Clause
 set(CORLAB_GSL_SOURCE_DIR "" CACHE PATH "Debian's GSL source (apt-get source gsl)")
 if(NOT EXISTS "${CORLAB_GSL_SOURCE_DIR}/configure" OR
    NOT EXISTS "${CORLAB_GSL_SOURCE_DIR}/gsl_math.h")

@@ -9,6 +9,7 @@ explorer.js. The result loads nothing from the network and runs from file://.
     build_page.py --module corlab_explorer.js --plotly plotly.js --dataset dataset.csv \
                   --columns columns.json --out explorer.html
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import csv
 import json

@@ -6,6 +6,7 @@
 The stubs come from the signatures pybind11 writes into every docstring, read by mypy's stubgen
 (Debian python3-mypy), so they cannot drift from the bindings.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import re
 import sys
 from pathlib import Path

@@ -11,6 +11,7 @@ Relative errors (e_model - e_FE) / e_FE: RMS / worst / bias in %.
     PYTHONPATH=build/python /usr/bin/python3 scripts/corlab2026p_scores.py \\
         data/fe_restitution_pairs/dataset.csv
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import math
 import pathlib

@@ -6,6 +6,7 @@
 # model scores (model_scores.json, docs/img/dataset_model_errors.png). With a pair sweep it does
 # the same for data/fe_restitution_pairs/ and corlab2026p (fitted to both datasets). Needs build/
 # (make build).
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
 sweep=${1:?usage: scripts/dataset_refresh.sh SWEEP_DIR [PAIR_SWEEP_DIR]}
 pairs=${2:-}

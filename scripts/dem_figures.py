@@ -10,6 +10,7 @@ Regenerate (from the repository root, after `make build`):
   PYTHONPATH=build/python python3 scripts/dem_figures.py bounce --corlab build/bin/corlab \
       --lmp lmp --liggghts liggghts --out docs/img
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import json
 import math

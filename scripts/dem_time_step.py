@@ -7,6 +7,7 @@ smallest N within 1e-3 (a doubling series), with the error measured there.
 usage: scripts/dem_time_step.py --corlab build/bin/corlab [--lmp lmp] [--liggghts liggghts]
        [--yade yade] [--work DIR] [--steps 100,200,400,800,1600]
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import os
 import sys

@@ -16,6 +16,7 @@ Every call also runs the paper's case at the issue's finer meshes (0.18-0.0625 m
 The estimators are corlab's (corlab.error_bar, one C++ implementation); this script only runs
 and counts.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import concurrent.futures
 import csv

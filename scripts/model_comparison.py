@@ -10,6 +10,7 @@ Usage:
   /usr/bin/python3 scripts/model_comparison.py [CORLAB_BIN] --out DIR [--points N]
 The CLI path is argv[1], else $CORLAB_BIN, else ./build/bin/corlab.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import csv
 import io

@@ -11,6 +11,7 @@ Fawcett (example_mbf_oblique_table).
     /usr/bin/python3 scripts/oblique_fe_table.py OUT2/results.csv \\
         --out data/oblique_studies/steel_pair.csv
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import csv
 import io

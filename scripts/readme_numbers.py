@@ -11,6 +11,7 @@ stand in the README as printed. Another preset (the coarse one the tests run) me
 differently, so only what does not depend on the preset is compared: the paper's published
 constants of the refit table (fit.json's `paper`).
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import json
 import sys

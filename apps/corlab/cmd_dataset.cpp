@@ -7,6 +7,7 @@
 //   corlab dataset design --box pairs --out studies/dataset/fe_restitution_pairs.toml
 //   corlab sweep studies/dataset/fe_restitution.toml --out out/dataset --error-estimate
 //   corlab dataset export out/dataset --out data/fe_restitution
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <cmath>

@@ -1,5 +1,6 @@
 // `corlab dem`: calibrate DEM contact laws to a constant e or an e(v) (model or FE table) and
 // write LAMMPS, LIGGGHTS and YADE fragments plus e(v)/chi tables (CSV, JSON).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <algorithm>

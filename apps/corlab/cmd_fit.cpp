@@ -7,6 +7,7 @@
 //   corlab fit results.csv --form "e ~ a + s*ln(k1) + b*ln(k2)" --param a=1,s=0.05,b=0.2
 //       --where "e < 0.999"                    # (one line) any user form, nonlinear LS
 // Exit status: 0 fitted, 1 the iteration did not converge, 2 bad input.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 
 #include <cmath>

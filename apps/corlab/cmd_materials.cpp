@@ -1,4 +1,5 @@
 // `corlab materials`: list the built-in material database.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include "command.hpp"

@@ -1,5 +1,6 @@
 // `corlab mesh`: generate (or read) the impact mesh of a case, write DIR/mesh.vtu and print the
 // element counts, quality and explicit cost per body.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 #include <fmt/format.h>
 

@@ -1,4 +1,5 @@
 // `corlab models`: list the analytic CoR models with citation, equation, validity and status.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,7 @@
 // `corlab predict`: evaluate analytic CoR models for a sphere/substrate pair over velocities.
 //   corlab predict --model ma2023 --sphere alumina_ma2023 --substrate aluminium_ma2023
 //                  --velocity 0.05:6:50 --spacing log --format csv
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <algorithm>

@@ -8,6 +8,7 @@
 //   corlab reproduce --out out/r --only table2 --no-report
 // Exit status: 0 done, 1 some runs failed or the report failed, 2 bad input, 128 + signal when
 // interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "command.hpp"
@@ -74,8 +76,8 @@ std::string own_command_line() {
 
 /// The directory holding the Python package `corlab`: $CORLAB_PYTHONPATH if set; else
 /// <build>/python next to <build>/bin/corlab; else, for an installed corlab, the package directory
-/// next to <prefix>/bin (CORLAB_INSTALL_PYTHON_FROM_BIN, from the install layout in
-/// cmake/CorlabInstall.cmake).
+/// next to <prefix>/bin (CORLAB_INSTALL_PYTHON_FROM_BIN, the ':'-separated candidates of the
+/// install layouts in cmake/CorlabInstall.cmake: `make install` and the .deb).
 fs::path python_package_dir() {
   if (const char* env = std::getenv("CORLAB_PYTHONPATH"); env != nullptr && *env != '\0') {
     return env;
@@ -85,10 +87,14 @@ fs::path python_package_dir() {
   if (ec) return {};
   fs::path build = exe.parent_path().parent_path() / "python";
 #ifdef CORLAB_INSTALL_PYTHON_FROM_BIN
-  fs::path installed = (exe.parent_path() / CORLAB_INSTALL_PYTHON_FROM_BIN).lexically_normal();
-  if (!fs::exists(build / "corlab" / "report.py", ec) &&
-      fs::exists(installed / "corlab" / "report.py", ec)) {
-    return installed;
+  if (!fs::exists(build / "corlab" / "report.py", ec)) {
+    std::string_view candidates = CORLAB_INSTALL_PYTHON_FROM_BIN;
+    while (!candidates.empty()) {  // the first layout that holds the package
+      const auto colon = candidates.find(':');
+      fs::path installed = (exe.parent_path() / candidates.substr(0, colon)).lexically_normal();
+      candidates = colon == std::string_view::npos ? "" : candidates.substr(colon + 1);
+      if (fs::exists(installed / "corlab" / "report.py", ec)) return installed;
+    }
   }
 #endif
   return build;

@@ -1,4 +1,5 @@
 // `corlab simulate`: one explicit FE impact; writes summary.json, history.csv, fields_<t>.vtu.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 #include <fmt/format.h>
 

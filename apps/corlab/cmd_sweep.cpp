@@ -7,6 +7,7 @@
 //   mpirun -n 8 corlab sweep studies/table2.toml --out out/table2
 // Exit status: 0 all cases finished without failure, 1 some failed, 2 bad input, 128 + signal when
 // interrupted (130 Ctrl-C, 143 SIGTERM, 129 SIGHUP).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <cstdio>

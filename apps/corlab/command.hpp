@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file command.hpp
 /// Subcommand registry of the corlab CLI. Each subcommand lives in its own cmd_<name>.cpp and

@@ -1,5 +1,6 @@
 // corlab: coefficient of restitution of elastic-plastic impacts.
 // Thin CLI: parse -> options -> validate -> run -> write. No physics here.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <algorithm>

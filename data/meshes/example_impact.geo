@@ -4,6 +4,7 @@
 // sphere, one graded rectangle for the substrate. Regenerate the .msh with
 //   gmsh -2 -format msh41 example_impact.geo -o example_impact.msh
 // (or corlab::fem::read_gmsh("example_impact.geo"), which meshes it on the fly).
+// SPDX-License-Identifier: BSD-3-Clause
 R = 0.01; gap = 1e-4; W = 0.02; D = 0.02;
 zc = gap + R; c = 0.45 * R; s = Sqrt(2) / 2;
 n = 13;  // nodes along each ring arc / core edge

@@ -5,6 +5,7 @@
  * or: cc main.c $(pkg-config --cflags --libs corlab) -o dem_c_example
  * Prints e(v) and chi(v) of alumina on aluminium (Thornton 1997), then integrates one impact
  * with corlab_dem_force (semi-implicit Euler) and prints the rebound e against the target. */
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include <corlab/corlab_dem.h>
 #include <math.h>
 #include <stdio.h>

@@ -11,6 +11,7 @@
 //   e(5 m/s) = 0.59062932012251634
 //   e(10 m/s) = 0.51448185910629163
 //   data directory: /usr/local/share/corlab
+// SPDX-License-Identifier: BSD-3-Clause
 #include <array>
 #include <cstdio>
 #include <exception>

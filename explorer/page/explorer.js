@@ -3,6 +3,7 @@
 // Every number shown comes from the C++: this file holds no formula of a model, only the speed
 // grid, the material spec text and the layout. window.corlabExplorer is what the browser tests
 // read (python/tests/test_browser.py).
+// SPDX-License-Identifier: BSD-3-Clause
 "use strict";
 
 const FIELDS = [  // the keys of a material spec (src/materials/material_database.cpp)

@@ -1,4 +1,5 @@
 // embind: the explorer's C++ API (explorer_api.hpp) as functions of the WebAssembly module.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <emscripten/bind.h>
 
 #include "explorer_api.hpp"

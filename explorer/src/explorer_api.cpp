@@ -1,4 +1,5 @@
 // The explorer's C++ side (explorer_api.hpp): catalog, evaluation, dataset.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "explorer_api.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file explorer_api.hpp
 /// What the e(v) explorer page asks the C++ (explorer/page/explorer.js through embind,

@@ -1,4 +1,5 @@
 // The FE dataset's runs nearest a material pair (nearest_runs.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "nearest_runs.hpp"
 
 #include <algorithm>

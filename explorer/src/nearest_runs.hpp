@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file nearest_runs.hpp
 /// The FE dataset's runs nearest a material pair (docs/user/explorer.md). By dimensional analysis

@@ -18,8 +18,9 @@
  * Functions returning a pointer return NULL on bad input and write a one-line message naming
  * the field, value and constraint into err (if err != NULL). The material database is read from
  * $CORLAB_DATA_DIR/materials.toml, else from <prefix>/share/corlab when the library is
- * installed in <prefix>/lib (any prefix), else from the source tree it was built from.
+ * installed in <prefix>/lib/<multiarch> (any prefix), else from the source tree it was built from.
  */
+/* SPDX-License-Identifier: BSD-3-Clause */
 #ifndef CORLAB_DEM_H
 #define CORLAB_DEM_H
 

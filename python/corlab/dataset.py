@@ -7,6 +7,7 @@ its regimes, and scoring the registered CoR models against it.
 
 All quantities SI; errors are relative to the FE value: (e_model - e_FE) / e_FE.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import math
 import warnings
 

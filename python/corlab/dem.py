@@ -5,6 +5,7 @@ The functions are those of the compiled submodule ``corlab._core.dem``; this mod
 submodule of the package, so that ``import corlab.dem`` and ``from corlab.dem import laws`` work.
 Types: ``dem.pyi`` next to this file.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 from . import _core
 
 __all__ = sorted(name for name in dir(_core.dem) if not name.startswith("_"))

@@ -10,6 +10,7 @@ Every model line and reference value comes from fit.json (written by the C++ ``c
 reproduce``: "verification", "figure_lines", "fits", "paper"); this module holds no formula and
 no published constant of its own, it only plots.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
 
 import csv
@@ -25,16 +26,20 @@ from .vtu import field_snapshots, read_vtu  # noqa: E402
 
 
 # Colours and markers of figures with one series per case (Figs. 6 and 9, yield onset): the first
-# ten cases take matplotlib's ten default colours (tab10) with circles, the next ten the light
-# shade of each (tab20) with squares, and so on, so no two cases look the same.
+# ten cases take matplotlib's ten default colours (tab10) with circles, the next ten ten other
+# hues, each at least 70 (RGB, 0-255) from every tab10 colour and from each other, with squares
+# (not tab20's light shades of the same hues, which read as pairs); then both sets again with
+# other markers, so no two cases look alike.
 _CASE_MARKERS = ("o", "s", "^", "D", "v", "P")
+_SECOND_COLOURS = ("#000000", "#000080", "#800000", "#ff00ff", "#808000", "#0000ff", "#8b008b",
+                   "#00a86b", "#2f4f4f", "#6495ed")
 
 
 def case_style(i):
     """(colour, marker) of case i: distinct for every i < 10 * len(_CASE_MARKERS)."""
     cycle, k = divmod(i, 10)
-    colour = matplotlib.colormaps["tab20"].colors[2 * k + cycle % 2]
-    return colour, _CASE_MARKERS[cycle % len(_CASE_MARKERS)]
+    palette = matplotlib.colormaps["tab10"].colors if cycle % 2 == 0 else _SECOND_COLOURS
+    return matplotlib.colors.to_hex(palette[k]), _CASE_MARKERS[cycle % len(_CASE_MARKERS)]
 
 
 def read_csv(path):

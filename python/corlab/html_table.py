@@ -1,8 +1,11 @@
-"""HTML formatting of the report's numbers: escaping, significant digits, percentages, tables."""
+"""HTML formatting of the report's numbers: escaping, significant digits, percentages, tables;
+the table of contents."""
+# SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
 
 import html
 import math
+import re
 
 
 def esc(x):
@@ -33,3 +36,28 @@ def table(headers, rows):
         out.append("<tr>" + "".join(f"<td>{c}</td>" for c in r) + "</tr>")
     out.append("</table>")
     return "\n".join(out)
+
+
+def with_contents(body):
+    """`body` (the report's HTML) with an id on every <h2> and, before the first one, a table of
+    contents linking to each (slugs from the heading's text; a repeated slug gets -2, -3, ...)."""
+    entries, seen = [], {}
+
+    def anchor(match):
+        title = match.group(1)
+        text = re.sub(r"<[^>]+>", "", html.unescape(title))
+        slug = re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-") or "section"
+        seen[slug] = seen.get(slug, 0) + 1
+        if seen[slug] > 1:
+            slug = f"{slug}-{seen[slug]}"
+        entries.append((slug, title))
+        return f'<h2 id="{slug}">{title}</h2>'
+
+    body = re.sub(r"<h2>(.*?)</h2>", anchor, body, flags=re.S)
+    if not entries:
+        return body
+    toc = ('<nav class="toc"><b>Contents</b><ol>' +
+           "".join(f'<li><a href="#{slug}">{title}</a></li>' for slug, title in entries) +
+           "</ol></nav>\n")
+    first = body.index("<h2 id=")
+    return body[:first] + toc + body[first:]

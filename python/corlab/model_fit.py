@@ -22,6 +22,7 @@ build generates the library's coefficients from data/fe_restitution/model_fit.js
 dependency, cmake/Corlab2026Coefficients.cmake): a refit written there reaches
 corlab2026_fitted() at the next build.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import json
 import math

@@ -11,6 +11,7 @@ reference of the verification runs, the model errors, our coefficients against t
 paper's published values, the runs on disk); this module holds no formula and no published
 constant: it only reads, formats and plots.
 """
+# SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
 
 import json
@@ -20,7 +21,7 @@ import platform
 import sys
 
 from . import figures
-from .html_table import esc, fmt, pct, table
+from .html_table import esc, fmt, pct, table, with_contents
 from .report_dataset import dataset_section
 from .report_oblique import oblique_section
 
@@ -376,7 +377,8 @@ CSS = """body{font-family:sans-serif;max-width:1200px;margin:2em auto;line-heigh
 table{border-collapse:collapse;margin:0.6em 0;font-size:0.9em}
 td,th{border:1px solid #bbb;padding:3px 6px;text-align:left}th{background:#eee}
 img{max-width:100%;border:1px solid #ddd;margin:4px 0}code{background:#f4f4f4;padding:1px 3px}
-.warn{background:#fff3cd;padding:0.5em;border:1px solid #e0c060}"""
+.warn{background:#fff3cd;padding:0.5em;border:1px solid #e0c060}
+.toc{background:#f8f8f8;border:1px solid #ddd;padding:0.3em 1em;columns:2}"""
 
 
 def make_report(out_dir):
@@ -472,7 +474,7 @@ available to corlab; none are shown and none were digitised.</p>
 </body></html>"""
     path = os.path.join(out_dir, "report.html")
     with open(path + ".tmp", "w") as f:  # replaced whole: a signal never leaves half a report
-        f.write(body)
+        f.write(with_contents(body))
     os.replace(path + ".tmp", path)
     return path
 

@@ -4,6 +4,7 @@ scores on them, and corlab2026 against Ma eq. 19 on the
 Table 2 runs of the report's directory. The numbers come from model_fit.json, model_scores.json
 and fit.json (written by the C++), the figure's from the C++ models and relative errors
 (corlab._core): no formula or material constant lives here."""
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import os
 import sys

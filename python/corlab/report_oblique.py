@@ -3,6 +3,7 @@
 data/kharaz2001 ships (fe_oblique.csv, measured_points.csv, dem_oblique.csv; its README says how
 each was made), and the elastic-plastic studies of data/oblique_studies. Nothing is computed
 here: figures and a table of those files' numbers."""
+# SPDX-License-Identifier: BSD-3-Clause
 import csv
 import os
 import sys

@@ -1,5 +1,6 @@
 """Field snapshots of corlab runs: the ASCII .vtu files of ``corlab simulate --set
 output.times=...`` (include/corlab/fem/output/vtu_writer.hpp) read back as arrays."""
+# SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
 
 import os

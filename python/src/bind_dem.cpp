@@ -1,4 +1,5 @@
 // DEM hand-off (issue 11): corlab.dem.* - contact laws, exact chi(e), impact integration, exports.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>

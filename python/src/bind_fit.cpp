@@ -1,6 +1,7 @@
 // Bindings for the fit area: corlab.fit_linear, corlab.fit_expression, corlab.fit_paper,
 // corlab.relative_errors, corlab.relative_error_stats. Results are plain dicts (the JSON forms of
 // fit_io.hpp, the same as `corlab fit --json`).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>

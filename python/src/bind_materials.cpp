@@ -1,4 +1,5 @@
 // Materials and dimensionless groups.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"

@@ -1,4 +1,5 @@
 // Bindings for the explicit impact solver: corlab.simulate(settings, config_file) -> dict.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 

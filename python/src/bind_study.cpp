@@ -1,4 +1,5 @@
 // Parametric sweeps and the datasets they make: load_spec, run_sweep, read_results, dataset_box.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // One function per area; module.cpp calls them all. Each lives in bind_<area>.cpp.
 #include <pybind11/pybind11.h>

@@ -1,4 +1,5 @@
 // The compiled part of the Python package `corlab` (corlab._core).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <pybind11/pybind11.h>
 
 #include <string>

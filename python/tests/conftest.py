@@ -1,4 +1,5 @@
 """Shared fixtures of the Python tests."""
+# SPDX-License-Identifier: BSD-3-Clause
 import os
 import subprocess
 

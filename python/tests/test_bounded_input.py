@@ -1,6 +1,7 @@
 """Issue 31 reproducers through the Python module: bounded, checked input files (special files,
 caps, UTF-8 and the byte-order mark), no silent defaults, every missing result said. The CLI side:
 tests/regression/reliability_cli_test.sh."""
+# SPDX-License-Identifier: BSD-3-Clause
 import re
 import time
 

@@ -7,6 +7,7 @@ CLI's one-line message; the report opens with no console error and every image l
 screenshot of each goes to $CORLAB_ARTEFACTS (`make test` sets build/browser/).
 
 The page and the browser are `make test`'s: a missing one fails these tests, never skips them."""
+# SPDX-License-Identifier: BSD-3-Clause
 import csv
 import json
 import os
@@ -257,6 +258,14 @@ def test_report_opens_with_every_image_loaded(browser, artefacts, tiny_reproduct
     figures = sorted((out / "figures").glob("*.png"))
     assert figures and len(found) >= len(figures) > 0
     assert [src for src, ok in found if not ok] == []
+    # the table of contents: an entry per section, each link landing on its heading
+    toc = browser.execute_script(
+        "return [...document.querySelectorAll('nav.toc a')].map(a => [a.hash.slice(1),"
+        " !!document.getElementById(a.hash.slice(1))]);")
+    assert len(toc) == len(browser.find_elements("css selector", "h2")) >= 8
+    assert all(ok for _, ok in toc), toc
+    browser.find_element("css selector", f'nav.toc a[href="#{toc[-1][0]}"]').click()
+    wait_for(browser, f"location.hash === '#{toc[-1][0]}'")
     assert console_errors(browser) == []
     screenshot(browser, artefacts / "report.png")
 

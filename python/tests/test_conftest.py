@@ -1,4 +1,5 @@
 """The corlab_bin fixture (conftest.py): a test that needs the CLI fails, not skips, without it."""
+# SPDX-License-Identifier: BSD-3-Clause
 import os
 import pathlib
 import shutil

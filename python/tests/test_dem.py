@@ -1,4 +1,5 @@
 """Tests of the DEM bindings (corlab.dem): exact chi, impact integration, exports."""
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import subprocess
 

@@ -4,6 +4,7 @@ run line by line in a scratch directory (with data/, studies/ and tests/ of the 
 beside it): each `corlab ...` command (a trailing backslash continues it) must exit 0, or N where
 the line ends in `# exit N`. Other blocks are not run: mark a block runnable only when all its
 commands finish in seconds."""
+# SPDX-License-Identifier: BSD-3-Clause
 import os
 import pathlib
 import re

@@ -1,5 +1,6 @@
 """Fig. 4 of the report: field snapshots written by `corlab reproduce` (verification_hertz with
 output.times) are read back by corlab.vtu.read_vtu and drawn by fig4_fields."""
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import os
 import subprocess

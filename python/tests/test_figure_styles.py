@@ -1,5 +1,9 @@
-"""Figures with one series per case give every case its own look (issue 29: Fig. 6 drew 15 cases
-in 10 colours, two cases to a colour)."""
+"""Figures with one series per case give every case its own look: Fig. 6 draws 15 cases, each in
+its own colour and marker, and no two colours of the first 20 cases are near each other."""
+# SPDX-License-Identifier: BSD-3-Clause
+import itertools
+import math
+
 import matplotlib
 
 from corlab import figures
@@ -10,7 +14,16 @@ def test_case_styles_are_distinct_and_start_with_the_default_colours():
     assert len(set(styles)) == len(styles)
     assert len({colour for colour, _ in styles[:20]}) == 20  # 20 cases: 20 colours
     tab10 = matplotlib.colormaps["tab10"].colors
-    assert [colour for colour, _ in styles[:10]] == list(tab10)
+    assert [colour for colour, _ in styles[:10]] == [matplotlib.colors.to_hex(c) for c in tab10]
+
+
+def test_the_first_twenty_case_colours_are_far_apart():
+    """tab20's light shades beside their dark ones read as pairs; every two of the first 20 case
+    colours are at least 60 apart in RGB (0-255; tab10's closest pair is 67)."""
+    rgb = [tuple(255 * x for x in matplotlib.colors.to_rgb(figures.case_style(i)[0]))
+           for i in range(20)]
+    closest = min(math.dist(a, b) for a, b in itertools.combinations(rgb, 2))
+    assert closest >= 60, closest
 
 
 def test_fig6_draws_fifteen_cases_in_fifteen_styles(tmp_path, monkeypatch):

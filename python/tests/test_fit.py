@@ -1,5 +1,6 @@
 """Fitting from Python: fit_linear (NIST Norris), fit_expression (NIST Misra1a, user forms),
 fit_paper (Ma et al. 2023 forms on a synthetic results.csv)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import csv
 import math
 import subprocess

@@ -1,4 +1,5 @@
 """Tests of the material bindings (corlab.Material, corlab.material, effective_modulus, k1, k2)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import pytest
 
 import corlab

@@ -1,6 +1,7 @@
 """corlab's model (corlab2026) and its fit: the shipped coefficients are what refitting the
 shipped dataset gives; the kernel through Python is the library's; the split is fixed; and on
 the paper's corner the model's form recovers the cavity-model and Tabor values."""
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import math
 import pathlib

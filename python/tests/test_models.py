@@ -1,4 +1,5 @@
 """Tests of the analytic CoR model bindings: corlab.models, .predict, .yield_velocity."""
+# SPDX-License-Identifier: BSD-3-Clause
 import math
 import warnings
 

@@ -1,10 +1,13 @@
 """The README: short, its set-up commands, links and code map real, its model scores those of the
 dataset, and its reproduction numbers checkable against fit.json (scripts/readme_numbers.py; the
 check against a coarse reproduction runs in test_report.py on the fit.json it already makes)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import copy
 import importlib.util
 import pathlib
 import re
+import shlex
+import subprocess
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
@@ -69,15 +72,42 @@ def test_code_map_names_files_and_symbols_that_exist():
 
 
 def test_model_scores_are_the_datasets():
-    scores = (ROOT / "data" / "fe_restitution" / "model_scores.md").read_text()
-    want = table_rows(scores, "| model | all cases (n) |")
-    got = table_rows(README, "| model | all cases (n) |")
-    assert [row[:6] for row in got] == want
-    # The pair columns: all rows and the two corners of the pair dataset's scores.
-    pairs = (ROOT / "data" / "fe_restitution_pairs" / "model_scores.md").read_text()
-    want = [[row[0], row[1], row[6], row[7]]
-            for row in table_rows(pairs, "| model | all cases (n) |")]
-    assert [row[:1] + row[6:9] for row in got] == want
+    """The short model table: every scored model once, its RMS over all cases of each dataset
+    (the first number of the "all cases" cell of each model_scores.md, which the README links)."""
+    def rms_by_model(path):
+        rows = table_rows((ROOT / path).read_text(), "| model | all cases (n) |")
+        return {row[0]: row[1].split(" / ")[0] for row in rows}
+    flats = rms_by_model("data/fe_restitution/model_scores.md")
+    pairs = rms_by_model("data/fe_restitution_pairs/model_scores.md")
+    got = table_rows(README, "| model | use it for |")
+    assert sorted(row[0] for row in got) == sorted(flats)
+    assert {row[0]: (row[2], row[3]) for row in got} == {m: (flats[m], pairs[m]) for m in flats}
+    for path in ("data/fe_restitution/model_scores.md",
+                 "data/fe_restitution_pairs/model_scores.md"):
+        assert f"]({path})" in README
+
+
+def test_readme_lines_are_at_most_100_characters():
+    long = [n for n, line in enumerate(README.splitlines(), 1) if len(line) > 100]
+    assert long == [], f"README lines over 100 characters: {long}"
+
+
+def test_readme_quotes_what_its_dem_export_prints(tmp_path, corlab_bin):
+    """The quick start's `corlab dem` line, run as written: the max |de| line the README quotes
+    is the one it prints."""
+    block = README[README.index("```sh runnable"):]
+    lines = block[:block.index("```\n", 3)].splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("corlab dem "))
+    command = lines[start].rstrip("\\ ")
+    while lines[start].endswith("\\"):
+        start += 1
+        command += " " + lines[start].strip().rstrip("\\ ")
+    args = shlex.split(command)[1:]
+    done = subprocess.run([corlab_bin] + args, cwd=tmp_path, capture_output=True, text=True,
+                          check=True)
+    printed = re.search(r"max \|de\|: ([^;]+);", done.stdout + done.stderr)
+    assert printed, done.stdout
+    assert f"    max |de|: {printed.group(1)}\n" in README
 
 
 def fake_paper_fit():

@@ -1,6 +1,7 @@
 """Relative errors and their statistics come from the C++ (corlab.relative_error_stats,
 fit/relative_error.hpp): the same doubles as numpy's formulas that the dataset's scores were
 computed with, what is left out, and bad input."""
+# SPDX-License-Identifier: BSD-3-Clause
 import math
 
 import numpy as np

@@ -1,5 +1,6 @@
 """Issue 12 reproducers through the Python module: bad input is a one-line ValueError naming the
 field (never a crash of the interpreter, a hang or a NaN)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import numpy as np
 import pytest
 

@@ -1,5 +1,6 @@
 """The reproduction report: figures and HTML from a synthetic output directory, and `corlab
 reproduce` end to end on a tiny spec (the CLI from CORLAB_BIN), including resuming."""
+# SPDX-License-Identifier: BSD-3-Clause
 import ast
 import csv
 import importlib

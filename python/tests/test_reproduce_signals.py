@@ -1,6 +1,7 @@
 """issue 31 item 9: a signal during `corlab reproduce`'s report step (the Python child) ends it
 with 128 + signal, one line and no traceback, the studies kept (SIGTERM was ignored and the report
 written with exit 0, SIGHUP exited 0, Ctrl-C exited 1 with a traceback)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import os
 import signal

@@ -1,4 +1,5 @@
 """corlab.simulate: the explicit FE impact from Python."""
+# SPDX-License-Identifier: BSD-3-Clause
 import numpy as np
 import pytest
 

@@ -1,4 +1,5 @@
 """Sweeps from Python: load_spec, run_sweep (real solver, tiny case), read_results."""
+# SPDX-License-Identifier: BSD-3-Clause
 import pathlib
 
 import numpy as np

@@ -1,5 +1,6 @@
 """tests/regression/sweep_compare.py: exact mode (the regression tests) and --relative mode (two
 solver versions compared run by run, as the README's "every e within x %" claims are made)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import pathlib
 import subprocess
 import sys

@@ -1,5 +1,6 @@
 """The package's type stubs (_core.pyi, dem.pyi, written by python/stubgen.py at build time) as a
 type checker reads them: mypy accepts the README's Python example and rejects wrong calls."""
+# SPDX-License-Identifier: BSD-3-Clause
 import re
 import subprocess
 import sys

@@ -3,6 +3,7 @@
 # are errors) on every .cpp under src/, apps/ and python/src/ except those listed in
 # clang_tidy_exclude.txt. Needs BUILD_DIR/compile_commands.json (cmake exports it).
 # Usage: clang_tidy.sh BUILD_DIR [JOBS]          (`make lint-cpp`)
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
 build=${1:?usage: clang_tidy.sh BUILD_DIR [JOBS]} jobs=${2:-2}
 root=$(cd "$(dirname "$0")/../.." && pwd)

@@ -1,4 +1,5 @@
 // The one strict number parser (number.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/number.hpp"
 
 #include <cerrno>

@@ -1,4 +1,5 @@
 // run_process: posix_spawn + waitpid, no shell.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/process.hpp"
 
 #include <pthread.h>

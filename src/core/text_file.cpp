@@ -1,4 +1,5 @@
 // Bounded, checked reading of input files (text_file.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/text_file.hpp"
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/thread_pool.hpp"
 
 #include <algorithm>

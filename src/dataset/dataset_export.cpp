@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/dataset_export.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/impact_box.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/sobol_sequence.hpp"
 
 #include <gsl/gsl_qrng.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/contact_ode.hpp"
 
 #include <gsl/gsl_errno.h>

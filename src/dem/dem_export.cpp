@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/dem_export.hpp"
 
 #include <fmt/format.h>

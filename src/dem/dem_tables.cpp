@@ -1,4 +1,5 @@
 // The e(v) tables of a DEM export (CSV, and everything as JSON).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 
 #include <algorithm>

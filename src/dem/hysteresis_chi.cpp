@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/hysteresis_chi.hpp"
 
 #include <gsl/gsl_sf_lambert.h>

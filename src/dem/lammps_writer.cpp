@@ -1,4 +1,5 @@
 // The LAMMPS fragment of a DEM export (pair_style granular, fix wall/gran, the e(v) hook).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 
 #include <algorithm>

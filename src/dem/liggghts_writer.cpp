@@ -1,4 +1,5 @@
 // The LIGGGHTS 3.8 fragment of a DEM export (pair_style gran, fix wall/gran).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 

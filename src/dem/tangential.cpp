@@ -1,4 +1,5 @@
 // The tangential (Mindlin, Coulomb) part of a DEM export: G*, k_t/a and each code's form.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/tangential.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/uniform_table.hpp"
 
 #include <cmath>

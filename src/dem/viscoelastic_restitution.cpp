@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/viscoelastic_restitution.hpp"
 
 #include <cmath>

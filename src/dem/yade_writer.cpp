@@ -1,4 +1,5 @@
 // The YADE fragment of a DEM export (Python: materials, en per material pair, the e(v) hook).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 

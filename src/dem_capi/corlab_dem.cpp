@@ -1,5 +1,6 @@
 // The C API (include/corlab/corlab_dem.h) over corlab::dem; built as the shared library
 // libcorlab_dem. No exception crosses the C boundary.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/corlab_dem.h"
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // Nonlinear least squares of muParser forms with GSL's Levenberg-Marquardt.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fit/fit_expression.hpp"
 
 #include <fmt/core.h>

@@ -1,4 +1,5 @@
 // Linear least squares by SVD of the column-equilibrated design matrix, with inference.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fit/linear_regression.hpp"
 
 #include <fmt/core.h>

@@ -1,4 +1,5 @@
 // Relative errors and their statistics, summed in numpy's pairwise order.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fit/relative_error.hpp"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // Where the shipped data (materials.toml, fe_restitution/, studies/) are: the one rule of
 // data_directory(), installed_data_directory() and studies_directory().
+// SPDX-License-Identifier: BSD-3-Clause
 #if !defined(__EMSCRIPTEN__)
 #include <dlfcn.h>
 #include <link.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/materials/material_database.hpp"
 
 #include <fmt/format.h>

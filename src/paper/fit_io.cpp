@@ -1,4 +1,5 @@
 // Results tables -> samples, and fit results -> JSON.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/paper/fit_io.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // The model forms of Ma et al. (2023), eqs. 9, 11, 15, 17, 18, fitted with inference.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/paper/fit_paper.hpp"
 
 #include <fmt/format.h>

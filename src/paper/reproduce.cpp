@@ -1,6 +1,7 @@
 // `corlab reproduce`: studies -> fits -> fit.json (the report is made by python -m corlab.report,
 // which only reads, formats and plots fit.json). Running the studies: reproduce_studies.cpp; the
 // fits: reproduce_fits.cpp; the report's other numbers: reproduce_report.cpp.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/paper/reproduce.hpp"
 
 #include <fmt/format.h>

@@ -2,6 +2,7 @@
 // back-calculated yield velocities, every FE run against eq. 19 (the paper's and ours) with its
 // error bar, the analytic model curves of Figs. 11-13 and the yield onset measured by the solver.
 // Everything is recomputed from what is on disk (no solver runs).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What reproduce.cpp (the pipeline), reproduce_studies.cpp (running the studies) and
 // reproduce_fits.cpp (the fits and comparisons of fit.json) share; not a public header.

@@ -4,6 +4,7 @@
 // against the paper's, the runs and solver time on disk, the model lines of Figs. 3 and 6-10). The
 // Python report (corlab.report) only reads, formats and plots them: no formula or published
 // constant lives on both sides.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <algorithm>
 #include <cmath>
 #include <fstream>

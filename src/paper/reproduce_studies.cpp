@@ -1,6 +1,7 @@
 // `corlab reproduce`, running the studies: history studies (time histories, field snapshots),
 // sweeps (with their error-bar companions) and the yield-onset search. Each keeps what is done on
 // disk, so a rerun continues where it stopped.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 
 #include <algorithm>

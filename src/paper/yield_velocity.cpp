@@ -1,4 +1,5 @@
 // Yield-onset velocity by bisection on ln v with the impact solver.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/paper/yield_velocity.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/corlab2026.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file fitted_coefficients.hpp
 /// A model's fitted coefficients {name, value} as configure generates them from its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/impact_pair.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/jackson_green2010.hpp"
 
 #include <algorithm>

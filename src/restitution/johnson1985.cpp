@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/johnson1985.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/ma2023.hpp"
 
 #include <algorithm>

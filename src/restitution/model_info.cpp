@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/model_info.hpp"
 
 #include <nlohmann/json.hpp>

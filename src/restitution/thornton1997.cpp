@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/thornton1997.hpp"
 
 #include <algorithm>

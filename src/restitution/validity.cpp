@@ -1,4 +1,5 @@
 // Validity warnings of the CoR models (validity.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/validity.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/wu2003.hpp"
 
 #include <algorithm>

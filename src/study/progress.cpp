@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/progress.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/results_table.hpp"
 
 #include <fcntl.h>

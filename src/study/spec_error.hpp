@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file spec_error.hpp
 /// The errors of a sweep spec, located: "invalid spec <origin> <where>: <what>" as one-line

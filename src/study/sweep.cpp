@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/sweep.hpp"
 
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Private machinery shared by the local (sweep.cpp) and the MPI (sweep_mpi.cpp) sweep drivers.
 

@@ -9,6 +9,7 @@
 //    at a time from rank 0 whenever a thread is idle and sends each outcome back as a string.
 //  - dynamic distribution: a rank asks for the next case when it is free, so slow and fast
 //    cases balance themselves.
+// SPDX-License-Identifier: BSD-3-Clause
 #ifdef CORLAB_WITH_MPI
 
 #include <fmt/format.h>

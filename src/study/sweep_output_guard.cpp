@@ -1,5 +1,6 @@
 // One output directory holds one study: a second, different study is refused before it can mix
 // its rows into results.csv, and a results.csv with a case twice is refused on resume.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 

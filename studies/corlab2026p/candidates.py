@@ -10,6 +10,7 @@ shipped form). Prints a Markdown table: RMS / worst / bias of the relative error
     PYTHONPATH=build/python /usr/bin/python3 studies/corlab2026p/candidates.py \\
         data/fe_restitution_pairs/dataset.csv [--cells] [--check]
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 import pathlib
 

@@ -17,6 +17,7 @@ Exploration only (not run by the tests); needs Debian's python3-sklearn:
     PYTHONPATH=build/python /usr/bin/python3 studies/corlab2026p/residual_predictability.py \\
         data/fe_restitution/dataset.csv data/fe_restitution_pairs/dataset.csv
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import argparse
 
 import numpy as np

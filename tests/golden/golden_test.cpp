@@ -11,6 +11,7 @@
 // balance's last digits, and the pins catch it. Any other build (a sanitizer build, another
 // compiler or CPU family, a level without a pin) is held to golden.json's `tolerance`, relative
 // per value, against the level's pin or the nearest pinned level below it.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

@@ -4,6 +4,7 @@
 # the parser library's own errors too; predict warns outside a model's calibration; progress off a
 # terminal has no carriage returns.
 # Usage: input_cli_test.sh CORLAB_BIN WORKDIR   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 work=$2
 rm -rf "$work" && mkdir -p "$work"

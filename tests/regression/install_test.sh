@@ -4,13 +4,22 @@
 # probe: the installed CLI, the README's C++ example built against the installed package
 # (find_package and pkg-config) and `import corlab, corlab.dem` with only the prefix's site
 # directory on PYTHONPATH. Every program must read the installed data: a probe material is added
-# to the installed materials.toml only, and each of them must list it.
-# usage: install_test.sh <build-dir> <source-dir> <work-dir> <python-dir relative to the prefix>
+# to the installed materials.toml only, and each of them must list it. Then `make uninstall`
+# (scripts/install_prefix.sh) must leave the prefix as it was: the prefix starts with folders and
+# files of its own (some of the folders the install writes into, empty or not), and its listing
+# after the uninstall must equal the one before the install.
+# usage: install_test.sh <build-dir> <source-dir> <work-dir> <python-dir> <lib-dir>
+#        (the last two relative to the prefix)
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
-build=$1 src=$2 work=$3 pydir=$4
+build=$1 src=$2 work=$3 pydir=$4 libdir=$5
 rm -rf "$work" && mkdir -p "$work/elsewhere"
 prefix="$work/prefix"
-cmake --install "$build" --prefix "$prefix" >/dev/null
+mkdir -p "$prefix/bin" "$prefix/lib" "$prefix/share/doc/other" "$prefix/include"
+echo other >"$prefix/bin/other-tool" && echo other >"$prefix/share/doc/other/README"
+listing() { (cd "$prefix" && find . | LC_ALL=C sort); }
+listing >"$work/before.txt"
+"$src/scripts/install_prefix.sh" install "$build" "$prefix" >/dev/null
 unset CORLAB_DATA_DIR CORLAB_PYTHONPATH PYTHONPATH
 export LC_ALL=C.UTF-8
 data="$prefix/share/corlab"
@@ -18,8 +27,8 @@ for f in bin/corlab include/corlab/restitution/registry.hpp include/corlab/corla
   share/corlab/materials.toml share/corlab/fe_restitution/dataset.csv \
   share/corlab/fe_restitution_pairs/dataset.csv share/corlab/kharaz2001/fe_oblique.csv \
   share/corlab/oblique_studies/steel_pair.csv share/corlab/oblique_studies/alumina_aluminium.csv \
-  share/corlab/studies/paper/table2.toml lib/cmake/corlab/corlabConfig.cmake \
-  lib/pkgconfig/corlab.pc lib/pkgconfig/corlab-cxx.pc "$pydir/corlab/__init__.py" \
+  share/corlab/studies/paper/table2.toml "$libdir/cmake/corlab/corlabConfig.cmake" \
+  "$libdir/pkgconfig/corlab.pc" "$libdir/pkgconfig/corlab-cxx.pc" "$pydir/corlab/__init__.py" \
   "$pydir/corlab/dem.py" "$pydir/corlab/_core.pyi" "$pydir/corlab/dem.pyi" "$pydir/corlab/py.typed"; do
   test -e "$prefix/$f" || { echo "install_test: missing $prefix/$f" >&2; exit 1; }
 done
@@ -65,10 +74,10 @@ sys.exit(f"install_test: README C++ lines not in examples/installed/main.cpp: {m
 PY
 cmake -S "$src/examples/installed" -B cmake-build -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build cmake-build >/dev/null
-LD_LIBRARY_PATH="$prefix/lib" ./cmake-build/readme_example >cmake_example.txt
-export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+LD_LIBRARY_PATH="$prefix/$libdir" ./cmake-build/readme_example >cmake_example.txt
+export PKG_CONFIG_PATH="$prefix/$libdir/pkgconfig"
 flags=$(pkg-config --cflags --libs corlab-cxx)
-g++ -std=c++20 "$src/examples/installed/main.cpp" $flags -Wl,-rpath,"$prefix/lib" -o pkgconfig_example
+g++ -std=c++20 "$src/examples/installed/main.cpp" $flags -Wl,-rpath,"$prefix/$libdir" -o pkgconfig_example
 ./pkgconfig_example >pkgconfig_example.txt
 cmp cmake_example.txt pkgconfig_example.txt
 grep -qxF "data directory: $data" cmake_example.txt \
@@ -90,4 +99,14 @@ assert "install_probe" in corlab.material_names(), "Python did not read the inst
 assert laws() and corlab.dem.laws() == laws()
 print(f"python: corlab {corlab.__version__} from {corlab.__file__}")
 PY
-echo "install_test: CLI, C++ (find_package, pkg-config: $flags) and Python from $prefix passed"
+
+# 4. `make uninstall`: the prefix as it was, also after Python wrote byte-code into the package.
+/usr/bin/python3 -m compileall -q "$prefix/$pydir/corlab"
+"$src/scripts/install_prefix.sh" uninstall "$build" "$prefix" >/dev/null
+listing >"$work/after.txt"
+if ! diff "$work/before.txt" "$work/after.txt" >"$work/uninstall.diff"; then
+  echo "install_test: the prefix after uninstall differs from before the install:" >&2
+  cat "$work/uninstall.diff" >&2; exit 1
+fi
+echo "install_test: CLI, C++ (find_package, pkg-config: $flags) and Python from $prefix passed;" \
+  "uninstall left the prefix as it was ($(wc -l <"$work/before.txt") paths)"

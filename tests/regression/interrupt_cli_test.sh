@@ -3,6 +3,7 @@
 # kept, exit 128 + signal (143, 129), and a rerun resumes (issue 12: they used to kill silently).
 # Usage: interrupt_cli_test.sh CORLAB_BIN SPEC WORKDIR   (registered in tests/CMakeLists.txt with
 # fault.toml: 12 runs of a few seconds each, so the signal always finds the sweep running)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 spec=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"

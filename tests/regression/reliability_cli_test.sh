@@ -4,6 +4,7 @@
 # documented warning; none exit 3, a signal, a hang or a silent default. The Python side:
 # python/tests/test_bounded_input.py; the report step's signals: test_reproduce_signals.py.
 # Usage: reliability_cli_test.sh CORLAB_BIN WORKDIR   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 work=$2
 src=$(cd "$(dirname "$0")/../.." && pwd)

@@ -2,6 +2,7 @@
 # `corlab sweep` from the outside: a bad spec -> exit 2 with one error line; Ctrl-C (SIGINT) ->
 # exit 130, finished rows kept, a rerun resumes and completes; --dry-run lists the cases.
 # Usage: sweep_cli_test.sh CORLAB_BIN SPEC BAD_SPEC WORKDIR   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 spec=$2 bad=$3 work=$4
 here=$(cd "$(dirname "$0")" && pwd)

@@ -12,6 +12,7 @@ change of e and of e_error's reference e_coarse, the runs that moved most, the l
 balance of each (NaN entries skipped), and the summed wall_s. Exit 1 if the files do not join
 (different cases), are empty or repeat a case id.
     python3 sweep_compare.py --relative A.csv B.csv [--top N]"""
+# SPDX-License-Identifier: BSD-3-Clause
 import csv
 import sys
 

@@ -5,6 +5,7 @@
 # directory are each refused with one clear line (exit 2); an identical repeated row is dropped on
 # resume with a one-line note.
 # Usage: sweep_fault_test.sh CORLAB_BIN SPEC WORKDIR [SEED]   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 spec=$2 work=$3
 RANDOM=${4:-12}  # seeded: the kill times are the same on every run of the test

@@ -2,6 +2,7 @@
 # A 2-rank MPI sweep gives the same results.csv as a local one (rows sorted by case_id, timing
 # columns excluded), and an MPI sweep resumes after a kill without rerunning finished cases.
 # Usage: sweep_mpi_test.sh CORLAB_BIN SPEC WORKDIR   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -euo pipefail
 corlab=$1 spec=$2 work=$3
 here=$(cd "$(dirname "$0")" && pwd)

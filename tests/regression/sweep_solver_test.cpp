@@ -2,6 +2,7 @@
 // R = 2.5 mm, coarse mesh, 6 runs of about 0.3 s): every case finishes, the rows are physical,
 // the solver is deterministic across thread counts, and a cancelled sweep resumes to the same
 // table.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Small meshes for the solver's unit tests (the impact mesh generator is tested elsewhere).
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The 3-D model's test cases, shared by the tests that run them: the paper's 35 mm steel sphere,
 // elastic, sliding at 60 deg from the normal (tan 60 deg is above the rigid-body sliding

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // InputError checks shared by the unit tests.
 #include <gtest/gtest.h>

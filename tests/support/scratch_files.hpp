@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Scratch directories and whole-file text for the tests (one copy instead of one per test file).
 #include <gtest/gtest.h>

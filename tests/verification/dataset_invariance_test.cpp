@@ -2,6 +2,7 @@
 // and other dimensions (every length x 0.4, moduli and stresses x 1/3, densities x 0.344, the
 // speed that keeps k1) gives the same e. Two of the cheapest of the design's first 64 points
 // are run: one with an elastic sphere, one with a yielding, hardening sphere.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

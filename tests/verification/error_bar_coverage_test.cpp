@@ -4,6 +4,7 @@
 // 50 m/s) at the default mesh, each run with its error estimate and again at h/2. The bar
 // must hold the finer value in at least 5 of the 6 (the target is 95 %), and must not do so by
 // being wide: its median is at most 3 x the median |e(h/2) - e(h)| (issue 28's criteria).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <algorithm>

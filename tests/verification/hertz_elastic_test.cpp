@@ -1,6 +1,7 @@
 // Verification: elastic sphere on an elastic substrate, and on the rigid flat, against Hertz
 // (Johnson 1985, eqs. 11.22-11.24; the rigid flat: E* = E / (1 - nu^2)): F_max within 2 %,
 // delta_max and the contact time within 1 %, 0.9995 <= e <= 1.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,7 @@
 // Verification of the explicit solver on the case of Ma et al. (2023), Table 1, 5 m/s: energy
 // balance, energy loss vs hysteresis area (paper: 12.61 J vs 12.63 J), hourglass energy (paper:
 // 0.0693 %), mesh convergence and scale invariance. One 5 m/s run is shared by the checks.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

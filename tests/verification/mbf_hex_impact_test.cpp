@@ -10,6 +10,7 @@
 // The rigid flat is not used: a sphere on a rigid flat is a dissimilar pair (Dundurs' beta =
 // (1 - 2 nu)/(2 (1 - nu)) = 0.29 for steel), whose normal load drives radial slip that MBF leave
 // out; it gave e_t = 0.553 against MBF's 0.595 at the same psi1 (oblique_theory.md).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -4,6 +4,7 @@
 // sequence; an elastic-plastic flat hardens by its own residual shape, so that e rises impact
 // after impact towards the elastic limit (shakedown, Johnson 1985 section 11.5) while the energy
 // balance holds across the relaunches.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

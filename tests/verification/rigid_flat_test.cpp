@@ -2,6 +2,7 @@
 // balance, its energy loss is the force-indentation loop's area and mostly plastic work, and the
 // run has no substrate (no crater, no substrate element). Hertz on the rigid flat:
 // hertz_elastic_test.cpp.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cstdio>

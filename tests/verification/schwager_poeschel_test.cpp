@@ -3,6 +3,7 @@
 // (e = 0.997) to 1 (e = 0.39), at impact speeds 0.1, 1 and 10 m/s. Two separation rules:
 // force-free (F clamped at 0: the papers' rule) and delta = 0 (ViscoelasticHertzLaw as it is, the
 // LAMMPS default). Prints the accuracy table quoted in docs/theory/dem_contact_laws.md.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -3,6 +3,7 @@
 // balance within 2e-5, the hourglass energy below 0.1 % of the initial energy (the README's
 // criterion) and the contact penetration below 2 % of the indentation. The ends are read from the
 // key table, so widening a range makes this test check the new end.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <string>

@@ -4,6 +4,7 @@
 // elements one level above the h-wide columns at their stable limit, the slower impulses came
 // at the columns' resonance (omega 2 dt ~ pi) and the run gained 1.4e-4 of E0 while in contact,
 // e = 1.00006 (kInterfaceStepRatio, subcycling_level.hpp, keeps such interfaces away from it).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -3,6 +3,7 @@
 // identity (two identical spheres approaching at 2v are each a sphere on the rigid flat at v: the
 // symmetry plane is that flat); momentum conservation; the error bar against h/2; the flat as
 // the limit R2 -> infinity.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file atomic_file.hpp
 /// Crash-safe file replacement: the file holds either its old or its new content, never a part.

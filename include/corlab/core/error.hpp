@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file error.hpp
 /// Errors for bad user input. Every invalid value is reported on one line that names the field,

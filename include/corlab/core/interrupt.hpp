@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file interrupt.hpp
 /// The one interrupt handler of the CLI: SIGINT (Ctrl-C), SIGTERM (kill, job schedulers) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file number.hpp
 /// The one strict number parser of corlab: config values, material specs, sweep specs, CSV

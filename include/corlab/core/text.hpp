@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file text.hpp
 /// Small text helpers shared by the parsers (config keys, material specs, fit forms, CSV) and their

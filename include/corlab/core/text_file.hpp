@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file text_file.hpp
 /// The one way an input file reaches a parser: bounded, checked text. Every reader (config, sweep

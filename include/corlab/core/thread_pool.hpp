@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file thread_pool.hpp
 /// The one way corlab runs independent jobs on threads: WorkerThreads owns the threads;

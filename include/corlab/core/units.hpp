@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file units.hpp
 /// corlab works in SI units everywhere: m, kg, s, N, Pa, J. Every physical field documents its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file dataset_export.hpp
 /// From a finished (or partly finished) dataset sweep to the published dataset

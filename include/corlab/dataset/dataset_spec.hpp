@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file dataset_spec.hpp
 /// The dataset's design written as a `corlab sweep` spec: Sobol points of the box

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_box.hpp
 /// The dimensionless input box of corlab's FE restitution datasets (docs/theory/dataset.md) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file sobol_sequence.hpp
 /// Space-filling design: the Sobol low-discrepancy sequence (GSL gsl_qrng_sobol, Bratley & Fox

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file calibration.hpp
 /// Exact calibration of contact-law parameters to a target restitution, by integrating the

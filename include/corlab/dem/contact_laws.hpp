@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file contact_laws.hpp
 /// Normal contact-force laws for DEM and multibody codes, as small pure structs. Every law gives

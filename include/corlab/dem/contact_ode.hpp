@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file contact_ode.hpp
 /// Two-body head-on impact under a normal contact law: m* delta'' = -F(delta, delta', history),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file dem_export.hpp
 /// Calibration of every particle-type pair (and each type against a flat wall) to a target

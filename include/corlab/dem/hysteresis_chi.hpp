@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hysteresis_chi.hpp
 /// The damping factor chi of F = K delta^n (1 + chi delta_dot / v_in) for a target restitution e:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file lammps_mapping.hpp
 /// What LAMMPS (29Sep2021, Debian 12 `lammps` 20220106) does with the restitution it is given,

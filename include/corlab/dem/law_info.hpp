@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file law_info.hpp
 /// Citation and verification status of the contact laws and the published chi(e) formulas

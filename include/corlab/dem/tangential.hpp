@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file tangential.hpp
 /// The tangential (Mindlin) part of a DEM export: Coulomb friction mu and the Mindlin no-slip

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file time_step.hpp
 /// The time step each DEM export recommends: the shortest Hertz contact time of its pairs (at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file uniform_table.hpp
 /// Piecewise-linear table on a uniform grid, for nanosecond evaluation of chi(e) or e(v) inside a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file viscoelastic_restitution.hpp
 /// Analytic e(v) of the viscoelastic Hertz law (ViscoelasticHertzLaw, contact_laws.hpp:

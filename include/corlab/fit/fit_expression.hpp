@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file fit_expression.hpp
 /// Nonlinear least squares for user model forms written as text, e.g.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file linear_regression.hpp
 /// Ordinary linear least squares y = X b + noise, solved through the singular value decomposition

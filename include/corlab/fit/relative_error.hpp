@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file relative_error.hpp
 /// Relative errors of model values against reference values and their statistics (n, RMS, worst,

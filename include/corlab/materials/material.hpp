@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file material.hpp
 /// An isotropic material as the impact models and the solver see it (SI units).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file material_database.hpp
 /// The built-in material database (data/materials.toml) and the textual material spec used by

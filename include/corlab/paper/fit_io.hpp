@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file fit_io.hpp
 /// Glue between results tables, the fitters and JSON: samples from a results.csv, JSON forms of

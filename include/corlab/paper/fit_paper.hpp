@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file fit_paper.hpp
 /// The model forms of Ma et al. (2023), fitted by linear least squares with inference:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file reproduce.hpp
 /// The pipeline of Ma et al. (2023) end to end: run the studies of a preset (studies/<preset>/

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file yield_velocity.hpp
 /// Yield velocity straight from the impact solver: the lowest impact velocity whose run leaves

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file corlab2026.hpp
 /// corlab's own model of the coefficient of restitution, fitted to corlab's FE restitution

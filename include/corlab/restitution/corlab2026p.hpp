@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file corlab2026p.hpp
 /// corlab's CoR model over particle pairs (issue 26): corlab2026's kernel (corlab2026.hpp) for a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file first_yield.hpp
 /// Onset of yield in a Hertz impact of two bodies (sphere on a flat). Both bodies carry the same

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_pair.hpp
 /// The material quantities every analytic CoR model needs for an elastic sphere hitting an

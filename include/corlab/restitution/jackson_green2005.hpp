@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file jackson_green2005.hpp
 /// Jackson R.L., Green I. (2005), "A finite element study of elasto-plastic hemispherical

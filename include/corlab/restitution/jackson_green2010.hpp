@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file jackson_green2010.hpp
 /// Jackson R.L., Green I., Marghitu D.B. (2010), "Predicting the coefficient of restitution of

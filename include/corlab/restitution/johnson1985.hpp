@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file johnson1985.hpp
 /// Johnson K.L. (1985), Contact Mechanics, Cambridge University Press, ch. 11: yield onset of a

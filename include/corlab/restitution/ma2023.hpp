@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file ma2023.hpp
 /// Seed model: Ma J., Jie H., Bai M., Peng J., Chen H., Chen D. (2023), "Research on normal

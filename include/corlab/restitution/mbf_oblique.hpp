@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file mbf_oblique.hpp
 /// The elastic oblique impact of a sphere on a flat with Coulomb friction and tangential

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file model_info.hpp
 /// Descriptive metadata of an analytic coefficient-of-restitution (CoR) model: citation,

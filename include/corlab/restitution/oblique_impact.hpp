@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file oblique_impact.hpp
 /// Rigid-body theory of an oblique impact of a sphere on a fixed flat with Coulomb friction: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file registry.hpp
 /// Runtime registry of the analytic CoR models: lookup by name (CLI, Python, studies), list with

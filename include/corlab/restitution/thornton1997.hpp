@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file thornton1997.hpp
 /// Thornton C. (1997), "Coefficient of restitution for collinear collisions of

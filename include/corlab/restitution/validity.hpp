@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file validity.hpp
 /// Whether a CoR model is asked about the conditions it was made for: its calibration box in the

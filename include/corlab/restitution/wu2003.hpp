@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file wu2003.hpp
 /// Wu C.-Y., Li L.-Y., Thornton C. (2003), "Rebound behaviour of spheres for plastic impacts",

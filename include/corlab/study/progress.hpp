@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file progress.hpp
 /// Progress display of a sweep on stderr: done/total, percent, elapsed time and ETA. On a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file results_table.hpp
 /// results.csv of a sweep: the column layout, one-row formatting, a crash-safe appender and a

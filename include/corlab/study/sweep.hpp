@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file sweep.hpp
 /// Runs every case of a sweep with the impact solver, one run per core, appending each finished

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file sweep_spec.hpp
 /// A parametric study ("sweep") read from TOML: the impact-config keys that every run shares,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file export_text.hpp
 /// Text pieces shared by the DEM exports: the header, fit comments, the time-step block.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "dem/detail/gsl_solvers.hpp"
 
 #include <gsl/gsl_errno.h>

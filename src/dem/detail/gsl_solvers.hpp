@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file gsl_solvers.hpp
 /// Thin wrappers of GSL's Brent root finder and Brent minimiser for std::function objectives.

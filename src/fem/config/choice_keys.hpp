@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file choice_keys.hpp
 /// The enums behind the config's choice keys (substrate.shape, solver.model): their values and

@@ -1,5 +1,6 @@
 // The table of ImpactConfig keys (config_key_table.hpp): unit, range, doc and accessor of each
 // key, in documentation order.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/config/config_key_table.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // The table of ImpactConfig keys behind config_keys.hpp: each key's public description and where
 // its value lives. Written in config_key_table.cpp; read by config_keys.cpp (parsing, range checks,

@@ -1,5 +1,6 @@
 // ImpactConfig keys (config_keys.hpp): the parsing, range checks, echo and help text that come
 // from the key table (config_key_table.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/config/config_keys.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // Limits that join config keys (config_limits.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/config/config_limits.hpp"
 
 #include <fmt/format.h>

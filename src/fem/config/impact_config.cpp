@@ -1,5 +1,6 @@
 // Validation and text input (--set key=value, TOML) of ImpactConfig. The keys, their units and
 // ranges are the table of config_keys.cpp; the limits that join keys are config_limits.cpp.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/config/impact_config.hpp"
 
 #include <fmt/format.h>

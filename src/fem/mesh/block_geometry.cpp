@@ -1,4 +1,5 @@
 // 2D block geometry: curves by arc length, Hermite curves, arcs, lines and Coons blocks.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/mesh/block_geometry.hpp"
 
 #include <algorithm>

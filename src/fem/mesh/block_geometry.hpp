@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file block_geometry.hpp
 /// 2D geometry of the generated mesh's structured blocks in the (r, z) section [m]: points, curves

@@ -1,4 +1,5 @@
 // The 3:1 transition's shape test (coarsening_layer.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/mesh/coarsening_layer.hpp"
 
 #include <algorithm>

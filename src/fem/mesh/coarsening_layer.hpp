@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file coarsening_layer.hpp
 /// Coarsening a structured grid by 3:1 transitions (docs/theory/mesh.md, "3:1 transitions"): a

@@ -1,4 +1,5 @@
 // What the Gmsh readers share (gmsh_common.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #ifdef CORLAB_WITH_GMSH
 #include "fem/mesh/gmsh_common.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // What the Gmsh readers share (gmsh_reader.cpp: the axisymmetric quads; gmsh_hex_reader.cpp: the
 // 3-D model's half sphere): one Gmsh session at a time, the crash-safe opening of a file, and the

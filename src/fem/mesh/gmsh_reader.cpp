@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/gmsh_reader.hpp"
 
 #include "corlab/core/error.hpp"

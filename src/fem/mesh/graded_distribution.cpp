@@ -1,4 +1,5 @@
 // 1D node distributions: one- and two-sided grading, fractions, fitting and splitting.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/mesh/graded_distribution.hpp"
 
 #include <algorithm>

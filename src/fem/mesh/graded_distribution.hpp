@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file graded_distribution.hpp
 /// 1D node distributions of the generated mesh (docs/theory/mesh.md, "1D graded distribution"):

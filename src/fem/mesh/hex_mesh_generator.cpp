@@ -1,4 +1,5 @@
 // The half sphere's cube-sphere O-grid (hex_mesh_generator.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // Adds structured blocks to a mesh, merging the nodes they share within a body.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/mesh/mesh_builder.hpp"
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file mesh_builder.hpp
 /// Adds the generated blocks to a Mesh, one body at a time, sharing nodes between the blocks of a

@@ -1,6 +1,7 @@
 // Built-in impact mesh: options, their validation, and the two bodies' generators
 // (src/fem/mesh: graded_distribution, block_geometry, mesh_builder, sphere_ogrid,
 // substrate_layout).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/mesh_generator.hpp"
 
 #include <algorithm>

@@ -1,6 +1,7 @@
 // The sphere's O-grid: sizes and angles, the core's curved edges, the four blocks, surface nodes.
 // Points (docs/theory/mesh.md): P (lowest), Q (phi = alpha), Q' (phi = beta) and T (top) on the
 // surface; A, K, K', A' the core's corners inside them.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/mesh/sphere_ogrid.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file sphere_ogrid.hpp
 /// The sphere's multi-block O-grid (docs/theory/mesh.md, "Sphere: multi-block O-grid"): bottom,

@@ -1,4 +1,5 @@
 // The substrate: tensor grid, three blocks around the zone, their explicit cost and the choice.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/mesh/substrate_layout.hpp"
 
 #include <algorithm>

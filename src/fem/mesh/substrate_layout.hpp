@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file substrate_layout.hpp
 /// The substrate's mesh (docs/theory/mesh.md, "Substrate"): a tensor grid or three blocks around

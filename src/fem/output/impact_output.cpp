@@ -1,4 +1,5 @@
 // History CSV and summary JSON of one impact.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/output/impact_output.hpp"
 
 #include <fmt/format.h>

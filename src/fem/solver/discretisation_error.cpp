@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/discretisation_error.hpp"
 
 #include <fmt/format.h>

@@ -1,6 +1,7 @@
 // The solver's hot loops (see element_loop.hpp). Compiled with -fopenmp-simd -fno-math-errno
 // (src/CMakeLists.txt) so that the lane loops vectorise, and for each SimdLevel
 // (simd_variants.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/element_loop.hpp"
 
 #include <algorithm>

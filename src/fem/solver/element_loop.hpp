@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file element_loop.hpp
 /// The solver's two hot loops over structure-of-arrays state: the element loop (stress update,

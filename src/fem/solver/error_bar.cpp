@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/error_bar.hpp"
 
 #include <Eigen/Dense>

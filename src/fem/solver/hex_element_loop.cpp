@@ -1,5 +1,6 @@
 // The 3-D solver's element pass (hex_element_loop.hpp). Compiled with -fopenmp-simd
 // -fno-math-errno (src/CMakeLists.txt), like element_loop.cpp, so that the lane loop vectorises.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/hex_element_loop.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hex_element_loop.hpp
 /// The 3-D solver's element pass (hex_model.hpp): blocks of elements gathered into lanes, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hex_model.hpp
 /// The 3-D explicit impact solver (issue 27; docs/theory/solver3d.md), run by simulate() for

@@ -1,4 +1,5 @@
 // The table of history columns (history_columns.hpp): one entry per column.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/history_columns.hpp"
 
 #include <array>

@@ -1,4 +1,5 @@
 // ImpactModel: the constant data of one run, and the initial state.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/impact_model.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_model.hpp
 /// The constant part of one impact run (what MuJoCo calls the model, Laghos the operator's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_state.hpp
 /// The mutable part of one impact run (MuJoCo's data): nodal kinematics and forces, element

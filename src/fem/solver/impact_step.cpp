@@ -1,4 +1,5 @@
 // One central-difference step: kinematics, then element and contact forces.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/impact_step.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_step.hpp
 /// One central-difference step, in the two halves between which the energy balance and the

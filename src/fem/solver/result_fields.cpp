@@ -1,4 +1,5 @@
 // The table of result fields (result_fields.hpp): one entry per field.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/result_fields.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // The energy balance, history rows and stop rule of a run (run_bookkeeping.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/run_bookkeeping.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file run_bookkeeping.hpp
 /// What every time loop of an impact run keeps the same way, whatever its geometry (axisymmetric

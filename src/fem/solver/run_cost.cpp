@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/run_cost.hpp"
 
 #include "corlab/fem/mesh/mesh_generator.hpp"

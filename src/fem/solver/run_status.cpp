@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/run_status.hpp"
 
 #include <array>

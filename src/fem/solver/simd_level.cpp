@@ -1,4 +1,5 @@
 // The hot loops' instruction-set level (simd_level.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/simd_level.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file simd_variants.hpp
 /// One hot loop compiled for each SimdLevel (simd_level.hpp), chosen per call. Private to the

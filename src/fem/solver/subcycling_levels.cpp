@@ -1,5 +1,6 @@
 // Element subcycling's level assignment (docs/theory/solver.md section 11): each element's level
 // from its stable step, the neighbour and interface rules, and the level-sorted ranges.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/subcycling_levels.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file subcycling_levels.hpp
 /// The subcycling levels of an impact model (docs/theory/solver.md section 11).

@@ -1,4 +1,5 @@
 // The subcycling's energy in transit (see transit_ledger.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/transit_ledger.hpp"
 
 #include <cmath>

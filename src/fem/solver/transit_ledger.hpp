@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file transit_ledger.hpp
 /// The subcycling's energy in transit (docs/theory/solver.md section 11): an element of level

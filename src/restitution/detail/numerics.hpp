@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file numerics.hpp
 /// Small numerical kernels for the energy-integral CoR models and their tests: composite

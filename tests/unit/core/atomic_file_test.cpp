@@ -1,4 +1,5 @@
 // File replacement (atomic_file.hpp): new content in one step, no temporary left behind.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/atomic_file.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // InputError messages: one line naming field, value and constraint.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/error.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // The interrupt handler (interrupt.hpp): SIGINT, SIGTERM and SIGHUP set the flag, the previous
 // handlers come back, a second signal ends the process.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/interrupt.hpp"
 
 #include <gtest/gtest.h>

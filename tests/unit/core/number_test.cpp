@@ -1,4 +1,5 @@
 // The one strict number parser (core/number.hpp): what every reader of numbers accepts.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/number.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // run_process: exit status of a program started without a shell; a missing program.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/process.hpp"
 
 #include <gtest/gtest.h>

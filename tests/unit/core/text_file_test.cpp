@@ -1,5 +1,6 @@
 // Bounded, checked input files (text_file.hpp): special files, caps, pipes, UTF-8, BOM (issue 31
 // item 1: `sweep /dev/zero`, `fit /dev/zero` grew to 5 GB and ended in bad_alloc).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/text_file.hpp"
 
 #include <fcntl.h>

@@ -1,4 +1,5 @@
 // Text helpers (text.hpp, header-only): trim and one_line.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/text.hpp"
 
 #include <gtest/gtest.h>

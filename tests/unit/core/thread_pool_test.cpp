@@ -1,4 +1,5 @@
 // The thread pool (thread_pool.hpp): parallel_for, worker_count and the sweep's StreamingPool.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/core/thread_pool.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // Dataset export from a sweep directory written with synthetic results: rows in design order,
 // dimensionless inputs, inclusion rule, columns.json matching the header, provenance lines.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/dataset_export.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // The dataset's sweep spec (dataset_spec.hpp): the committed studies/dataset/fe_restitution.toml
 // is what the design writes.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/dataset_spec.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // The dimensionless impact box (impact_box.hpp): a design point's settings give back the point,
 // and every point lies inside the box and its speed bounds.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/impact_box.hpp"
 
 #include <gtest/gtest.h>

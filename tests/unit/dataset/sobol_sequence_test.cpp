@@ -1,5 +1,6 @@
 // The Sobol sequence (sobol_sequence.hpp): stratification of every power-of-two prefix, the
 // dimensions GSL has.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/sobol_sequence.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Fits of one-parameter laws to a target e(v), tables and their interpolation error.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/calibration.hpp"
 
 #include <gtest/gtest.h>

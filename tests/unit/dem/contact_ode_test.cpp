@@ -1,5 +1,6 @@
 // The impact integrator against closed forms: Hertz (e = 1, contact time, max overlap), linear
 // spring-dashpot, Thornton (1997) closed-form CoR, Tsuji/LAMMPS mapping.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/contact_ode.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Calibration of type pairs and the text exports (LAMMPS, LIGGGHTS, YADE, CSV, JSON).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/dem_export.hpp"
 
 #include <fmt/format.h>

@@ -1,5 +1,6 @@
 // Exact hysteresis-damping relation chi (1+e) = ln[(1+chi)/(1-e chi)]: closed form, ODE, published
 // approximations.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/hysteresis_chi.hpp"
 
 #include <gtest/gtest.h>

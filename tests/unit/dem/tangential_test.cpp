@@ -1,4 +1,5 @@
 // The tangential part of the DEM exports (--friction): Mindlin's G*, each code's keywords.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/tangential.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // Tests of time_step.cpp: the Hertz contact time and the measured steps-per-contact rules.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dem/time_step.hpp"
 
 #include <gtest/gtest.h>

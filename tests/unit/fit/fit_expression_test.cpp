@@ -1,4 +1,5 @@
 // fit_expression(): NIST StRD Misra1a (certified values), user forms over columns, bad input.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fit/fit_expression.hpp"
 
 #include <gtest/gtest.h>

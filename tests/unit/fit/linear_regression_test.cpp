@@ -1,4 +1,5 @@
 // fit_linear(): NIST StRD Norris (certified values), synthetic recovery, t quantiles, bad input.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fit/linear_regression.hpp"
 
 #include <gtest/gtest.h>

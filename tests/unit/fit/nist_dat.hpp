@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Reader for the NIST StRD transcriptions in data/nist/*.dat (test support).
 //   "# certified <name> <value> [sd <value>]" lines, then rows "y x".

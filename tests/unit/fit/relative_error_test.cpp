@@ -1,6 +1,7 @@
 // Relative errors and their statistics: the definition, what is left out, the signed worst, and
 // sums in numpy's order (the values below are numpy 1.24's; a plain running sum differs from
 // them in the last bits for n >= 8, which these tests catch).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fit/relative_error.hpp"
 
 #include <gtest/gtest.h>

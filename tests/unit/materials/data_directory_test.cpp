@@ -1,6 +1,7 @@
 // The data-directory rule (data_directory.cpp): $CORLAB_DATA_DIR, else the installed copy, else
 // the source tree; the study specs' folder. Where an installed corlab finds its data from any
 // prefix is checked by installing it (tests/regression/install_test.sh).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cstdlib>

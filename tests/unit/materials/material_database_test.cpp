@@ -1,6 +1,7 @@
 // The material database (material_database.hpp): the built-in entries, database files, the
 // material spec parser and every bad-input message of them (the data-directory rule:
 // data_directory_test.cpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/materials/material_database.hpp"
 
 #include <gtest/gtest.h>

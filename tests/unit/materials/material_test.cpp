@@ -1,5 +1,6 @@
 // Materials (material.hpp): derived moduli, pair quantities, validation and its bad-input
 // messages. The database, the spec parser and the data directory: material_database_test.cpp.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/materials/material.hpp"
 
 #include <gtest/gtest.h>

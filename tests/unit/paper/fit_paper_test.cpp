@@ -1,4 +1,5 @@
 // Forms (i)-(iv) of Ma et al. 2023 on synthetic data generated from the paper's own model.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/paper/fit_paper.hpp"
 
 #include <gtest/gtest.h>

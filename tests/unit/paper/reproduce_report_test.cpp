@@ -1,6 +1,7 @@
 // fit.json's errors of the models against the FE runs (reproduce_report.cpp): eq. 19's per group
 // and overall ("model_error"), and corlab2026 against eq. 19 on Table 2
 // ("corlab2026_versus_eq19"), on a comparison built by hand.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

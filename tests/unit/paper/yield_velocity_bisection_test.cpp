@@ -1,4 +1,5 @@
 // find_yield_onset(): bisection with a fake solver whose onset is known.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,6 @@
 // find_yield_onset_scaled(): elastic scaling + confirming bracket, with a fake solver whose
 // peak stress follows p0 ~ v^(2/5) (optionally with a bias the bracket has to catch).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,6 +2,7 @@
 # kCorlab2026Coefficients lacks, or one that is not a number is a build error naming it
 # (cmake/Corlab2026Coefficients.cmake, src/restitution/corlab2026.cpp).
 #   cmake -DSOURCE_DIR=... -DCXX=... -DWORK=... -P corlab2026_coefficients_test.cmake
+# SPDX-License-Identifier: BSD-3-Clause
 set(json ${SOURCE_DIR}/data/fe_restitution/model_fit.json)
 set(generator ${SOURCE_DIR}/cmake/Corlab2026Coefficients.cmake)
 file(REMOVE_RECURSE ${WORK})

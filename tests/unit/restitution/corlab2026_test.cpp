@@ -2,6 +2,7 @@
 // non-increasing in v over random inputs in and beyond the dataset's box, Johnson's v^(-1/4) at
 // high speed for perfect plasticity, registered, and the shipped coefficients those of
 // data/fe_restitution/model_fit.json.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/corlab2026.hpp"
 
 #include <gtest/gtest.h>

@@ -4,6 +4,7 @@
 // continuous there, within (0, 1] and non-increasing in v for random pairs far outside the
 // dataset's box; the coefficients those of data/fe_restitution_pairs/model_fit.json; and issue
 // 26's user case within its 6 %.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/corlab2026p.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // First yield of an impact pair (first_yield.hpp): the weaker body yields first, at Thornton's
 // velocity.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/first_yield.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // Jackson-Green 2005 critical quantities and loading law; Jackson-Green-Marghitu 2010 energy
 // models (J-G1, J-G2) and empirical fit.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,5 @@
 // Ma et al. 2023 seed model: golden values of the corlab model reference (sec. 1.3, 8, 9).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/ma2023.hpp"
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 // measurements agree closely with Maw et al.'s theory; this checks that ours does, in the
 // small-angle regime where the tangential compliance matters (theta <= 31.5 deg), and
 // that the contact point's velocity reverses where and as much as measured.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,6 +2,7 @@
 // identity where the contact slides, the gross-sliding bound 4 chi - 1, the no-slip limit as
 // psi1 -> 0, continuity at the regimes' boundaries, the reversal of the contact point's velocity
 // (MBF 1981's disc and Kharaz et al.'s alumina on glass), the discretisation's convergence.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/mbf_oblique.hpp"
 
 #include <gtest/gtest.h>

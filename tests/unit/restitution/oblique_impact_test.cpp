@@ -1,5 +1,6 @@
 // Rigid-body theory of an oblique impact with Coulomb friction (oblique_impact.hpp): the sliding
 // identity, the rolling and sticking rebounds, the regimes' meeting point, energy, bad input.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/oblique_impact.hpp"
 
 #include <gtest/gtest.h>

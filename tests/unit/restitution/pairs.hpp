@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Material pairs of the seed paper (Ma et al. 2023, Table 3) for the restitution tests.
 #include "corlab/materials/material_database.hpp"

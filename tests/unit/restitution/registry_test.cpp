@@ -1,4 +1,5 @@
 // Registry: lookup, metadata, checked evaluation, and properties that every model must have.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/registry.hpp"
 
 #include <gtest/gtest.h>

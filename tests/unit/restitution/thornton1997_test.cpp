@@ -1,5 +1,6 @@
 // Thornton (1997): golden values, asymptote, and the closed form reproduced by integrating the
 // load/unload contact law numerically.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/thornton1997.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // Validity of the CoR models (validity.cpp): the calibration-box check per velocity and the
 // warnings built on it.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/restitution/validity.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Wu, Li & Thornton 2003 (UNVERIFIED candidate form B) and Johnson 1985 fully plastic rebound.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,5 @@
 // results.csv: CSV quoting, number round trip, appender + reader, resume preparation.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/results_table.hpp"
 
 #include <gtest/gtest.h>

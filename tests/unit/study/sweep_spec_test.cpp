@@ -1,4 +1,5 @@
 // Sweep spec: parsing, expansion (counts, order, ids) and every bad-spec message.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/sweep_spec.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // run_sweep machinery with injected runners (no solver): rows, resume, interruption, failures,
 // threads. The end-to-end run with the real solver is tests/regression/sweep_solver_test.cpp.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/sweep.hpp"
 
 #include <gtest/gtest.h>

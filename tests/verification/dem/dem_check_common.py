@@ -2,6 +2,7 @@
 scripts/dem_time_step.py: exports, drop tests (a sphere on the wall, two spheres head-on, each of
 its own type's radius and density, an oblique frictionless impact) in Debian's codes, and the
 cases checked."""
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import math
 import os

@@ -8,6 +8,7 @@ lammps_nopython.in: e must be within the time-step error (1e-3) of the law the f
 within the fragment's stated max |de| + 1e-3 of the target. Cases: dem_check_common.py.
 usage: dem_lammps_check.py CORLAB_BIN LMP_BIN WORK_DIR [--report FILE]
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import os
 import sys
 

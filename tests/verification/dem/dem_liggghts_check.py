@@ -7,6 +7,7 @@ type), whichever the export chose; e within 1e-3 of that law's e and within the 
 + 1e-3 of the target.
 usage: dem_liggghts_check.py CORLAB_BIN LIGGGHTS_BIN WORK_DIR [--report FILE]
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import os
 import sys
 

@@ -20,6 +20,7 @@ histories) and any energy gain (ratio above 1).
 usage: dem_oblique_check.py CORLAB LMP LIGGGHTS YADE WORK_DIR [--report FILE] [--table-out DIR]
                             [--fe-table FILE]
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import csv
 import math
 import os

@@ -4,6 +4,7 @@ z = 0) at speed v [m/s] and angle theta [deg] from the normal, without gravity, 
 own time step. Each code runs every angle in one process and prints per angle the rebound
 velocity (vx, vz) [m/s] and spin omega_y [rad/s]; positive omega_y is the rolling sense of the
 incident motion (+x), the convention of data/kharaz2001. Used by dem_oblique_check.py."""
+# SPDX-License-Identifier: BSD-3-Clause
 import math
 import os
 

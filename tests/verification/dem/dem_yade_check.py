@@ -8,6 +8,7 @@ oblique frictionless impact (glass on copper, v_n = 2, v_t = 1.5 m/s) whose norm
 e(v_n), not e(|v|).
 usage: dem_yade_check.py CORLAB_BIN YADE_BIN WORK_DIR [--report FILE]
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import os
 import sys
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file config_keys.hpp
 /// The one table of ImpactConfig text keys (`--set key=value`, TOML tables, sweep specs): for every

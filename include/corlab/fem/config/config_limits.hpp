@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file config_limits.hpp
 /// Limits that join several config keys, checked before a run starts so that a meaningless or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_config.hpp
 /// Everything that defines one impact simulation. Defaults reproduce Ma et al. 2023, Table 1, at

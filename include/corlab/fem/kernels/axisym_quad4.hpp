@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file axisym_quad4.hpp
 /// Kinematics of the 4-node axisymmetric quadrilateral with one-point (uniform-strain)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file axisym_tensor.hpp
 /// Symmetric second-order tensor of an axisymmetric (torsion-free) state: the four non-zero

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file bulk_viscosity.hpp
 /// Bulk viscosity as in ABAQUS/Explicit (Analysis User's Guide, "Bulk viscosity"; von Neumann &

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file coulomb_friction.hpp
 /// Penalty-regularised Coulomb friction at one contact point, integrated by a return map

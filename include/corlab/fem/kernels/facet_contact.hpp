@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file facet_contact.hpp
 /// Projection of a slave node on a bilinear master facet (the 3-D counterpart of

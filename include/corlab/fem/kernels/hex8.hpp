@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hex8.hpp
 /// Kinematics of the 8-node hexahedron with one-point (uniform-strain) integration, the 3-D

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hourglass.hpp
 /// Flanagan & Belytschko (1981, Int. J. Numer. Meth. Eng. 17:679, eqs. 52-59) hourglass

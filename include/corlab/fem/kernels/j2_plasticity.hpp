@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file j2_plasticity.hpp
 /// Isotropic hypoelastic material with J2 (von Mises) plasticity and linear isotropic hardening,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file objective_rate.hpp
 /// Incremental rotation of the stress for the Jaumann rate with the Hughes & Winget (1980,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file penalty_contact.hpp
 /// Frictionless node-to-segment penalty contact (Hallquist, Goudreau & Benson 1985, Comput.

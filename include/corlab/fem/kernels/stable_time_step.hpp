@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file stable_time_step.hpp
 /// Stable time step of the explicit central-difference scheme for one element: the Courant

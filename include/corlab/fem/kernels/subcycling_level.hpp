@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file subcycling_level.hpp
 /// The element subcycling level rule (docs/theory/solver.md section 11), one for the solver's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file sym_tensor3.hpp
 /// Symmetric second-order tensor in 3-D Cartesian coordinates (x, y, z): stress [Pa], strain [-]

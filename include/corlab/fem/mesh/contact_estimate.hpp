@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file contact_estimate.hpp
 /// A-priori estimates of the contact of an elastic sphere on a substrate: the Hertz reference

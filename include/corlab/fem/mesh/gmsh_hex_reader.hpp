@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file gmsh_hex_reader.hpp
 /// Reads the 3-D model's half sphere from a Gmsh file (mesh.file with the 3-D model); the flat,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file gmsh_reader.hpp
 /// Reads an axisymmetric two-body quad mesh from a Gmsh file (via the Gmsh C++ API).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hex_mesh.hpp
 /// 3-D hexahedral mesh of an impact: the half model (y >= 0) cut by the plane that holds the

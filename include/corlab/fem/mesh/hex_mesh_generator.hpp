@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hex_mesh_generator.hpp
 /// The structured hexahedral mesh of the 3-D impact model (docs/theory/mesh.md, "3-D mesh"):

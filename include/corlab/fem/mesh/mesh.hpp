@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file mesh.hpp
 /// Axisymmetric two-body mesh: an elastic sphere above an elastic-plastic substrate.

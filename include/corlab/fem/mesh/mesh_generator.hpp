@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file mesh_generator.hpp
 /// Built-in structured quad mesh of the axisymmetric impact model (see docs/theory/mesh.md):

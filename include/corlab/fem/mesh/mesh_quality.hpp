@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file mesh_quality.hpp
 /// Shape and size measures of a quad mesh (pure functions, per body).

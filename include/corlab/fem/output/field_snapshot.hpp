@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file field_snapshot.hpp
 /// The solvers' fields at one instant, for VTU output (SimulationControl::on_fields for the

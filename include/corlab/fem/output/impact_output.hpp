@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_output.hpp
 /// Writers for one impact: the history table (CSV) and the summary (JSON, with the config echoed).

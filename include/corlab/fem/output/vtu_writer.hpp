@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file vtu_writer.hpp
 /// VTK XML unstructured-grid (.vtu, ASCII) output of the meshes for ParaView: the axisymmetric

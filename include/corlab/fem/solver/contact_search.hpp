@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file contact_search.hpp
 /// Closest-segment search of one slave node on the master polyline (the substrate surface,

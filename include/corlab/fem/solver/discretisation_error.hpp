@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file discretisation_error.hpp
 /// Discretisation-error estimate of a run's restitution coefficient from companion runs on

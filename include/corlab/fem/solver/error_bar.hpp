@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file error_bar.hpp
 /// Error bars of a run's restitution coefficient from the same case on systematically coarser

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file explicit_solver.hpp
 /// The explicit axisymmetric impact solver on a given mesh (simulate() builds the mesh from the

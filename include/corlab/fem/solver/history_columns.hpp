@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file history_columns.hpp
 /// The one table of the time histories' columns (impact_result.hpp HistoryColumns): name, SI

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file impact_result.hpp
 /// What one impact simulation returns: the summary numbers and the time histories.

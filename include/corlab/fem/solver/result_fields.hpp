@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file result_fields.hpp
 /// The one table of result fields: name, SI unit, description, accessor and where the field is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file run_cost.hpp
 /// A-priori cost of one impact run, for scheduling (longest first) and budgets: the mesh the run

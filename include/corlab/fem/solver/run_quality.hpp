@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file run_quality.hpp
 /// Quality guards on a finished run: a run whose numerical side effects exceed these limits is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file run_status.hpp
 /// How one impact run ended. Only `kSeparated` is a clean rebound whose e may be reported; every

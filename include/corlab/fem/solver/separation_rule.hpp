@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file separation_rule.hpp
 /// The stop rule that defines e: contact bookkeeping (first and last step with a penetrating

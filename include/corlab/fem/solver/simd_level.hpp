@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file simd_level.hpp
 /// The instruction set the solver's hot loops (element loop, nodal update) run with. They are

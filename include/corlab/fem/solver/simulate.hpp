@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file simulate.hpp
 /// Entry point of the explicit axisymmetric impact solver. Reentrant: no globals, so a study may

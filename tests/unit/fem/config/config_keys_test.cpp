@@ -1,5 +1,6 @@
 // The one table of config keys (config_keys.hpp): it drives --help, and every key takes the text
 // of its default.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/config/config_keys.hpp"
 
 #include <gtest/gtest.h>

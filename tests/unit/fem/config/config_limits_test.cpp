@@ -1,5 +1,6 @@
 // Inputs refused at the boundary (issue 12 item 2): every reproducer of the issue that is an
 // input problem gives one InputError line naming the field, its value and the limit.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/config/config_limits.hpp"
 
 #include <gtest/gtest.h>

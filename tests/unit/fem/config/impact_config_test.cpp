@@ -1,4 +1,5 @@
 // ImpactConfig text input and validation (impact_config.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/config/impact_config.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Patch tests of the one-point axisymmetric quad (axisym_quad4.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/axisym_quad4.hpp"
 
 #include <gtest/gtest.h>

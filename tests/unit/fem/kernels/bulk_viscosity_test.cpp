@@ -1,4 +1,5 @@
 // Bulk viscosity (bulk_viscosity.hpp) and the stable step (stable_time_step.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/bulk_viscosity.hpp"
 
 #include <gtest/gtest.h>

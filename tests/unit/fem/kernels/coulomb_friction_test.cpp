@@ -1,6 +1,7 @@
 // Penalty Coulomb friction (coulomb_friction.hpp): stick below mu f_n, slip capped at mu f_n
 // opposing the motion, the dissipation of a sliding block equal to mu N x distance, the energy
 // of the tangential spring accounted for, and a turning normal keeping the force's magnitude.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/coulomb_friction.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // Node-on-facet projection (facet_contact.hpp): exact on a flat tilted facet, weights that sum
 // to one and reproduce the closest point, the gap's sign, and a warped facet's closest point.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/facet_contact.hpp"
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 // (exact for both), linear velocity fields reproduced exactly, interior nodes of a distorted
 // patch in equilibrium under a uniform stress, hourglass vectors blind to linear fields, the
 // cube's characteristic length.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/hex8.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Flanagan-Belytschko hourglass control (hourglass.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/hourglass.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // J2 radial return (j2_plasticity.hpp) against the analytic uniaxial-stress response.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/j2_plasticity.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Hughes-Winget incremental rotation (objective_rate.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/objective_rate.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Node-to-segment penalty contact (penalty_contact.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/penalty_contact.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
 // The 3-D model's half sphere from a Gmsh file (gmsh_hex_reader.hpp): corlab's own sphere written
 // as MSH 2.2 reads back node for node and gives the built-in run's result; a file that is not
 // the half sphere is refused with the one-line error.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/gmsh_hex_reader.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // Gmsh mesh input (gmsh_reader.hpp) on data/meshes/example_impact.{geo,msh}.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/gmsh_reader.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // The 3-D half sphere (hex_mesh_generator.hpp): valid elements that fill the half ball, a
 // surface on the sphere, the symmetry plane, and h_contact at the lowest point.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 
 #include <gtest/gtest.h>

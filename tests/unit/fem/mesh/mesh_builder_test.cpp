@@ -1,4 +1,5 @@
 // The generator's block and quad assembly (src/fem/mesh/mesh_builder.hpp): the 3:1 transition.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/mesh/mesh_builder.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // Hertz reference and predicted contact radius (contact_estimate.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

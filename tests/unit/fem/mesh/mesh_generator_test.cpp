@@ -1,4 +1,5 @@
 // Built-in impact mesh (mesh_generator.hpp): node sets, shape, sizes, scaling.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/mesh_generator.hpp"
 
 #include <gtest/gtest.h>

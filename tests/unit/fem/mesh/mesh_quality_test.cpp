@@ -1,4 +1,5 @@
 // Element quality measures (mesh_quality.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/mesh_quality.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // History CSV and summary JSON writers (impact_output.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/output/impact_output.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // VTU output (vtu_writer.hpp): a well-formed file with the declared arrays.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/output/vtu_writer.hpp"
 
 #include <fmt/format.h>

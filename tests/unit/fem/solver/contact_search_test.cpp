@@ -1,4 +1,5 @@
 // The cursor search of contact_search.hpp on a flat and a kinked master polyline.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/contact_search.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // The coarsened companion configs and the run with its error estimate (discretisation_error.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/discretisation_error.hpp"
 
 #include <gtest/gtest.h>

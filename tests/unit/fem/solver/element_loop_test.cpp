@@ -2,6 +2,7 @@
 // gather, lane and scatter bookkeeping against one element at a time, an exact uniform-strain
 // patch, the inverted element's index, the subcycled pass against the plain one, the nodal
 // updates against their formulas, and every SIMD level against the baseline.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/element_loop.hpp"
 
 #include <gtest/gtest.h>

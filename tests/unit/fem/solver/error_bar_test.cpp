@@ -1,5 +1,6 @@
 // Error-bar estimators over several grids (error_bar.hpp): the least-squares fits recover exact
 // power laws, the estimators' limits, bad input.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/error_bar.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // The explicit solver on small meshes (explicit_solver.hpp): stability at the default safety
 // factor, energy balance, momentum, cancel, bad meshes.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/explicit_solver.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,7 @@
 // The 3-D model's contact with the deformable flat (hex_contact.cpp): a slave finds the facet under
 // it after the flat's top has moved sideways by more than one face or risen above z = 0, as a
 // yielding flat's does at 30 m/s (about 1 mm sideways and 0.5 mm up for the paper's pair).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

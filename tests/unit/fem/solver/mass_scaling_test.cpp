@@ -3,6 +3,7 @@
 // (the step floor) and each element's stable step to at least F x the floor, the whole factor at
 // the contact, adds at most the allowed mass, keeps the contact's physical penalty, is refused
 // where the added inertia would be felt, and keeps e.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // The result-field table (result_fields.hpp) drives summary.json and results.csv.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/result_fields.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // estimate_run_cost(): the a-priori cost used to schedule sweeps longest first.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/run_cost.hpp"
 
 #include <gtest/gtest.h>

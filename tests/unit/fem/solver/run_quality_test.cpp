@@ -1,4 +1,5 @@
 // Quality guards of run_quality.hpp: each limit trips on its own and names itself.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/run_quality.hpp"
 
 #include <gtest/gtest.h>

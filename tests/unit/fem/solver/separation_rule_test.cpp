@@ -1,4 +1,5 @@
 // The stop rule that defines e (separation_rule.hpp), driven by hand-made contact histories.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/separation_rule.hpp"
 
 #include <gtest/gtest.h>

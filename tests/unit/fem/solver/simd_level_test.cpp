@@ -1,4 +1,5 @@
 // The hot loops' instruction-set level (simd_level.hpp): names, the supported list, selection.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/simd_level.hpp"
 
 #include <gtest/gtest.h>

@@ -2,6 +2,7 @@
 // assignment respects each element's stable step, keeps the contact zone at level 0 and gives
 // each node the smallest level of its elements; a subcycled run closes its energy balance and
 // gives the e of the run without subcycling.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -5,6 +5,7 @@
 // exact potential energy, so kinetic (product form) + potential energy - the ledger must equal
 // the initial energy to round-off at every major-cycle boundary; without the ledger it is off by
 // O(dt^2).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "fem/solver/transit_ledger.hpp"
 
 #include <gtest/gtest.h>
