@@ -1,5 +1,6 @@
 // `corlab cache`: the FE result cache of `predict --model fe|auto` (study/result_cache.hpp).
 //   corlab cache list | size | clear [--other-builds] | path
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/core.h>
 
 #include <memory>

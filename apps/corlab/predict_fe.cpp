@@ -1,4 +1,5 @@
 // `corlab predict --model fe|auto` (predict_fe.hpp): FE-backed e(v) with error bars.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "predict_fe.hpp"
 
 #include <fmt/core.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file predict_fe.hpp
 /// `corlab predict --model fe|auto` (study/fe_curve.hpp, dataset/auto_restitution.hpp): its

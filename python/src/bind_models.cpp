@@ -1,4 +1,5 @@
 // Analytic CoR models: corlab.models(), corlab.predict(), corlab.yield_velocity().
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

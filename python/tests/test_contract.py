@@ -1,6 +1,7 @@
 """Issue 42 reproducers through the Python module (the analytic models, the solver's inputs, the
 error bar): bad input is a one-line ValueError naming the arrays or the field, never a crash, a
 RuntimeError or a NaN."""
+# SPDX-License-Identifier: BSD-3-Clause
 import numpy as np
 import pytest
 

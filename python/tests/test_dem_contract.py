@@ -1,5 +1,6 @@
 """corlab.dem's contract (issue 42): bad values end in a one-line ValueError naming the field, and
 the exported scripts hold a table's name as data (comments), never as code."""
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import math
 

@@ -1,6 +1,7 @@
 """`corlab predict --model fe|auto`, `corlab cache` and corlab.predict_curve: FE e(v) with error
 bars from a result cache (study/fe_curve.hpp, result_cache.hpp, dataset/auto_restitution.hpp).
 Each FE speed costs four runs (the error estimate): the tests keep to a few speeds."""
+# SPDX-License-Identifier: BSD-3-Clause
 import csv
 import io
 import json

@@ -1,4 +1,5 @@
 // corlab2026p where it is accurate, the FE elsewhere (auto_restitution.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/auto_restitution.hpp"
 
 #include <fmt/format.h>

@@ -1,5 +1,6 @@
 // The user's side of a DEM export: labelled materials, --pair and --pair-table, and the checks of
 // the whole spec (labels, radii, targets, the pairs named).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "dem/detail/export_spec.hpp"
 
 #include <fmt/format.h>

@@ -1,6 +1,7 @@
 // `corlab reproduce`, the progress of the whole reproduction: every run's cost estimated before
 // anything runs (fem::estimate_run_cost), so that one line shows the fraction of the whole done
 // and the time left at the rate measured so far (study::WorkProgress).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <exception>
 #include <set>
 #include <string>

@@ -1,4 +1,5 @@
 // FE e(v) of a pair on demand (fe_curve.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/fe_curve.hpp"
 
 #include <fmt/format.h>

@@ -1,4 +1,5 @@
 // A monotone cubic in ln v between FE speeds (fe_interpolation.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/fe_interpolation.hpp"
 
 #include <algorithm>

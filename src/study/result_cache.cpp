@@ -1,4 +1,5 @@
 // The on-disk result cache (result_cache.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/result_cache.hpp"
 
 #include <dlfcn.h>

@@ -1,5 +1,6 @@
 // Validation of a sweep spec: each setting where it was written, then every run whole
 // (sweep_spec_detail.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file sweep_spec_detail.hpp
 /// The settings arithmetic of a sweep spec and its validation, shared by sweep_spec.cpp (parsing,

@@ -2,6 +2,7 @@
 # Issue 42 reproducers through the built CLI (analytic models, work caps, sweeps): each ends in
 # one "corlab: error:" line with exit 2, or a stated warning, within seconds; never NaN or inf.
 # Usage: contract_cli_test.sh CORLAB_BIN WORKDIR   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 work=$2
 rm -rf "$work" && mkdir -p "$work"

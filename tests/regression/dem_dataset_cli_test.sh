@@ -3,6 +3,7 @@
 # in exit 2 with one "corlab: error: invalid <field> ..." line (never exit 3, a long run or a
 # silently misplaced value), and a spec path holding a line break and a [grid] stays a comment.
 # Usage: dem_dataset_cli_test.sh CORLAB_BIN WORKDIR   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 work=$2
 rm -rf "$work" && mkdir -p "$work"

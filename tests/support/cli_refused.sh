@@ -1,6 +1,7 @@
 # Shared by the CLI regression scripts (source it after setting corlab and work):
 # refused FIELD ARGS...: `corlab ARGS` exits 2 with one stderr line naming FIELD and nothing on
 # stdout, within 20 s. fail MESSAGE: prints it and exits 1.
+# SPDX-License-Identifier: BSD-3-Clause
 fail() { echo "FAIL: $*"; exit 1; }
 refused() {
   local field=$1; shift

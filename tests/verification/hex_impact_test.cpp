@@ -2,6 +2,7 @@
 // Coulomb friction, Hertz for a normal elastic impact, and the axisymmetric solver's e for an
 // elastic-plastic one. Coarse meshes (R/h = 23-47) keep the suite within CI's time; the converged
 // comparisons are in docs/theory/solver3d.md with their commands.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <algorithm>

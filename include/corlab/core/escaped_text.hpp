@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file escaped_text.hpp
 /// User text echoed into a generated file (a comment of a spec): one line of valid UTF-8.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hash.hpp
 /// A stable text hash: the same value for the same bytes on every platform, build and run

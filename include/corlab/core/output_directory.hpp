@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file output_directory.hpp
 /// A command's output directory, made or refused in one line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file auto_restitution.hpp
 /// `corlab predict --model auto`: each speed answered by corlab's pair model (corlab2026p) where

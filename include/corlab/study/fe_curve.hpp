@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file fe_curve.hpp
 /// e(v) of a pair from the FE solver on demand (`corlab predict --model fe`, Python

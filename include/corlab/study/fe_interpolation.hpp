@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file fe_interpolation.hpp
 /// e(v) between FE speeds (`corlab predict --model fe --tolerance`): a monotone cubic through the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file result_cache.hpp
 /// A cache of computed results on disk, one JSON file per entry, keyed by a JSON document (for an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file export_spec.hpp
 /// The checks of an ExportSpec (types, labels, targets, the pairs --pair and --pair-table name)

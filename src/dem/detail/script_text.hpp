@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file script_text.hpp
 /// The one way user text (a table's file name, a material or model name, a label) enters the

@@ -1,6 +1,7 @@
 // The axisymmetric impact run: model -> state -> the one time loop (time_loop.hpp) until the
 // stop rule, the run status and the result. Model, state and step: src/fem/solver/; stop rule:
 // separation_rule.hpp; theory: docs/theory/solver.md.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/explicit_solver.hpp"
 
 #include <fmt/format.h>

@@ -1,5 +1,6 @@
 // The 3-D solver's contact: node on the rigid plane or on the flat's facets, with the normal
 // penalty law of penalty_contact.hpp and Coulomb friction (hex_model.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <algorithm>
 #include <cmath>
 #include <limits>

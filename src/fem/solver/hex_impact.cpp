@@ -1,5 +1,6 @@
 // The 3-D explicit impact solver (hex_model.hpp): its model and state; the time loop, its
 // bookkeeping and the result are the axisymmetric model's (time_loop.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <algorithm>
 #include <array>
 #include <chrono>

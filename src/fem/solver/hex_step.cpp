@@ -1,5 +1,6 @@
 // The 3-D model's steps (hex_model.hpp): the kinematic and the force half of a central-difference
 // step, for the time loop all geometries share (time_loop.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <algorithm>
 #include <cstddef>
 

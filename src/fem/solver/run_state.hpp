@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file run_state.hpp
 /// What the time loop (time_loop.hpp) and its bookkeeping (run_bookkeeping.hpp) read of a run,

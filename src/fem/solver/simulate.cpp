@@ -1,4 +1,5 @@
 // simulate(): config -> mesh -> the explicit solver of solver.model (axisymmetric or 3-D).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/solver/simulate.hpp"
 
 #include "corlab/fem/mesh/mesh_generator.hpp"

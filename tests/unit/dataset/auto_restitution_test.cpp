@@ -1,4 +1,5 @@
 // corlab2026p where accurate, the FE elsewhere (auto_restitution.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/dataset/auto_restitution.hpp"
 
 #include <gtest/gtest.h>

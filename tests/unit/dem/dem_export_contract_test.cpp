@@ -1,5 +1,6 @@
 // Issue 42: the generated DEM scripts hold user text as data, never as code, and the export's
 // inputs end in one-line errors naming the field (labels, pairs, radii, table rows, targets).
+// SPDX-License-Identifier: BSD-3-Clause
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 

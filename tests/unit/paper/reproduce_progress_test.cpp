@@ -1,5 +1,6 @@
 // The a-priori costs behind `corlab reproduce`'s progress of the whole reproduction
 // (reproduce_progress.cpp): the companions' share, what a resumed study skips, the onset cases.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,4 +1,5 @@
 // FE e(v) on demand (fe_curve.hpp): the target, the runs' configs and keys, refused speeds.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/fe_curve.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // e(v) between FE speeds (fe_interpolation.hpp): monotone, exact at nodes, honest between.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/fe_interpolation.hpp"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,6 @@
 // Sweep progress (progress.hpp): the ETA, the duration and progress texts, plain lines when the
 // output is not a terminal; the whole job's time left from its runs' estimated costs.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/progress.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
 // The result cache (result_cache.hpp): keying, builds, corrupted entries, concurrent writers.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/study/result_cache.hpp"
 
 #include <gtest/gtest.h>

@@ -10,6 +10,7 @@ may run: no PWNED file appears, and every run gives the very e of the same expor
 usage: dem_hostile_names_check.py CORLAB_BIN LMP_BIN LIGGGHTS_BIN YADE_BIN WORK_DIR
 (PYTHONPATH: the built corlab package)
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import json
 import os
 import shutil

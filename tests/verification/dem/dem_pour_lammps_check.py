@@ -13,6 +13,7 @@ between particles; a blow-up reaches tens of m/s); no atom centre below half the
 (none through the floor); the final kinetic energy below 1% of its peak (the bed settles).
 usage: dem_pour_lammps_check.py CORLAB_BIN LMP_BIN WORK_DIR
 """
+# SPDX-License-Identifier: BSD-3-Clause
 import math
 import os
 import sys

@@ -1,6 +1,7 @@
 // The 3-D model's steps (hex_step.cpp) in the time loop every geometry shares (time_loop.hpp):
 // its history rows, status details, cancellation and the stop at maximum compression, as the
 // axisymmetric model's.
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <algorithm>
