@@ -14,6 +14,7 @@
 #include "corlab/fem/kernels/hex8.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/gmsh_hex_reader.hpp"
+#include "corlab/fem/mesh/hex_resolution.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 
 namespace corlab::fem {
@@ -176,9 +177,7 @@ HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   HexMeshOptions o;
   o.sphere_radius = config.sphere.radius;
   o.gap = 0.0;
-  o.h_contact = config.mesh.h_min;
-  if (config.mesh.contact_elements > 0.0)
-    o.h_contact = std::min(o.h_contact, a / config.mesh.contact_elements);
+  o.h_contact = hex_resolution(config).h_contact;
   o.zone_radius = config.mesh.refine_factor * a;
   o.zone_depth = std::max(config.mesh.refine_depth * a, 2.0 * o.h_contact);
   o.growth = config.mesh.growth;
