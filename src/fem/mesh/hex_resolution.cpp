@@ -62,6 +62,19 @@ HexResolution hex_resolution(const ImpactConfig& config) {
         r.h_contact, a / r.h_contact, a, basis);
     return r;
   }
+  const SubstrateConfig d;
+  if (config.substrate.shape == SubstrateShape::kFlat && config.substrate.radius == d.radius &&
+      config.substrate.depth == d.depth &&
+      config.sphere.radius <= kMaxSizeOverElement * h_default) {
+    r.h_contact = h_default;
+    r.block_size = kMaxSizeOverElement * h_default;
+    r.reason = fmt::format(
+        "model default: h = {:.3g} m, {:.3g} elements across the predicted "
+        "contact radius a = {:.3g} m, on a block {:.3g} m wide and deep "
+        "(size / h <= {:g}; neither substrate size key set); {}",
+        r.h_contact, a / r.h_contact, a, r.block_size, kMaxSizeOverElement, basis);
+    return r;
+  }
   if (a / h_finest >= kMinDefaultContactElements) {
     r.h_contact = h_finest;
     r.reason = fmt::format(
@@ -73,27 +86,36 @@ HexResolution hex_resolution(const ImpactConfig& config) {
   }
   // No default mesh: name the keys that give one.
   const double n = std::floor(10.0 * a / h_finest) / 10.0;
-  const std::string coarser =
-      n >= 1.0 ? fmt::format(
-                     "set mesh.contact_elements = {:g} (coarser than the default's {:g}: "
-                     "check it with --error-estimate), or ",
-                     n, kMinDefaultContactElements)
-               : std::string("set ");
+  // Where the sphere itself is the largest body, a smaller block does not help.
+  const double block_fit = kMaxSizeOverElement * a / kMinDefaultContactElements;
+  const bool block_helps = config.sphere.radius <= block_fit;
+  std::string keys;
+  if (n >= 1.0)
+    keys = fmt::format(
+        "set mesh.contact_elements = {:g} (coarser than the default's {:g}: check "
+        "it with --error-estimate)",
+        n, kMinDefaultContactElements);
+  if (block_helps)
+    keys += fmt::format("{}substrate.radius and substrate.depth <= {:.3g} m",
+                        keys.empty() ? "set " : ", or ", block_fit);
+  if (keys.empty())
+    keys = fmt::format("set mesh.h_min >= {:.3g} m and mesh.contact_elements = 0", h_finest);
   throw InputError(fmt::format(
       "invalid mesh.contact_elements = default: no default 3-D mesh for this case: the predicted "
       "contact radius a = {:.3g} m needs h <= a / {:g} = {:.3g} m, finer than the limit h >= "
-      "{:.3g} m / {:g} = {:.3g} m (the largest body); {}substrate.radius and substrate.depth <= "
-      "{:.3g} m",
+      "{:.3g} m / {:g} = {:.3g} m (the largest body); {}",
       a, kMinDefaultContactElements, a / kMinDefaultContactElements, size, kMaxSizeOverElement,
-      h_finest, coarser, kMaxSizeOverElement * a / kMinDefaultContactElements));
+      h_finest, keys));
 }
 
 ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config) {
   if (!uses_default_3d_resolution(config)) return config;
+  const HexResolution r = hex_resolution(config);
   ImpactConfig c = config;
-  c.mesh.h_min = hex_resolution(config).h_contact;
+  c.mesh.h_min = r.h_contact;
   c.mesh.contact_elements = 0.0;
   c.mesh.h_max = std::max(c.mesh.h_max, c.mesh.h_min);
+  if (r.block_size > 0.0) c.substrate.radius = c.substrate.depth = r.block_size;
   return c;
 }
 

@@ -26,6 +26,10 @@ struct HexResolution {
   double h_contact = 0.0;     ///< element size at the contact [m]
   bool model_choice = false;  ///< true: the model's default (no resolution key set)
   std::string reason;         ///< one line: the rule, a/h and its measured basis
+  /// The flat's half-width and depth the model chose [m] (0: substrate.radius and .depth): where
+  /// a/4 is finer than the default 70 mm block allows and neither size key is set, the block is
+  /// 2000 h (500 a: a half-space by the measurement in docs/theory/solver3d.md).
+  double block_size = 0.0;
 };
 
 /// Whether the 3-D model chooses the resolution: solver.model = 3d with mesh.h_min and
