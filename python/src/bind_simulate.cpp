@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "corlab/fem/solver/history_columns.hpp"
 #include "corlab/fem/solver/result_fields.hpp"
 #include "corlab/fem/solver/simulate.hpp"
+#include "interruptible.hpp"
 
 namespace py = pybind11;
 
@@ -197,12 +199,14 @@ void bind_simulate(py::module_& m) {
         }
         if (mesh_ratio != 1.0) config = fem::coarsened(config, mesh_ratio);
         fem::validate(config);
-        fem::ImpactResult result;
-        {
-          py::gil_scoped_release release;
-          result =
-              error_estimate ? fem::simulate_with_error_estimate(config) : fem::simulate(config);
-        }
+        std::atomic<bool> cancel{false};
+        fem::SimulationControl control;
+        control.cancel = &cancel;
+        control.config_validated = true;  // above
+        const fem::ImpactResult result = run_interruptible(cancel, [&] {
+          return error_estimate ? fem::simulate_with_error_estimate(config, control)
+                                : fem::simulate(config, control);
+        });
         if (const std::string late = fem::unreached_output_times(config, result); !late.empty()) {
           py::module_::import("warnings").attr("warn")(late);
         }
@@ -221,7 +225,8 @@ error_estimate: also run the companions and set e_error, e_coarse (corlab simula
   --error-estimate).
 Returns a dict: e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], ...,
 "config" (the case), "history" (numpy arrays: time [s], contact_force [N], indentation [m], ...).
-The GIL is released during the run. Bad input raises ValueError.)");
+The GIL is released during the run; Ctrl-C stops it (KeyboardInterrupt). Bad input raises
+ValueError.)");
 }
 
 }  // namespace corlab::python

@@ -91,7 +91,8 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       "contact.friction", "[-]", closed(0.0, 10.0), "Coulomb friction coefficient mu (3-D model)",
       +[](ImpactConfig& c) { return &c.contact.friction; }));
   t.push_back(entry(
-      "mesh.h_min", "[m]", open_closed(0.0, 1.0), "element size at the contact",
+      "mesh.h_min", "[m]", open_closed(0.0, 1.0),
+      "element size at the contact (3-D model: with this and mesh.contact_elements unset, a/4)",
       +[](ImpactConfig& c) { return &c.mesh.h_min; }));
   t.push_back(entry(
       "mesh.contact_elements", "[-]", closed(0.0, 1000.0),

@@ -14,6 +14,7 @@
 #include "corlab/core/units.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
+#include "corlab/fem/mesh/hex_resolution.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 
 namespace corlab::fem {
@@ -176,9 +177,13 @@ void check_model(const ImpactConfig& c) {
                   "built yet");
   if (c.impact.repeats != 1)
     throw_invalid("impact.repeats", c.impact.repeats, "1 with the 3-D model");
+  const HexMeshOptions mesh = hex_mesh_options_for(c);  // names the keys where no default fits
   try {
-    validate(hex_mesh_options_for(c));
+    validate(mesh);
   } catch (const InputError& err) {
+    if (uses_default_3d_resolution(c))
+      throw InputError(fmt::format("the 3-D model's default mesh (h = {:.3g} m) is refused: {}",
+                                   mesh.h_contact, err.what()));
     throw InputError(fmt::format("invalid mesh.h_min = {}: the 3-D mesh it gives is refused ({})",
                                  c.mesh.h_min, err.what()));
   }

@@ -15,6 +15,7 @@
 #include "corlab/fem/kernels/hex8.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/gmsh_hex_reader.hpp"
+#include "corlab/fem/mesh/hex_resolution.hpp"
 #include "corlab/fem/mesh/mesh_generator.hpp"
 
 namespace corlab::fem {
@@ -177,16 +178,16 @@ HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   HexMeshOptions o;
   o.sphere_radius = config.sphere.radius;
   o.gap = 0.0;
-  o.h_contact = config.mesh.h_min;
-  if (config.mesh.contact_elements > 0.0)
-    o.h_contact = std::min(o.h_contact, a / config.mesh.contact_elements);
+  const HexResolution resolution = hex_resolution(config);
+  o.h_contact = resolution.h_contact;
   o.zone_radius = config.mesh.refine_factor * a;
   o.zone_depth = std::max(config.mesh.refine_depth * a, 2.0 * o.h_contact);
   o.growth = config.mesh.growth;
   o.h_max = std::max(config.mesh.h_max, o.h_contact);
   o.block = config.substrate.shape == SubstrateShape::kFlat;
-  o.block_half_width = config.substrate.radius;
-  o.block_depth = config.substrate.depth;
+  const bool chosen = resolution.block_size > 0.0;
+  o.block_half_width = chosen ? resolution.block_size : config.substrate.radius;
+  o.block_depth = chosen ? resolution.block_size : config.substrate.depth;
   const double v_t = config.impact.velocity * std::sin(config.impact.angle.radians);
   o.travel = v_t * 1.5 * hertz_reference(normal).contact_time;
   return o;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "corlab/core/error.hpp"
+#include "corlab/fem/mesh/hex_resolution.hpp"
 #include "corlab/fem/solver/error_bar.hpp"
 #include "corlab/fem/solver/run_quality.hpp"
 
@@ -20,7 +21,8 @@ ImpactConfig coarsened(const ImpactConfig& config, double ratio) {
     throw_invalid("mesh.file", config.mesh.file.string(),
                   "empty (the error estimate coarsens the built-in mesh)");
   }
-  ImpactConfig c = config;
+  // The 3-D model's default size written into the keys first, so that it is what is scaled.
+  ImpactConfig c = with_resolved_3d_mesh(config);
   c.mesh.h_min *= ratio;
   c.mesh.contact_elements /= ratio;
   c.mesh.h_max *= ratio;

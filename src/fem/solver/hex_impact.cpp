@@ -18,6 +18,7 @@
 #include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
+#include "corlab/fem/mesh/hex_resolution.hpp"
 #include "corlab/fem/solver/run_quality.hpp"
 #include "fem/solver/hex_element_loop.hpp"
 #include "fem/solver/hex_model.hpp"
@@ -303,6 +304,9 @@ ImpactResult run_hex_impact(const ImpactConfig& config, const SimulationControl&
   res.elements = m.mesh.num_elements();
   res.nodes = m.mesh.num_nodes();
   res.h_contact = m.h_contact;
+  const HexResolution resolution = hex_resolution(config);
+  res.mesh_choice = resolution.model_choice ? "model" : "keys";
+  res.mesh_reason = resolution.reason;
   res.simd = std::string(to_string(m.simd));
   res.time_step = m.dt_initial;
   res.energy_initial = m.extensive * m.energy_initial;

@@ -196,6 +196,13 @@ const std::array kFields{
         e_t_error, "-", "discretisation-error bar of e_t (as e_error, same companions)", kBoth),
     CORLAB_RESULT_MEMBER(
         omega_error, "rad/s", "discretisation-error bar of omega (as e_error)", kBoth),
+    CORLAB_RESULT_MEMBER(mesh_choice,
+                         "-",
+                         "who chose h_contact: keys (mesh.h_min, mesh.contact_elements) or model "
+                         "(the 3-D default, neither key set)",
+                         kSummary),
+    CORLAB_RESULT_MEMBER(
+        mesh_reason, "-", "the rule behind h_contact, a/h and the default's basis", kSummary),
     derived("E_star",
             "Pa",
             "effective modulus (Ma et al. 2023 eq. 3)",

@@ -98,7 +98,11 @@ struct ImpactResult {
   long long steps = 0;
   long long element_updates = 0;  ///< element updates done (subcycling: < elements x steps) [-]
   double h_contact = 0.0;         ///< element size used at the contact [m]
-  double time_step = 0.0;         ///< initial stable time step [s]
+  /// Who chose h_contact: "keys" (mesh.h_min, mesh.contact_elements) or "model" (the 3-D model's
+  /// default when neither key is set: hex_resolution.hpp)
+  std::string mesh_choice = "keys";
+  std::string mesh_reason;  ///< one line: the rule, a/h and (the model's default) its basis
+  double time_step = 0.0;   ///< initial stable time step [s]
   /// Mass scaling (docs/theory/solver.md section 12): base step / the physical one (1 = none) [-]
   double mass_scaling = 1.0;
   double added_mass_fraction = 0.0;  ///< mass added by the scaling / the sphere's mass [-]

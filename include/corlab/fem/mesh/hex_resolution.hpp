@@ -1,0 +1,49 @@
+#pragma once
+/// @file hex_resolution.hpp
+/// The 3-D model's element size at the contact: the user's (mesh.h_min, mesh.contact_elements)
+/// or, when neither key is set, the model's default of kDefaultContactElements elements across
+/// the predicted contact radius (docs/theory/solver3d.md, "Default resolution").
+
+#include <string>
+
+#include "corlab/fem/config/impact_config.hpp"
+
+namespace corlab::fem {
+
+/// Elements across the predicted contact radius a that the 3-D model chooses [-]: at a/4 Kharaz's
+/// e_t is within 0.002 of a/6 (9.5 deg) and a/3 within 0.002 of a/4 (10 deg), inside their error
+/// bars (docs/theory/solver3d.md).
+inline constexpr double kDefaultContactElements = 4.0;
+/// The coarsest default [-]: where a/4 is finer than the mesh limits allow, the model takes the
+/// finest size they allow down to a/3; coarser, it asks for a key instead.
+inline constexpr double kMinDefaultContactElements = 3.0;
+/// Largest (sphere radius, substrate half-width or depth) / h of a 3-D mesh [-]
+/// (hex_mesh_generator.hpp's limit).
+inline constexpr double kMaxSizeOverElement = 2000.0;
+
+/// How the element size at the contact was chosen.
+struct HexResolution {
+  double h_contact = 0.0;     ///< element size at the contact [m]
+  bool model_choice = false;  ///< true: the model's default (no resolution key set)
+  std::string reason;         ///< one line: the rule, a/h and its measured basis
+  /// The flat's half-width and depth the model chose [m] (0: substrate.radius and .depth): where
+  /// a/4 is finer than the default 70 mm block allows and neither size key is set, the block is
+  /// 2000 h (500 a: a half-space by the measurement in docs/theory/solver3d.md).
+  double block_size = 0.0;
+};
+
+/// Whether the 3-D model chooses the resolution: solver.model = 3d with mesh.h_min and
+/// mesh.contact_elements at their defaults.
+bool uses_default_3d_resolution(const ImpactConfig& config);
+
+/// The element size at the contact of `config`: min(mesh.h_min, a / mesh.contact_elements) when
+/// a key is set, else the model's default (a / 4, or the finest size the limits allow down to
+/// a / 3). Throws InputError naming the key and value to set where no default mesh is feasible.
+HexResolution hex_resolution(const ImpactConfig& config);
+
+/// `config` with the resolution written into the keys (mesh.h_min = h, mesh.contact_elements =
+/// 0), so that a coarsened companion (discretisation_error.hpp) scales the chosen size; `config`
+/// itself where a key is set.
+ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config);
+
+}  // namespace corlab::fem

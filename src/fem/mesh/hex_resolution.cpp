@@ -1,0 +1,122 @@
+// The 3-D model's element size at the contact (hex_resolution.hpp).
+#include "corlab/fem/mesh/hex_resolution.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "corlab/core/error.hpp"
+#include "corlab/fem/mesh/contact_estimate.hpp"
+
+namespace corlab::fem {
+namespace {
+
+// The predicted contact radius at the normal speed v cos(angle) [m].
+double normal_contact_radius(const ImpactConfig& config) {
+  ImpactConfig normal = config;
+  normal.impact.velocity = normal_velocity(config);
+  return predicted_contact_radius(normal);
+}
+
+// The largest body size the limit R / h, w / h, depth / h <= 2000 reads [m].
+double largest_size(const ImpactConfig& config) {
+  double size = config.sphere.radius;
+  if (config.substrate.shape == SubstrateShape::kFlat)
+    size = std::max({size, config.substrate.radius, config.substrate.depth});
+  return size;
+}
+
+}  // namespace
+
+bool uses_default_3d_resolution(const ImpactConfig& config) {
+  const MeshConfig d;
+  return uses_3d_model(config) && config.mesh.h_min == d.h_min &&
+         config.mesh.contact_elements == d.contact_elements;
+}
+
+HexResolution hex_resolution(const ImpactConfig& config) {
+  const double a = normal_contact_radius(config);
+  HexResolution r;
+  if (!uses_default_3d_resolution(config)) {
+    r.h_contact = config.mesh.h_min;
+    if (config.mesh.contact_elements > 0.0)
+      r.h_contact = std::min(r.h_contact, a / config.mesh.contact_elements);
+    r.reason = fmt::format("set: min(mesh.h_min, a / mesh.contact_elements), a/h = {:.3g}",
+                           a / r.h_contact);
+    return r;
+  }
+  r.model_choice = true;
+  const double size = largest_size(config);
+  const double h_finest = size / kMaxSizeOverElement;     // the limit's smallest h [m]
+  const double h_coarsest = 0.05 * config.sphere.radius;  // the sphere's R / 20 [m]
+  const double h_default = std::min(a / kDefaultContactElements, h_coarsest);
+  const std::string basis =
+      "a/4: Kharaz's e_t within 0.002 of a/6 (9.5 deg), inside its error bar "
+      "(docs/theory/solver3d.md)";
+  if (h_default >= h_finest) {
+    r.h_contact = h_default;
+    r.reason = fmt::format(
+        "model default: h = {:.3g} m, {:.3g} elements across the predicted "
+        "contact radius a = {:.3g} m; {}",
+        r.h_contact, a / r.h_contact, a, basis);
+    return r;
+  }
+  const SubstrateConfig d;
+  if (config.substrate.shape == SubstrateShape::kFlat && config.substrate.radius == d.radius &&
+      config.substrate.depth == d.depth &&
+      config.sphere.radius <= kMaxSizeOverElement * h_default) {
+    r.h_contact = h_default;
+    r.block_size = kMaxSizeOverElement * h_default;
+    r.reason = fmt::format(
+        "model default: h = {:.3g} m, {:.3g} elements across the predicted "
+        "contact radius a = {:.3g} m, on a block {:.3g} m wide and deep "
+        "(size / h <= {:g}; neither substrate size key set); {}",
+        r.h_contact, a / r.h_contact, a, r.block_size, kMaxSizeOverElement, basis);
+    return r;
+  }
+  if (a / h_finest >= kMinDefaultContactElements) {
+    r.h_contact = h_finest;
+    r.reason = fmt::format(
+        "model default: h = {:.3g} m, {:.3g} elements across the predicted "
+        "contact radius a = {:.3g} m (the finest the limit size / h <= {:g} "
+        "allows with a body {:.3g} m large; {})",
+        r.h_contact, a / r.h_contact, a, kMaxSizeOverElement, size, basis);
+    return r;
+  }
+  // No default mesh: name the keys that give one.
+  const double n = std::floor(10.0 * a / h_finest) / 10.0;
+  // Where the sphere itself is the largest body, a smaller block does not help.
+  const double block_fit = kMaxSizeOverElement * a / kMinDefaultContactElements;
+  const bool block_helps = config.sphere.radius <= block_fit;
+  std::string keys;
+  if (n >= 1.0)
+    keys = fmt::format(
+        "set mesh.contact_elements = {:g} (coarser than the default's {:g}: check "
+        "it with --error-estimate)",
+        n, kMinDefaultContactElements);
+  if (block_helps)
+    keys += fmt::format("{}substrate.radius and substrate.depth <= {:.3g} m",
+                        keys.empty() ? "set " : ", or ", block_fit);
+  if (keys.empty())
+    keys = fmt::format("set mesh.h_min >= {:.3g} m and mesh.contact_elements = 0", h_finest);
+  throw InputError(fmt::format(
+      "invalid mesh.contact_elements = default: no default 3-D mesh for this case: the predicted "
+      "contact radius a = {:.3g} m needs h <= a / {:g} = {:.3g} m, finer than the limit h >= "
+      "{:.3g} m / {:g} = {:.3g} m (the largest body); {}",
+      a, kMinDefaultContactElements, a / kMinDefaultContactElements, size, kMaxSizeOverElement,
+      h_finest, keys));
+}
+
+ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config) {
+  if (!uses_default_3d_resolution(config)) return config;
+  const HexResolution r = hex_resolution(config);
+  ImpactConfig c = config;
+  c.mesh.h_min = r.h_contact;
+  c.mesh.contact_elements = 0.0;
+  c.mesh.h_max = std::max(c.mesh.h_max, c.mesh.h_min);
+  if (r.block_size > 0.0) c.substrate.radius = c.substrate.depth = r.block_size;
+  return c;
+}
+
+}  // namespace corlab::fem
