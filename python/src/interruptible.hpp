@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 // Long C++ work that Ctrl-C can stop: run without the GIL in a thread while this thread checks
 // Python's signals every 100 ms.

@@ -1,5 +1,6 @@
 """corlab.simulate() stops on Ctrl-C: a SIGINT to a Python process inside a long run raises
 KeyboardInterrupt promptly, for the 3-D model and the axisymmetric one (issue 39 item 3)."""
+# SPDX-License-Identifier: BSD-3-Clause
 import os
 import signal
 import subprocess

@@ -5,6 +5,7 @@
 # rigid flat) runs end to end and says in summary.json that the model chose its mesh; a case
 # with no feasible default names the key and value to set; a set key is still obeyed.
 # Usage: default_3d_mesh_cli_test.sh CORLAB_BIN WORKDIR   (registered in tests/CMakeLists.txt)
+# SPDX-License-Identifier: BSD-3-Clause
 set -uo pipefail
 corlab=$1 work=$2
 rm -rf "$work" && mkdir -p "$work"

@@ -1,4 +1,5 @@
 // The 3-D model's element size at the contact (hex_resolution.hpp).
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/hex_resolution.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file hex_resolution.hpp
 /// The 3-D model's element size at the contact: the user's (mesh.h_min, mesh.contact_elements)

@@ -1,4 +1,5 @@
 // hex_resolution(): the 3-D model's default element size at the contact, over the dataset's box.
+// SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/mesh/hex_resolution.hpp"
 
 #include <gtest/gtest.h>
