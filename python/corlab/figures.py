@@ -25,11 +25,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 from .vtu import field_snapshots, read_vtu  # noqa: E402
 
 
-# Colours and markers of figures with one series per case (Figs. 6 and 9, yield onset): the first
-# ten cases take matplotlib's ten default colours (tab10) with circles, the next ten ten other
-# hues, each at least 70 (RGB, 0-255) from every tab10 colour and from each other, with squares
-# (not tab20's light shades of the same hues, which read as pairs); then both sets again with
-# other markers, so no two cases look alike.
+# Colours and markers of figures with one series per case (Figs. 6 and 9, yield onset): tab10 with
+# circles, then ten other hues far from tab10 and from each other (not tab20's light shades, which
+# read as pairs) with squares, then both again with other markers: no two cases look alike.
 _CASE_MARKERS = ("o", "s", "^", "D", "v", "P")
 _SECOND_COLOURS = ("#000000", "#000080", "#800000", "#ff00ff", "#808000", "#0000ff", "#8b008b",
                    "#00a86b", "#2f4f4f", "#6495ed")

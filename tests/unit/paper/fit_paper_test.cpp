@@ -90,7 +90,8 @@ TEST(FitYieldVelocity, RecoversExponentsAndCombinedConstant) {
 
 TEST(FitYieldVelocity, PaperBackCalculationGivesExactExponentsAndAbout15point9) {
   // v_y from the paper's eq. 12 crossing: n = beta/s, m = 1 - beta/s exactly, and with the
-  // exponents fixed at 4.5/-3.5 the constant is 17.41 (sigma/E*)^0.018 ~ 15.9 (docs/reference/models.md 1.3)
+  // exponents fixed at 4.5/-3.5 the constant is 17.41 (sigma/E*)^0.018 ~ 15.9
+  // (docs/reference/models.md 1.3)
   std::vector<YieldVelocitySample> samples;
   for (double rho : {3925.0, 7850.0}) {
     for (double es : {50e9, 60e9, 63.8e9, 70e9, 80e9}) {
@@ -116,7 +117,8 @@ TEST(FitYieldVelocity, RejectsNonPositiveVelocityAndSingleYieldStress) {
 }
 
 TEST(LogLaw, MatchesGoldenValuesOfTheSeedModel) {
-  // docs/reference/models.md section 8: e(1 m/s) = 0.7932 (alumina/Al), E* = 63.7905 GPa, rho = 3958.226
+  // docs/reference/models.md section 8: e(1 m/s) = 0.7932 (alumina/Al), E* = 63.7905 GPa, rho =
+  // 3958.226
   EXPECT_NEAR(log_law_restitution(1.16, 0.253, 0.056, 3958.226, 63.7905e9, 0.38e9, 1.0), 0.7932,
               1e-4);
   EXPECT_NEAR(power_law_yield_velocity(15.81, 4.5, -3.5, 3958.226, 63.7905e9, 0.38e9), 0.15736,
