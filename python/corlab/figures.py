@@ -3,12 +3,9 @@
 Every function takes the report directory (the output of ``corlab reproduce``) and the parsed
 ``fit.json``, writes one PNG into ``<dir>/figures`` and returns its file name, or ``None`` when
 the data for it are missing (the report then says so). Axes carry SI units (mm, us and kN where
-those read better). No experimental points are drawn: no published numbers are available to
-corlab (docs/reference models.md section 7).
-
-Every model line and reference value comes from fit.json (written by the C++ ``corlab
-reproduce``: "verification", "figure_lines", "fits", "paper"); this module holds no formula and
-no published constant of its own, it only plots.
+those read better). No experimental points are drawn (docs/reference models.md section 7). Every
+model line and reference value comes from fit.json (the C++ ``corlab reproduce``: "verification",
+"figure_lines", "fits", "paper"); this module holds no formula or published constant: it plots.
 """
 # SPDX-License-Identifier: BSD-3-Clause
 from __future__ import annotations
