@@ -52,7 +52,7 @@ sim "invalid solver.t_max" --set substrate.shape=sphere --set substrate.depth=1e
 
 # sweeps: keys valid together are accepted in one case or grid; runs that resolve to the same
 # configuration are refused.
-printf '[study]\nname = "t"\n[base]\n"mesh.h_min" = 1e-3\n[grid]\n"impact.angle" = [30, 45]\n"contact.friction" = [0.2, 0.5]\n' > "$work/angle.toml"
+printf '[study]\nname = "t"\n[base]\n"mesh.h_min" = 1e-3\n"solver.model" = "3d"\n[grid]\n"impact.angle" = [30, 45]\n"contact.friction" = [0.2, 0.5]\n' > "$work/angle.toml"
 "$corlab" sweep "$work/angle.toml" --out "$work/sw" --dry-run > "$work/out" 2> "$work/err" ||
   fail "angle with friction in a grid refused: $(cat "$work/err")"
 printf '[study]\nname = "t"\n[[cases]]\n"impact.velocity" = 5\n[[cases]]\n"impact.velocity" = " 5"\n' > "$work/same.toml"

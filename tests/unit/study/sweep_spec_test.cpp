@@ -242,20 +242,22 @@ TEST(SweepSpec, EachRunIsValidatedWithAllOfItsKeys) {
   const std::string head = "[study]\nname = \"t\"\n";
   const auto grid =
       parse_sweep_spec(head +
-                           "[base]\n\"mesh.h_min\" = 1e-3\n[grid]\n\"impact.angle\" = "
+                           "[base]\n\"mesh.h_min\" = 1e-3\n\"solver.model\" = \"3d\"\n"
+                           "[grid]\n\"impact.angle\" = "
                            "[30, 45]\n\"contact.friction\" = [0.2, 0.5]\n",
                        "t.toml");
   EXPECT_EQ(grid.expand().size(), 4u);
-  const auto one_case = parse_sweep_spec(
-      head +
-          "[[cases]]\n\"impact.angle\" = 30\n\"contact.friction\" = 0.3\n\"mesh.h_min\" = "
-          "1e-3\n[[cases]]\n\"mesh.h_min\" = 1e-4\n\"mesh.h_max\" = 2e-4\n",
-      "t.toml");
+  const auto one_case =
+      parse_sweep_spec(head +
+                           "[[cases]]\n\"solver.model\" = \"3d\"\n\"impact.angle\" = 30\n"
+                           "\"contact.friction\" = 0.3\n\"mesh.h_min\" = "
+                           "1e-3\n[[cases]]\n\"mesh.h_min\" = 1e-4\n\"mesh.h_max\" = 2e-4\n",
+                       "t.toml");
   EXPECT_EQ(one_case.expand().size(), 2u);
   EXPECT_EQ(message_of(head + "[grid]\n\"impact.angle\" = [0, 30]\n\"contact.friction\" = [0.3]\n"),
             "invalid spec t.toml run 0 (impact.angle=0, contact.friction=0.3): "
             "grid.\"contact.friction\"[0]: invalid contact.friction = 0.3: must be 0 with the "
-            "axisymmetric model (friction needs solver.model = 3d or impact.angle > 0)");
+            "axisymmetric model (friction needs solver.model = 3d)");
   // A value that is wrong alone is still named where it was written.
   EXPECT_EQ(message_of(head + "[[cases]]\n\"impact.angle\" = 30\n\"contact.friction\" = 11\n"),
             "invalid spec t.toml cases[0].\"contact.friction\" = 11: must be in [0, 10] [-]");

@@ -193,7 +193,7 @@ TEST(ConfigLimits, ElementEstimateFollowsTheMesh) {
       {"substrate.shape=sphere", "substrate.radius=1", "mesh.h_max=0.02"},
       {"impact.velocity=0.01", "mesh.h_min=1e-3"},
       {"solver.model=3d", "mesh.h_min=1.5e-3", "mesh.contact_elements=3"},
-      {"impact.angle=30", "mesh.h_min=1.5e-3", "mesh.contact_elements=3"},
+      {"solver.model=3d", "impact.angle=30", "mesh.h_min=1.5e-3", "mesh.contact_elements=3"},
   };
   for (const auto& settings : cases) {
     ImpactConfig c;
