@@ -6,18 +6,8 @@
 set -uo pipefail
 corlab=$1 work=$2
 rm -rf "$work" && mkdir -p "$work"
-fail() { echo "FAIL: $*"; exit 1; }
-
-# refused TEXT ARGS...: exit 2, one stderr line containing TEXT, nothing on stdout, within 20 s.
-refused() {
-  local text=$1; shift
-  timeout 20 "$corlab" "$@" > "$work/out" 2> "$work/err"
-  local rc=$?
-  [ $rc -eq 2 ] || fail "$* -> exit $rc, expected 2: $(cat "$work/err")"
-  [ "$(wc -l < "$work/err")" -eq 1 ] || fail "$* -> not one line: $(cat "$work/err")"
-  grep -qF "$text" "$work/err" || fail "$* -> does not say '$text': $(cat "$work/err")"
-  [ ! -s "$work/out" ] || fail "$* -> wrote to stdout"
-}
+# shellcheck source=../support/cli_refused.sh
+. "$(dirname "$0")/../support/cli_refused.sh"
 pair=(--sphere alumina_ma2023 --substrate aluminium_ma2023)
 
 # predict: every listed speed is checked; speeds from the speed of light on and radii outside
