@@ -158,6 +158,7 @@ py::array_t<double> corlab2026_over(const py::dict& inputs, const py::dict& coef
   const Array other_is_sphere = input_column(inputs, "other_is_sphere", std::nullopt);
   const std::pair<std::string_view, py::ssize_t> first{"other_is_sphere", other_is_sphere.size()};
   std::vector<Array> columns;
+  columns.reserve(std::size(restitution::kCorlab2026Inputs));
   for (const auto& [name, member] : restitution::kCorlab2026Inputs) {
     columns.push_back(input_column(inputs, name, first));
   }
