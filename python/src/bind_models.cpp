@@ -33,10 +33,14 @@ namespace corlab::python {
 
 namespace {
 
-using MaterialArg = std::variant<Material, std::string>;
+// A Material or a spec (py::str, not std::string: a name pybind11 cannot encode, e.g. one with a
+// lone surrogate, is then named in a ValueError instead of failing the overload with a TypeError).
+using MaterialArg = std::variant<Material, py::str>;
 
 Material to_material(const MaterialArg& arg, const char* field) {
-  if (const auto* spec = std::get_if<std::string>(&arg)) return parse_material_spec(*spec, field);
+  if (const auto* spec = std::get_if<py::str>(&arg)) {
+    return parse_material_spec(utf8_text(*spec, field), field);
+  }
   return std::get<Material>(arg);
 }
 

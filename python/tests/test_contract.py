@@ -82,6 +82,14 @@ def test_a_lone_surrogate_is_a_value_error(settings, match):
     assert "\n" not in str(err.value)
 
 
+def test_a_lone_surrogate_in_a_material_name_is_a_value_error():
+    # corlab.predict's material names: was pybind11's TypeError (no overload matched)
+    with pytest.raises(ValueError, match=r"^invalid sphere = 'a\\ud800': must be text that has"):
+        corlab.predict("corlab2026", "a\ud800", "aluminium_ma2023", 2.0)
+    with pytest.raises(ValueError, match=r"^invalid substrate = 'b\\ud800': must be text"):
+        corlab.predict("jg2", "alumina_ma2023", "b\ud800", [1.0, 2.0])
+
+
 def test_a_nul_in_a_config_path_is_named(tmp_path):
     # "/tmp\0x" was read as /tmp: "it is a directory"
     with pytest.raises(ValueError, match=r"^invalid config file = '.*\\x00x': must be a path "
