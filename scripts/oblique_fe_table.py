@@ -46,6 +46,11 @@ def mbf_rows(binary, angles):
     return {float(r["impact_angle_deg"]): r for r in csv.DictReader(io.StringIO(out))}
 
 
+def number(text):
+    """A results.csv cell as a float; an empty cell (no value: e_t of a normal impact) is nan."""
+    return float(text) if text.strip() else math.nan
+
+
 def cell(value, error=None, spec="%.4f"):
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return "–"
@@ -58,8 +63,8 @@ def plain_markdown(rows):
     lines = ["| v [m/s] | θ [°] | e_n | e_t | ω [rad/s] | rebound angle [°] |",
              "|" + " --- |" * 6]
     for r in rows:
-        f = {k: float(r[k]) for k in ("e_n", "e_n_error", "e_t", "e_t_error", "omega",
-                                      "omega_error", "rebound_angle_com")}
+        f = {k: number(r[k]) for k in ("e_n", "e_n_error", "e_t", "e_t_error", "omega",
+                                       "omega_error", "rebound_angle_com")}
         lines.append("| %g | %g | %s | %s | %s | %s |" % (
             float(r["impact_velocity"]), float(r["impact_angle_deg"]),
             cell(f["e_n"], f["e_n_error"]),
@@ -75,8 +80,8 @@ def markdown(rows, mbf):
         angle = float(r["impact_angle_deg"])
         m = measured(angle)
         t = mbf.get(angle, {})
-        f = {k: float(r[k]) for k in ("e_t", "e_t_error", "omega", "omega_error",
-                                      "rebound_angle_com", "e_n", "e_n_error")}
+        f = {k: number(r[k]) for k in ("e_t", "e_t_error", "omega", "omega_error",
+                                       "rebound_angle_com", "e_n", "e_n_error")}
         lines.append("| %g | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             angle, cell(f["e_t"], f["e_t_error"]), cell(float(t["e_t"]) if t else None),
             cell(m["e_t"]), cell(f["omega"], f["omega_error"], "%.1f"),

@@ -33,14 +33,18 @@ struct SimulateOptions {
   bool error_estimate = false;
 };
 
-// The 3-D model's line: e_n, e_t and omega with "+/- U" where the error estimate gave U.
+// The 3-D model's line: e_n, e_t and omega with "+/- U" where the error estimate gave U; a normal
+// impact has no e_t (no tangential velocity to restitute), said in words rather than "nan".
 void print_oblique_result(const fem::ImpactResult& result) {
   auto bar = [](double u) { return std::isfinite(u) ? fmt::format(" +/- {:.2g}", u) : ""; };
+  const std::string e_t = std::isfinite(result.e_t)
+                              ? fmt::format("{:.4f}{}", result.e_t, bar(result.e_t_error))
+                              : std::string("none (normal impact)");
   fmt::print(
-      "3-D model: e_n = {:.4f}  e_t = {:.4f}{}  omega = {:.5g}{} rad/s  rebound_angle = {:.3f} "
+      "3-D model: e_n = {:.4f}  e_t = {}  omega = {:.5g}{} rad/s  rebound_angle = {:.3f} "
       "deg  energy_friction = {:.4g} J\n",
-      result.e_n, result.e_t, bar(result.e_t_error), result.omega, bar(result.omega_error),
-      result.rebound_angle, result.energy_friction);
+      result.e_n, e_t, result.omega, bar(result.omega_error), result.rebound_angle,
+      result.energy_friction);
 }
 
 int run_simulate(const SimulateOptions& opt) {

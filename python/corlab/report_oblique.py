@@ -5,6 +5,7 @@ each was made), and the elastic-plastic studies of data/oblique_studies. Nothing
 here: figures and a table of those files' numbers."""
 # SPDX-License-Identifier: BSD-3-Clause
 import csv
+import math
 import os
 import sys
 
@@ -13,6 +14,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from .figures import num  # noqa: E402  (an empty cell: no value, nan)
 from .html_table import esc, fmt, table  # noqa: E402
 
 #: (fe_oblique.csv column, measured_points.csv quantity, dem_oblique.csv column, axis label)
@@ -26,7 +28,7 @@ def _rows(path):
 
 
 def _series(rows, x, y, keep=lambda r: True):
-    points = sorted((float(r[x]), float(r[y])) for r in rows if keep(r) and r[y] != "nan")
+    points = sorted((num(r[x]), num(r[y])) for r in rows if keep(r) and not math.isnan(num(r[y])))
     return [p[0] for p in points], [p[1] for p in points]
 
 
@@ -42,9 +44,9 @@ def oblique_figure(fe, measured, dem, path):
         for code in sorted({r["code"] for r in dem}):
             ax.plot(*_series(dem, "angle_deg", dem_key, lambda r: r["code"] == code), "-",
                     lw=1, label=f"DEM: {code}")
-        angles = [float(r["impact_angle_deg"]) for r in fe]
-        ax.errorbar(angles, [float(r[fe_key]) for r in fe],
-                    yerr=[float(r[fe_key + "_error"]) for r in fe], fmt="s-", color="k",
+        angles = [num(r["impact_angle_deg"]) for r in fe]
+        ax.errorbar(angles, [num(r[fe_key]) for r in fe],
+                    yerr=[num(r[fe_key + "_error"]) for r in fe], fmt="s-", color="k",
                     ms=4, capsize=2, label="corlab 3-D FE")
         ax.set_xlabel("impact angle from the normal [deg]")
         ax.set_ylabel(label)
@@ -57,13 +59,14 @@ def oblique_figure(fe, measured, dem, path):
 def study_figure(rows, title, path):
     """e_n, e_t and omega against the impact angle, one line per impact speed, with error bars."""
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.8))
-    speeds = sorted({float(r["impact_velocity"]) for r in rows})
+    speeds = sorted({num(r["impact_velocity"]) for r in rows})
     for ax, key, label in zip(axes, ("e_n", "e_t", "omega"),
                               ("e_n [-]", "e_t [-]", "rebound spin ω [rad/s]")):
         for v in speeds:
-            mine = sorted((float(r["impact_angle_deg"]), float(r[key]),
-                           float(r[key + "_error" if key != "e_n" else "e_n_error"]))
-                          for r in rows if float(r["impact_velocity"]) == v and r[key] != "nan")
+            mine = sorted((num(r["impact_angle_deg"]), num(r[key]),
+                           num(r[key + "_error" if key != "e_n" else "e_n_error"]))
+                          for r in rows
+                          if num(r["impact_velocity"]) == v and not math.isnan(num(r[key])))
             if mine:
                 ax.errorbar(*zip(*mine), fmt="o-", ms=3, capsize=2, label=f"{v:g} m/s")
         ax.set_xlabel("impact angle from the normal [deg]")
@@ -115,10 +118,10 @@ def oblique_section(data_dir, out_dir):
                   'angle: FE, measurements, DEM"></p>')
     except Exception as err:  # a broken figure must not lose the rest of the report
         print(f"corlab.report: oblique figure failed: {err}", file=sys.stderr)
-    rows = [[fmt(float(r["impact_angle_deg"]), 3),
-             f"{fmt(float(r['e_t']), 4)} ± {fmt(float(r['e_t_error']), 2)}",
-             f"{fmt(float(r['omega']), 4)} ± {fmt(float(r['omega_error']), 2)}",
-             fmt(float(r["rebound_angle_com"]), 4), fmt(float(r["e_n"]), 4)] for r in fe]
+    rows = [[fmt(num(r["impact_angle_deg"]), 3),
+             f"{fmt(num(r['e_t']), 4)} ± {fmt(num(r['e_t_error']), 2)}",
+             f"{fmt(num(r['omega']), 4)} ± {fmt(num(r['omega_error']), 2)}",
+             fmt(num(r["rebound_angle_com"]), 4), fmt(num(r["e_n"]), 4)] for r in fe]
     head = ["angle [deg]", "e_t", "ω [rad/s]", "rebound angle [deg]", "e_n"]
     return f"""<p>corlab's 3-D model (docs/theory/solver3d.md) on the alumina sphere and glass
 anvil of Kharaz, Gorham &amp; Salman (2001) at 3.9 m/s with their measured friction, beside the

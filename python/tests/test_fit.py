@@ -143,14 +143,16 @@ def test_fit_lists_every_excluded_row_with_its_reason(tmp_path, corlab_bin):
     for case_id, e in bad.items():
         rows.append(dict(rows[10], case_id=case_id, e=e))
     rows.append(dict(rows[10], case_id="bad_failed", status="failed", e=""))
-    rows.append(dict(rows[10], case_id="bad_elastic", sigma_y="nan"))
+    rows.append(dict(rows[10], case_id="bad_elastic", sigma_y=""))  # no value: elastic
+    rows.append(dict(rows[10], case_id="bad_zero_yield", sigma_y="0"))
     write_results(tmp_path / "results.csv", rows)
     fit = corlab.fit_paper(str(tmp_path / "results.csv"))
     reasons = {r["case_id"]: r["reason"] for r in fit["excluded"]}
     assert reasons["bad_nan"] == "e = nan" and reasons["bad_inf"] == "e = inf"
     assert reasons["bad_negative"] == "e = -0.5: not > 0"
     assert reasons["bad_failed"] == "status = failed"
-    assert reasons["bad_elastic"].startswith("sigma_y = nan")
+    assert reasons["bad_elastic"] == "no sigma_y: elastic substrate"
+    assert reasons["bad_zero_yield"] == "sigma_y = 0: elastic substrate"
     clamped = [r for r in rows if r["case_id"].startswith("c") and r["e"] >= 1 - 1e-3]
     assert clamped
     assert all(reasons[r["case_id"]].endswith(": elastic (>= 1 - 0.001)") for r in clamped)

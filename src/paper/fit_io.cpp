@@ -40,7 +40,8 @@ std::vector<RestitutionSample> restitution_samples(const ResultsTable& table,
   for (std::size_t i = 0; i < table.size(); ++i) {
     std::string reason = row_exclusion(table, i, include_suspect);
     if (reason.empty() && (!std::isfinite(sy[i]) || !(sy[i] > 0))) {
-      reason = fmt::format("sigma_y = {}: elastic substrate", sy[i]);
+      reason = std::isnan(sy[i]) ? std::string("no sigma_y: elastic substrate")
+                                 : fmt::format("sigma_y = {}: elastic substrate", sy[i]);
     }
     if (reason.empty()) {
       out.push_back({group_label(rho[i], es[i], sy[i]), v[i], e[i], rho[i], es[i], sy[i],

@@ -47,4 +47,18 @@ printf '[study]\nname = "t"\n[base]\n"mesh.h_min" = 1e-3\n"solver.model" = "3d"\
   fail "angle with friction in a grid refused: $(cat "$work/err")"
 printf '[study]\nname = "t"\n[[cases]]\n"impact.velocity" = 5\n[[cases]]\n"impact.velocity" = " 5"\n' > "$work/same.toml"
 refused "resolve to the same configuration" sweep "$work/same.toml" --out "$work/sw" --dry-run
+# A value a run does not have (e_t of a normal impact, k2 and sigma_y of an elastic flat, the
+# error bars without --error-estimate) is an empty cell in results.csv and null in summary.json,
+# never "nan"; the console says so in words.
+printf '[study]\nname = "t"\n[base]\n"mesh.h_min" = 1.5e-3\n"mesh.contact_elements" = 0\n[[cases]]\n"solver.model" = "3d"\n"substrate.shape" = "rigid"\n[[cases]]\n"substrate.sigma_y" = "none"\n"impact.velocity" = 1\n' > "$work/none.toml"
+timeout 300 "$corlab" sweep "$work/none.toml" --out "$work/none" --quiet > "$work/out" 2> "$work/err" ||
+  fail "sweep of values a run lacks -> exit $?: $(cat "$work/err")"
+[ "$(grep -c ',ok,' "$work/none/results.csv")" = 2 ] || fail "not two clean runs: $(cat "$work/none/results.csv")"
+! grep -qiwE "nan|inf" "$work/none/results.csv" || fail "nan or inf in results.csv: $(cat "$work/none/results.csv")"
+timeout 120 "$corlab" simulate --set solver.model=3d --set substrate.shape=rigid --set mesh.h_min=1.5e-3 \
+  --set mesh.contact_elements=0 --out "$work/normal3d" --quiet > "$work/out" 2> "$work/err" ||
+  fail "3-D normal impact -> exit $?: $(cat "$work/err")"
+grep -q "e_t = none (normal impact)" "$work/out" || fail "3-D normal impact e_t: $(cat "$work/out")"
+! grep -qiwE "nan|inf" "$work/out" "$work/normal3d/summary.json" ||
+  fail "nan or inf in a 3-D normal impact's output: $(cat "$work/out")"
 echo "contract_cli_test: all passed"

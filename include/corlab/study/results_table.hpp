@@ -52,7 +52,7 @@ std::vector<std::string> result_row(std::string_view case_id,
                                     std::string_view error,
                                     double wall_s);
 
-/// Shortest text that reads back to the same double ("nan", "inf" for non-finite).
+/// Shortest text that reads back to the same double; "" for NaN (no value: fem::field_text).
 std::string format_number(double value);
 
 /// One CSV line (no line break) with RFC 4180 quoting; line breaks inside fields become spaces.

@@ -193,22 +193,39 @@ HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   return o;
 }
 
-void append_hex_block(const HexMeshOptions& o, HexMesh& mesh) {
+namespace {
+
+// The block's node coordinates along each axis [m].
+struct BlockLattice {
+  std::vector<double> x;  // graded both ways from the fine band [-zone, zone + travel]
+  std::vector<double> y;  // from the symmetry plane y = 0
+  std::vector<double> z;  // down from the top z = 0
+};
+
+BlockLattice make_block_lattice(const HexMeshOptions& o) {
   const double w = o.block_half_width;
-  // x: graded both ways from the fine band [-zone, zone + travel]; y from 0; z down from 0.
   const double right_fine = std::min(o.zone_radius + o.travel, 0.9 * w);
-  std::vector<double> x;
+  BlockLattice l;
   const std::vector<double> left =
       graded_positions(w, o.h_contact, o.zone_radius, o.growth, o.h_max);
-  for (std::size_t i = left.size(); i-- > 1;) x.push_back(-left[i]);
+  for (std::size_t i = left.size(); i-- > 1;) l.x.push_back(-left[i]);
   const std::vector<double> right = graded_positions(w, o.h_contact, right_fine, o.growth, o.h_max);
-  x.insert(x.end(), right.begin(), right.end());
-  const std::vector<double> y = graded_positions(w, o.h_contact, o.zone_radius, o.growth, o.h_max);
+  l.x.insert(l.x.end(), right.begin(), right.end());
+  l.y = graded_positions(w, o.h_contact, o.zone_radius, o.growth, o.h_max);
   const std::vector<double> depth =
       graded_positions(o.block_depth, o.h_contact, o.zone_depth, o.growth, o.h_max);
-  std::vector<double> z;
-  for (std::size_t k = depth.size(); k-- > 0;) z.push_back(-depth[k]);
-  z.back() = 0.0;
+  for (std::size_t k = depth.size(); k-- > 0;) l.z.push_back(-depth[k]);
+  l.z.back() = 0.0;
+  return l;
+}
+
+}  // namespace
+
+void append_hex_block(const HexMeshOptions& o, HexMesh& mesh) {
+  const BlockLattice lattice = make_block_lattice(o);
+  const std::vector<double>& x = lattice.x;
+  const std::vector<double>& y = lattice.y;
+  const std::vector<double>& z = lattice.z;
   const std::size_t nx = x.size();
   const std::size_t ny = y.size();
   const std::size_t nz = z.size();
@@ -272,6 +289,20 @@ HexMesh generate_hex_sphere(const HexMeshOptions& o) {
   });
   std::sort(mesh.symmetry_nodes.begin(), mesh.symmetry_nodes.end());
   return mesh;
+}
+
+double hex_impact_elements(const HexMeshOptions& o) {
+  validate(o);
+  const Lattice l = make_lattice(o);
+  const auto n = [](const std::vector<double>& v) { return static_cast<double>(v.size() - 1); };
+  // generate_hex_sphere's blocks: bottom and top, -x and +x, +y shells, the core cube
+  double count = n(l.x) * n(l.y) * n(l.t) * 2.0 + n(l.y) * n(l.z) * n(l.t) * 2.0 +
+                 n(l.x) * n(l.z) * n(l.t) + n(l.x) * n(l.y) * n(l.z);
+  if (o.block) {
+    const BlockLattice b = make_block_lattice(o);
+    count += n(b.x) * n(b.y) * n(b.z);
+  }
+  return count;
 }
 
 HexMesh generate_hex_impact_mesh(const HexMeshOptions& o) {

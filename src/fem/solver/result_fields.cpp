@@ -257,7 +257,7 @@ std::string field_text(const FieldValue& value) {
   struct Text {
     std::string operator()(std::monostate) const { return {}; }
     std::string operator()(double v) const {
-      if (std::isnan(v)) return "nan";
+      if (std::isnan(v)) return {};  // no value here (see the header); JSON writes null
       if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
       return fmt::format("{}", v);
     }

@@ -134,7 +134,10 @@ def write_tables(table, fe, out_dir, fe_source):
         w = csv.writer(f)
         w.writerow(keys)
         for r in table:
-            w.writerow([r[k] if isinstance(r[k], str) else "%.6g" % r[k] for k in keys])
+            # an empty cell where a quantity has no value (e_t at 0 deg, the sliding limit
+            # below the sliding threshold), as in corlab's results.csv
+            w.writerow([r[k] if isinstance(r[k], str) else "" if math.isnan(r[k])
+                        else "%.6g" % r[k] for k in keys])
     by = {(r["code"], r["angle_deg"]): r for r in table}
     lines = ["| theta | e_t LAMMPS / LIGGGHTS / YADE | sliding limit | measured | FE | "
              "omega [rad/s] LAMMPS / LIGGGHTS / YADE | sliding | measured | FE | "

@@ -61,6 +61,11 @@ void append_hex_block(const HexMeshOptions& options, HexMesh& mesh);
 /// axis; symmetry_nodes and sphere_surface_nodes set.
 HexMesh generate_hex_sphere(const HexMeshOptions& options);
 
+/// The element count of generate_hex_impact_mesh(options), exactly, from the 1-D node
+/// distributions alone (no node is built): the work caps' count before meshing [-]. Throws
+/// InputError as validate() does.
+double hex_impact_elements(const HexMeshOptions& options);
+
 /// The impact's mesh: the half sphere, and the flat's half block when options.block.
 HexMesh generate_hex_impact_mesh(const HexMeshOptions& options);
 

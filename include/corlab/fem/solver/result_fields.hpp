@@ -62,8 +62,11 @@ std::span<const ResultField> result_fields();
 /// The field called `name`, or null.
 const ResultField* find_result_field(std::string_view name);
 
-/// A value as CSV text: "" if empty, shortest round-trip text for reals ("nan", "inf"),
-/// "true"/"false" for flags.
+/// A value as CSV text: shortest round-trip text for reals, "true"/"false" for flags, and ""
+/// where the run has no value: an empty field or a NaN real (not applicable to the run, e.g.
+/// e_t of a normal impact or k2 of an elastic flat, or not computed, e.g. e_error without the
+/// error estimate; summary.json writes null). An infinity would be written "inf" (the contract
+/// tests make sure none is).
 std::string field_text(const FieldValue& value);
 
 }  // namespace corlab::fem
