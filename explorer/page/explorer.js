@@ -304,8 +304,8 @@ function demSection(request, r) {
   dem.replaceChildren();
   const answer = JSON.parse(corlab.demExport(JSON.stringify({
     sphere: request.sphere, substrate: request.substrate, radius: Number($("radius").value),
-    model: $("dem-model").value, v_min: r.velocity[0],
-    v_max: r.velocity[r.velocity.length - 1]})));
+    model: $("dem-model").value, v_min: r.velocity[0], v_max: r.velocity[r.velocity.length - 1],
+    radius_ratio: request.radius_ratio})));
   state.dem = answer;
   if (answer.error) {
     dem.append(el("p", `error: ${answer.error.message}`, {class: "error"}));

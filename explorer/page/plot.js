@@ -1,6 +1,6 @@
 // The explorer's plot (explorer.js): e(v) of every model with plotly.js. The y-axis is fitted to
-// the verified models, corlab2026's band and the FE runs; an unverified model is dashed and
-// clipped by that axis. A model is dotted where it is outside its accurate range (the C++'s
+// the verified models and corlab2026's band; an unverified model is dashed and clipped by that
+// axis, as are dataset runs far from the pair (faded with their distance). A model is dotted where it is outside its accurate range (the C++'s
 // flags). After bad input the last curves stay, greyed, under a note (drawStale).
 // SPDX-License-Identifier: BSD-3-Clause
 "use strict";
@@ -27,11 +27,10 @@ function splitByRange(e, outside) {
   return [inside, out];
 }
 
-// [low, high] of the e-axis: the verified models' e, the band and the FE runs, padded 5 %.
+// [low, high] of the e-axis: the verified models' e and the band, padded 5 %.
 function yRange(r) {
   const values = r.models.filter(isVerified).flatMap((m) => m.e);
   if (r.prediction_interval) values.push(...r.prediction_interval.low, ...r.prediction_interval.high);
-  values.push(...r.nearest.map((n) => n.e));
   const finite = values.filter(Number.isFinite);
   if (!finite.length) return [0, 1.05];
   const lo = Math.min(...finite);
@@ -39,6 +38,10 @@ function yRange(r) {
   const pad = Math.max(0.05 * (hi - lo), 0.01);
   return [Math.max(0, lo - pad), hi + pad];
 }
+
+// A dataset run's marker fades with its distance from the pair: 1 - 2 distance, at least 0.15
+// (a run of other materials is a guide, not the pair's result).
+const runOpacity = (distance) => Math.min(1, Math.max(0.15, 1 - 2 * distance));
 
 function traces(r) {
   const list = [];
@@ -71,7 +74,7 @@ function traces(r) {
   if (r.nearest.length) {
     list.push({x: r.nearest.map((n) => n.velocity_pair), y: r.nearest.map((n) => n.e),
       mode: "markers", name: "FE dataset, nearest runs", marker: {color: "#444", symbol: "diamond",
-        size: 8}, error_y: {type: "data", array: r.nearest.map((n) => n.e_error ?? 0),
+        size: 8, opacity: r.nearest.map((n) => runOpacity(n.distance))}, error_y: {type: "data", array: r.nearest.map((n) => n.e_error ?? 0),
         visible: true, color: "#444"},
       text: r.nearest.map((n) => `design ${n.design_index}, distance ${fmt(n.distance, 3)}`)});
   }

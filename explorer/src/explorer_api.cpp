@@ -254,9 +254,28 @@ std::string dem_export(const std::string& request) {
     dem::ParticleType type;
     type.material = parse_material_spec(sphere_spec, "sphere");
     type.radius = number("radius", "a number [m]");
-    spec.types.push_back(type);
-    spec.wall = parse_material_spec(substrate_spec, "substrate");
-    spec.wall_only = true;
+    const double radius_ratio = request_number(r, "radius_ratio", 0.0, "a number >= 0 [-]");
+    if (radius_ratio < 0.0 || !std::isfinite(radius_ratio)) {
+      throw_invalid("radius_ratio", radius_ratio, ">= 0 and finite [-]");
+    }
+    std::string types;  // the --type options of the command
+    if (radius_ratio > 0.0) {
+      // A particle pair: both bodies as particle types (R2 = R1/ratio), every pair calibrated.
+      dem::ParticleType other;
+      other.material = parse_material_spec(substrate_spec, "substrate");
+      other.radius = type.radius / radius_ratio;
+      type.label = "sphere";
+      other.label = "substrate";
+      spec.types = {type, other};
+      types = fmt::format("--type sphere={}:{} --type substrate={}:{}", sphere_spec, type.radius,
+                          substrate_spec, other.radius);
+    } else {
+      spec.types.push_back(type);
+      spec.wall = parse_material_spec(substrate_spec, "substrate");
+      spec.wall_only = true;
+      types = fmt::format("--type {}:{} --wall {} --wall-only", sphere_spec, type.radius,
+                          substrate_spec);
+    }
     spec.model = r.at("model").get<std::string>();
     spec.v_min = number("v_min", "a number [m/s]");
     spec.v_max = number("v_max", "a number [m/s]");
@@ -279,15 +298,14 @@ std::string dem_export(const std::string& request) {
              route("LIGGGHTS", dem::liggghts_delivery(pairs, p), dem::liggghts_time_step(pairs)),
              route("YADE", dem::yade_delivery(spec, p), dem::yade_time_step(pairs))}}});
     }
-    return json{{"fragments",
-                 {{"LAMMPS", dem::write_lammps(spec, pairs)},
-                  {"LIGGGHTS", dem::write_liggghts(spec, pairs)},
-                  {"YADE", dem::write_yade(spec, pairs)}}},
-                {"command", fmt::format("corlab dem --type {}:{} --wall {} --wall-only --model {} "
-                                        "--v-min {} --v-max {} --out dem_export",
-                                        sphere_spec, type.radius, substrate_spec, spec.model,
-                                        spec.v_min, spec.v_max)},
-                {"pairs", calibrations}};
+    return json{
+        {"fragments",
+         {{"LAMMPS", dem::write_lammps(spec, pairs)},
+          {"LIGGGHTS", dem::write_liggghts(spec, pairs)},
+          {"YADE", dem::write_yade(spec, pairs)}}},
+        {"command", fmt::format("corlab dem {} --model {} --v-min {} --v-max {} --out dem_export",
+                                types, spec.model, spec.v_min, spec.v_max)},
+        {"pairs", calibrations}};
   });
 }
 

@@ -224,20 +224,27 @@ def test_explorer_e_equals_corlab_predict(browser, corlab_bin, pair):
     assert console_errors(browser) == []
 
 
-def test_explorer_dem_fragments_are_corlab_dems(browser, corlab_bin, tmp_path):
-    state = open_explorer(browser)
-    dem = state["dem"]
+def assert_dem_is_clis(driver, corlab_bin, dem, out):
+    """The page's DEM fragments (and those it shows) are what `corlab dem` writes into `out` for
+    the command the page shows."""
     assert "error" not in dem, dem
     cmd = shlex.split(dem["command"])
     assert cmd[:2] == ["corlab", "dem"] and cmd[-2:] == ["--out", "dem_export"], cmd
-    done = subprocess.run([corlab_bin] + cmd[1:-1] + [str(tmp_path)], capture_output=True,
-                          text=True, timeout=120)
+    done = subprocess.run([corlab_bin] + cmd[1:-1] + [str(out)], capture_output=True,
+                          text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     for name, file in (("LAMMPS", "lammps.in"), ("LIGGGHTS", "liggghts.in"),
                        ("YADE", "yade_fragment.py")):
-        assert dem["fragments"][name] == (tmp_path / file).read_text(), name
-        shown = browser.execute_script(f"return document.getElementById('dem-{name}').textContent")
+        assert dem["fragments"][name] == (out / file).read_text(), name
+        shown = driver.execute_script(f"return document.getElementById('dem-{name}').textContent")
         assert shown == dem["fragments"][name]
+    return cmd
+
+
+def test_explorer_dem_fragments_are_corlab_dems(browser, corlab_bin, tmp_path):
+    state = open_explorer(browser)
+    cmd = assert_dem_is_clis(browser, corlab_bin, state["dem"], tmp_path)
+    assert "--wall-only" in cmd
 
 
 def test_explorer_shows_the_clis_message_for_bad_input(browser, corlab_bin):

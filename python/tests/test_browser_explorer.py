@@ -13,8 +13,8 @@ import time
 
 import pytest
 from test_browser import artefacts, browser  # noqa: F401 (fixtures)
-from test_browser import (TOLERANCE, choose, console_errors, open_explorer, page_state,
-                          set_field)
+from test_browser import (TOLERANCE, assert_dem_is_clis, choose, console_errors, open_explorer,
+                          page_state, set_field)
 
 STALE = "#c8c8c8"
 
@@ -163,7 +163,7 @@ def test_link_restores_every_input(browser):  # noqa: F811
     assert after["request"] == before["request"]
     assert after["request"]["sphere"].startswith("E=370000e6,nu=0.25,")
     assert {i: browser.find_element("id", i).get_attribute("value") for i in ids} == values
-    assert after["dem"]["command"] == before["dem"]["command"]
+    assert after["dem"] == before["dem"]
     assert console_errors(browser) == []
 
 
@@ -235,3 +235,33 @@ def test_fe_command_covers_the_speeds_outside_corlab2026p_range(browser):  # noq
         "return document.querySelector('#models tr[data-model=corlab2026p] td:nth-child(6)')"
         ".textContent")
     assert cell.startswith(f"outside at {len(outside)} of ")
+
+
+def test_dem_export_of_a_particle_pair_is_corlab_dems(browser, corlab_bin,  # noqa: F811
+                                                      tmp_path):
+    open_explorer(browser)
+    choose(browser, "sphere-name", "steel_aisi_52100")
+    choose(browser, "substrate-name", "aluminium_6061_t6")
+    set_field(browser, "radius-ratio", "0.5")
+    dem = page_state(browser)["dem"]
+    cmd = assert_dem_is_clis(browser, corlab_bin, dem, tmp_path)
+    assert "--type sphere=steel_aisi_52100:0.005 --type substrate=aluminium_6061_t6:0.01 " in \
+        dem["command"] and "--wall" not in cmd
+    assert len(dem["pairs"]) == 3  # sphere-sphere, sphere-substrate, substrate-substrate
+    choose(browser, "sphere-name", "alumina_ma2023")  # elastic: its own pair has no model e
+    dem = page_state(browser)["dem"]
+    done = subprocess.run([corlab_bin, "dem", "--type", "sphere=alumina_ma2023:0.005", "--type",
+                           "substrate=aluminium_6061_t6:0.01", "--model", "corlab2026",
+                           "--out", str(tmp_path / "elastic")], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 2
+    assert dem["error"]["message"] == done.stderr.strip().removeprefix("corlab: error: ")
+
+
+def test_dataset_runs_fade_with_their_distance(browser):  # noqa: F811
+    state = open_explorer(browser)
+    runs = next(t for t in plot_traces(browser) if t["name"] == "FE dataset, nearest runs")
+    distances = [n["distance"] for n in state["result"]["nearest"]]
+    opacity = runs["marker"]["opacity"]
+    assert opacity == [min(1, max(0.15, 1 - 2 * d)) for d in distances]
+    assert opacity == sorted(opacity, reverse=True) and opacity[0] > opacity[-1]
