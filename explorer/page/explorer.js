@@ -49,7 +49,11 @@ function buildMaterialInputs(body, defaultName) {
     const label = el("label", `${f.label} `);
     const input = el("input", null, {id: `${body}-${f.key}`, type: "text", inputmode: "decimal",
       placeholder: f.optional ? "none (elastic)" : ""});
-    input.addEventListener("change", () => { select.value = CUSTOM; update(); });
+    input.addEventListener("change", () => {
+      select.value = CUSTOM;
+      fillFields(body);  // the source line says "custom values"; the typed values stay
+      update();
+    });
     label.append(input);
     if (f.units) {
       const unit = el("select", null, {id: `${body}-${f.key}-unit`, "aria-label": `${f.label} unit`});

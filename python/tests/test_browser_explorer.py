@@ -44,6 +44,7 @@ def test_bad_input_greys_the_stale_curves_and_clears_what_belongs_to_them(browse
     set_field(browser, "sphere-nu", "0.7")
     state = page_state(browser)
     assert state["stale"] and state["error"].startswith("invalid sphere.nu = 0.7")
+    assert browser.find_element("id", "sphere-source").text == "custom values"
     assert state["result"] is None and state["dem"] is None and state["csv"] is None
     traces = plot_traces(browser)
     assert traces, "the last curves stay, greyed"
@@ -156,6 +157,8 @@ def test_link_restores_every_input(browser):  # noqa: F811
     before = page_state(browser)
     url = browser.current_url
     assert "#" in url and "radius-ratio=0.8" in url
+    browser.find_element("id", "copy-link").click()  # shows (and copies) the link
+    assert browser.find_element("id", "link").text == url
     ids = ["sphere-name", "sphere-E", "sphere-E-unit", "sphere-nu", "substrate-name",
            "substrate-E", "v-max", "v-spacing", "radius-ratio", "dem-model"]
     values = {i: browser.find_element("id", i).get_attribute("value") for i in ids}
