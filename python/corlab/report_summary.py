@@ -33,6 +33,16 @@ def _number(x):
     return v
 
 
+def duration(seconds):
+    """'42 s', '3.5 min' or '1.6 h' [s]; '-' when missing."""
+    s = _number(seconds)
+    if math.isnan(s):
+        return "-"
+    if s < 120:
+        return f"{s:.3g} s"
+    return f"{s / 60:.1f} min" if s < 7200 else f"{s / 3600:.1f} h"
+
+
 def _versus(c, name, digits=4):
     """'name = ours (paper p, +d %, in our 95 % CI)' of a fit.json "versus_paper" entry."""
     if not c or math.isnan(_number(c.get("value"))):
@@ -49,7 +59,7 @@ def glance_items(fit):
     total = fit.get("studies_total", {})
     items = [f"<b>Reproduced</b>: the FE study of Ma et al. (2023) with corlab's solver, preset "
              f"<code>{esc(fit.get('preset', '?'))}</code>: {esc(total.get('runs_on_disk', '-'))}"
-             f" finished runs ({fmt(total.get('solver_s_on_disk'), 3)} s of solver time), its "
+             f" finished runs ({duration(total.get('solver_s_on_disk'))} of solver time), its "
              f"Figs. 2-13 redrawn ({link(VERIFICATION, 'verification')}, {link(LAW, 'law')}, "
              f"{link(YIELD, 'yield velocity')}, {link(MODELS, 'models')})."]
     law = [x for x in (_versus(vs.get(k), k) for k in ("slope", "alpha", "beta")) if x]
