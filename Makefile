@@ -15,18 +15,22 @@ DEBIAN_PACKAGES := build-essential cmake ninja-build pkg-config \
   python3-matplotlib python3-scipy python3-pytest libopenmpi-dev openmpi-bin libgmsh-dev \
   libgsl-dev libmuparser-dev python3-mypy \
   clang-tidy python3-flake8 help2man
+# The e(v) explorer (docs/user/explorer.md) needs only these: emscripten compiles corlab's C++ to
+# WebAssembly, the header-only libraries it includes, python3-plotly ships plotly.js, dpkg-dev
+# unpacks GSL's Debian source package (for src/dem's DEM export). No DEM code, no browser.
+EXPLORER_DEBIAN_PACKAGES := emscripten python3-plotly libfmt-dev libtomlplusplus-dev \
+  nlohmann-json3-dev dpkg-dev cmake ninja-build
 # Only the tests need these: the DEM codes the DEM exports are checked with (issue 11; apt install
 # time measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB
-# disk)). `make test` installs them, `make run` does not.
+# disk)), python3-lammps and python3-scipy (the LAMMPS export's fix python/invoke hook), headless
+# chromium driven by selenium (the explorer's and the report's browser tests), lintian (the .deb).
+# `make test` installs them, `make run` does not.
 TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy \
-  emscripten python3-plotly chromium chromium-driver python3-selenium lintian
-# The e(v) explorer (docs/user/explorer.md) and its browser tests need the second line: emscripten
-# compiles corlab's C++ to WebAssembly, python3-plotly ships plotly.js, the tests drive headless
-# chromium with selenium. python3-lammps, python3-scipy: the LAMMPS export's fix python/invoke hook.
+  chromium chromium-driver python3-selenium lintian $(EXPLORER_DEBIAN_PACKAGES)
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \
   bench format clean dem-check install uninstall deb golden-rebaseline explorer
-.PHONY: build-all first-answer lint-spdx
+.PHONY: build-all first-answer lint-spdx deps-explorer
 
 # Installs the missing packages of $(1) with apt-get (as root).
 define apt_install
@@ -45,6 +49,9 @@ deps:
 
 deps-test:
 	$(call apt_install,$(TEST_DEBIAN_PACKAGES))
+
+deps-explorer:
+	$(call apt_install,$(EXPLORER_DEBIAN_PACKAGES))
 
 configure: deps
 	cmake --preset $(PRESET) -DCMAKE_BUILD_TYPE=Release
@@ -82,13 +89,16 @@ test-python:
 
 # The e(v) explorer: corlab's materials, restitution and dem sources compiled to WebAssembly by
 # Debian's emscripten and inlined with plotly.js into one offline page, $(EXPLORER_DIR)/explorer.html
-# (docs/user/explorer.md). GSL (for src/dem) is compiled from Debian's source package, fetched once
-# with apt-get source through a private source list (the system's apt configuration is untouched).
-# NODE_PATH: emscripten's JavaScript tools use Debian's node modules.
+# (docs/user/explorer.md). It needs only EXPLORER_DEBIAN_PACKAGES (deps-explorer) and GSL's
+# source: src/dem (the page's DEM export) calls GSL's ODE, root and minimiser routines, and Debian
+# ships GSL only as x86 libraries, so its source package is fetched once with apt-get source
+# through a private source list (the system's apt configuration is untouched) and the parts
+# src/dem calls are compiled to WebAssembly (explorer/GslWasm.cmake). The browser tests' chromium
+# comes with deps-test. NODE_PATH: emscripten's JavaScript tools use Debian's node modules.
 EXPLORER_DIR := $(BUILD_DIR)/explorer
 GSL_SOURCE := $(BUILD_DIR)/gsl-source
 EMSCRIPTEN_ENV := NODE_PATH=/usr/share/nodejs
-explorer: deps-test $(GSL_SOURCE)/gsl/configure
+explorer: deps-explorer $(GSL_SOURCE)/gsl/configure
 	$(EMSCRIPTEN_ENV) emcmake cmake -S explorer -B $(EXPLORER_DIR) -G Ninja \
 	  -DCORLAB_GSL_SOURCE_DIR=$(CURDIR)/$(GSL_SOURCE)/gsl
 	$(EMSCRIPTEN_ENV) cmake --build $(EXPLORER_DIR) -j $(JOBS)

@@ -3,8 +3,8 @@
 
 Inlines into explorer/page/explorer.html: the style, plotly.js (Debian's python3-plotly), the
 WebAssembly module built by em++ with -sSINGLE_FILE (corlab's C++, explorer/CMakeLists.txt), the
-FE dataset's columns the nearest-run search reads (explorer/src/nearest_runs.hpp) and
-explorer.js. The result loads nothing from the network and runs from file://.
+FE dataset's columns the nearest-run search reads (explorer/src/nearest_runs.hpp) and the page's
+scripts (SCRIPTS, in that order). The result loads nothing from the network and runs from file://.
 
     build_page.py --module corlab_explorer.js --plotly plotly.js --dataset dataset.csv \
                   --columns columns.json --out explorer.html
@@ -20,6 +20,9 @@ import tempfile
 from pathlib import Path
 
 PAGE = Path(__file__).resolve().parent / "page"
+# The page's scripts, helpers first: units.js (spec text), link.js (URL state), plot.js (plotly),
+# explorer.js (the page logic, which starts it).
+SCRIPTS = ["units.js", "link.js", "plot.js", "explorer.js"]
 # The dataset columns explorer/src/nearest_runs.cpp reads (runs_from_columns).
 DATASET_COLUMNS = ["design_index", "case_id", "status", "included", "k1", "k2", "modulus_ratio",
                    "sphere_yield_ratio", "nu_sphere", "nu_substrate", "hardening_ratio_sphere",
@@ -68,7 +71,7 @@ def build(args):
         "@@MODULE@@": script_text(Path(args.module).read_text()),
         "@@DATASET@@": script_text(json.dumps(dataset_columns(args.dataset, args.columns),
                                               allow_nan=False, separators=(",", ":"))),
-        "@@EXPLORER@@": script_text((PAGE / "explorer.js").read_text()),
+        "@@EXPLORER@@": script_text("\n".join((PAGE / s).read_text() for s in SCRIPTS)),
     }
     for key, text in parts.items():
         if page.count(key) != 1:

@@ -13,11 +13,12 @@ const CommandRegistration kRegistration{Command{
     [](CLI::App& /*sub*/) -> std::function<int()> {
       return [] {
         const auto& db = MaterialDatabase::builtin();
-        fmt::print("{:<24} {:>10} {:>6} {:>10} {:>10}  source\n", "name", "E [Pa]", "nu", "rho",
-                   "sigma_y");
+        fmt::print("{:<24} {:<16} {:>10} {:>6} {:>10} {:>10}  source\n", "name", "category",
+                   "E [Pa]", "nu", "rho", "sigma_y");
         for (const auto& name : db.names()) {
           const Material& m = db.get(name);
-          fmt::print("{:<24} {:>10.4g} {:>6.3g} {:>10.6g} {:>10}  {}\n", name, m.youngs_modulus,
+          fmt::print("{:<24} {:<16} {:>10.4g} {:>6.3g} {:>10.6g} {:>10}  {}\n", name,
+                     db.category(name).empty() ? "-" : db.category(name), m.youngs_modulus,
                      m.poisson_ratio, m.density,
                      m.yield_stress ? fmt::format("{:.4g}", *m.yield_stress) : std::string("-"),
                      m.source);

@@ -4,10 +4,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "corlab/core/error.hpp"
@@ -66,6 +69,53 @@ json error_json(const InputError& err) {
             {"constraint", err.constraint()}}}};
 }
 
+// A number of the request, or `fallback` when absent; InputError naming the key otherwise.
+double request_number(const json& request, const char* key, double fallback, const char* unit) {
+  const auto it = request.find(key);
+  if (it == request.end()) return fallback;
+  if (!it->is_number()) throw_invalid(key, it->dump(), unit);
+  return it->get<double>();
+}
+
+// Where a model is outside its accurate range at each speed [m/s] (the checks behind
+// validity_warnings): its calibration box in k1, k2; a damage number rho* v^2/sigma_y above its
+// accurate_damage_number; a speed beyond every model; a radius ratio beyond its fitted one.
+json accuracy_json(const restitution::ModelInfo& info,
+                   const std::vector<double>& velocities,
+                   const Material& reduced,
+                   const Material& substrate,
+                   double radius_ratio) {
+  const auto check = restitution::calibration_check(info, velocities, reduced, substrate);
+  const bool ratio_outside = !restitution::radius_ratio_warning(info, radius_ratio).empty();
+  std::vector<bool> outside(velocities.size(), ratio_outside);
+  std::vector<std::string> reasons;
+  if (ratio_outside) reasons.emplace_back("radius ratio beyond its fitted one");
+  bool k1_out = false;
+  bool damage_out = false;
+  bool speed_out = false;
+  for (std::size_t i = 0; i < velocities.size(); ++i) {
+    const double v = velocities[i];
+    const bool k1_i = check.known && (check.k2_outside || check.k1_outside[i]);
+    const bool damage_i =
+        info.accurate_damage_number && substrate.yield_stress &&
+        reduced.density * v * v / *substrate.yield_stress > *info.accurate_damage_number;
+    const bool speed_i = v > restitution::kMaxModelVelocity;
+    k1_out = k1_out || k1_i;
+    damage_out = damage_out || damage_i;
+    speed_out = speed_out || speed_i;
+    if (k1_i || damage_i || speed_i) outside[i] = true;
+  }
+  if (k1_out) reasons.emplace_back(check.k2_outside ? "k2 outside its box" : "k1 outside its box");
+  if (damage_out) {
+    reasons.push_back(
+        fmt::format("damage number rho* v^2/sigma_y above {:g}", *info.accurate_damage_number));
+  }
+  if (speed_out) {
+    reasons.push_back(fmt::format("speed above {:g} m/s", restitution::kMaxModelVelocity));
+  }
+  return {{"outside", outside}, {"reasons", reasons}};
+}
+
 json evaluate_json(const json& request) {
   const auto text = [&](const char* key) {
     const auto it = request.find(key);
@@ -84,31 +134,41 @@ json evaluate_json(const json& request) {
     velocities.push_back(v.get<double>());
   }
   const std::size_t nearest = request.value("nearest", std::size_t{10});
+  restitution::ModelOptions options;
+  options.radius_ratio = request_number(request, "radius_ratio", 0.0, "a number >= 0 [-]");
+  // k1 and the boxes at the pair's rho* (the sphere itself on a flat), as `corlab predict`.
+  const Material reduced = pair_reduced_sphere(sphere, substrate, options.radius_ratio);
 
   json out;
   out["sphere"] = material_json(sphere);
   out["substrate"] = material_json(substrate);
   out["velocity"] = velocities;
+  out["radius_ratio"] = options.radius_ratio;
   json models = json::array();
   std::vector<double> e(velocities.size());
   for (const auto& name : restitution::model_names()) {
-    const restitution::Model m = restitution::make_model(name, sphere, substrate);
+    const restitution::Model m = restitution::make_model(name, sphere, substrate, options);
     m.cor(velocities, e);  // checks every velocity (InputError naming the index)
-    const auto check = restitution::calibration_check(m.info(), velocities, sphere, substrate);
+    const auto check = restitution::calibration_check(m.info(), velocities, reduced, substrate);
     json calibration = nullptr;
     if (check.known) {
       calibration = {{"k2_outside", check.k2_outside},
                      {"k1_outside", check.k1_outside},
                      {"box", box_json(m.info().calibrated)}};
     }
-    models.push_back(
-        {{"model", name},
-         {"status", restitution::to_string(m.info().status)},
-         {"clamped", m.clamped()},
-         {"v_y", m.yield_velocity()},
-         {"e", e},
-         {"calibration", calibration},
-         {"warnings", restitution::validity_warnings(m.info(), velocities, sphere, substrate)}});
+    auto warnings = restitution::validity_warnings(m.info(), velocities, reduced, substrate);
+    if (auto w = restitution::radius_ratio_warning(m.info(), options.radius_ratio); !w.empty()) {
+      warnings.push_back(std::move(w));
+    }
+    models.push_back({{"model", name},
+                      {"status", restitution::to_string(m.info().status)},
+                      {"clamped", m.clamped()},
+                      {"v_y", m.yield_velocity()},
+                      {"e", e},
+                      {"calibration", calibration},
+                      {"accuracy", accuracy_json(m.info(), velocities, reduced, substrate,
+                                                 options.radius_ratio)},
+                      {"warnings", warnings}});
     if (name == "corlab2026") {
       // |model - FE| <= p FE for 95 % of the training runs: FE in [e/(1 + p), e/(1 - p)].
       const double p = prediction_interval_95();
@@ -126,14 +186,15 @@ json evaluate_json(const json& request) {
   const double e_star = effective_modulus(sphere, substrate);
   const auto yield = restitution::first_yield(sphere, substrate);
   std::vector<double> k1s;
-  for (const double v : velocities) k1s.push_back(k1(e_star, sphere.density, v));
+  for (const double v : velocities) k1s.push_back(k1(e_star, reduced.density, v));
   out["effective_modulus"] = e_star;
+  out["effective_density"] = reduced.density;
   out["k1"] = k1s;
   out["k2"] = k2(*substrate.yield_stress, e_star);
   out["first_yield_velocity"] = yield.velocity;
   out["sphere_yields_first"] = yield.sphere_first;
   const auto [v_min, v_max] = std::minmax_element(velocities.begin(), velocities.end());
-  out["nearest"] = nearest_runs(dataset_runs(), sphere, substrate, *v_min, *v_max, nearest);
+  out["nearest"] = nearest_runs(dataset_runs(), reduced, substrate, *v_min, *v_max, nearest);
   out["dataset_runs"] = dataset_runs().size();
   return out;
 }
@@ -158,7 +219,11 @@ std::string catalog() {
   return guarded([] {
     const MaterialDatabase& db = MaterialDatabase::builtin();
     json materials = json::array();
-    for (const auto& name : db.names()) materials.push_back(material_json(db.get(name)));
+    for (const auto& name : db.names()) {
+      json m = material_json(db.get(name));
+      m["category"] = db.category(name);
+      materials.push_back(std::move(m));
+    }
     json models = json::array();
     for (const auto& info : restitution::model_catalog()) {
       models.push_back(restitution::model_info_json(info));
@@ -189,30 +254,58 @@ std::string dem_export(const std::string& request) {
     dem::ParticleType type;
     type.material = parse_material_spec(sphere_spec, "sphere");
     type.radius = number("radius", "a number [m]");
-    spec.types.push_back(type);
-    spec.wall = parse_material_spec(substrate_spec, "substrate");
-    spec.wall_only = true;
+    const double radius_ratio = request_number(r, "radius_ratio", 0.0, "a number >= 0 [-]");
+    if (radius_ratio < 0.0 || !std::isfinite(radius_ratio)) {
+      throw_invalid("radius_ratio", radius_ratio, ">= 0 and finite [-]");
+    }
+    std::string types;  // the --type options of the command
+    if (radius_ratio > 0.0) {
+      // A particle pair: both bodies as particle types (R2 = R1/ratio), every pair calibrated.
+      dem::ParticleType other;
+      other.material = parse_material_spec(substrate_spec, "substrate");
+      other.radius = type.radius / radius_ratio;
+      type.label = "sphere";
+      other.label = "substrate";
+      spec.types = {type, other};
+      types = fmt::format("--type sphere={}:{} --type substrate={}:{}", sphere_spec, type.radius,
+                          substrate_spec, other.radius);
+    } else {
+      spec.types.push_back(type);
+      spec.wall = parse_material_spec(substrate_spec, "substrate");
+      spec.wall_only = true;
+      types = fmt::format("--type {}:{} --wall {} --wall-only", sphere_spec, type.radius,
+                          substrate_spec);
+    }
     spec.model = r.at("model").get<std::string>();
     spec.v_min = number("v_min", "a number [m/s]");
     spec.v_max = number("v_max", "a number [m/s]");
     const auto pairs = dem::calibrate_pairs(spec);  // validates the spec (InputError)
+    // How each fragment delivers the target: the route its writer takes (LAMMPS: the
+    // recommended fix python/invoke hook, the route write_lammps writes) and its max |de|.
+    const auto route = [](const char* code, const dem::Delivery& d, double step) {
+      return json{{"code", code},
+                  {"route", d.route},
+                  {"max_abs_error", d.max_abs_error},
+                  {"time_step", step}};
+    };
     json calibrations = json::array();
     for (const auto& p : pairs) {
-      calibrations.push_back({{"target", p.target},
-                              {"lammps_viscoelastic_eta", p.lammps_viscoelastic_eta()},
-                              {"viscoelastic_max_abs_error", p.viscoelastic->max_abs_error},
-                              {"liggghts_yield_ratio", p.liggghts_yield_ratio()},
-                              {"liggghts_max_abs_error", p.liggghts->max_abs_error}});
+      calibrations.push_back(
+          {{"target", p.target},
+           {"routes",
+            {route("LAMMPS", dem::lammps_delivery(spec, p, true),
+                   dem::lammps_time_step(pairs, true)),
+             route("LIGGGHTS", dem::liggghts_delivery(pairs, p), dem::liggghts_time_step(pairs)),
+             route("YADE", dem::yade_delivery(spec, p), dem::yade_time_step(pairs))}}});
     }
-    return json{{"fragments",
-                 {{"LAMMPS", dem::write_lammps(spec, pairs)},
-                  {"LIGGGHTS", dem::write_liggghts(spec, pairs)},
-                  {"YADE", dem::write_yade(spec, pairs)}}},
-                {"command", fmt::format("corlab dem --type {}:{} --wall {} --wall-only --model {} "
-                                        "--v-min {} --v-max {} --out dem_export",
-                                        sphere_spec, type.radius, substrate_spec, spec.model,
-                                        spec.v_min, spec.v_max)},
-                {"pairs", calibrations}};
+    return json{
+        {"fragments",
+         {{"LAMMPS", dem::write_lammps(spec, pairs)},
+          {"LIGGGHTS", dem::write_liggghts(spec, pairs)},
+          {"YADE", dem::write_yade(spec, pairs)}}},
+        {"command", fmt::format("corlab dem {} --model {} --v-min {} --v-max {} --out dem_export",
+                                types, spec.model, spec.v_min, spec.v_max)},
+        {"pairs", calibrations}};
   });
 }
 

@@ -23,8 +23,11 @@ std::string evaluate(const std::string& request);
 
 /// The DEM export of the pair (`corlab dem --type SPHERE:RADIUS --wall SUBSTRATE --wall-only
 /// --model MODEL --v-min V0 --v-max V1`, src/dem: the same calibration and writers): a request
-/// {"sphere", "substrate", "radius" [m], "model", "v_min", "v_max" [m/s]} gives {"fragments":
-/// {"LAMMPS", "LIGGGHTS", "YADE"}, "command", "pairs": [...]} or {"error": ...}.
+/// {"sphere", "substrate", "radius" [m], "model", "v_min", "v_max" [m/s], "radius_ratio" [-]}
+/// gives {"fragments": {"LAMMPS", "LIGGGHTS", "YADE"}, "command", "pairs": [{"target",
+/// "routes": [{"code", "route", "max_abs_error", "time_step" [s]}]}]} or {"error": ...}. A
+/// radius ratio R1/R2 > 0 exports a particle pair instead: the two bodies as particle types
+/// "sphere" (R1) and "substrate" (R1/ratio), every pair of them calibrated, no wall.
 std::string dem_export(const std::string& request);
 
 /// Keeps the FE dataset's runs for evaluate(): a JSON object of equal-length columns named as in

@@ -22,19 +22,21 @@ import matplotlib.pyplot as plt  # noqa: E402
 from .vtu import field_snapshots, read_vtu  # noqa: E402
 
 
-# Colours and markers of figures with one series per case (Figs. 6 and 9, yield onset): tab10 with
-# circles, then ten other hues far from tab10 and from each other (not tab20's light shades, which
-# read as pairs) with squares, then both again with other markers: no two cases look alike.
-_CASE_MARKERS = ("o", "s", "^", "D", "v", "P")
+# Colours and markers of figures with one series per case (Figs. 6 and 9, yield onset): tab10, then
+# ten other hues far from tab10 and from each other (not tab20's light shades, which read as
+# pairs); and a marker of its own for each of the first 15 cases (Fig. 6's), so that a case is told
+# apart by its colour and by its marker alike, in print and for colour-blind readers.
+_CASE_MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*", "<", ">", "h", "p", "d", "H", "8")
 _SECOND_COLOURS = ("#000000", "#000080", "#800000", "#ff00ff", "#808000", "#0000ff", "#8b008b",
                    "#00a86b", "#2f4f4f", "#6495ed")
 
 
 def case_style(i):
-    """(colour, marker) of case i: distinct for every i < 10 * len(_CASE_MARKERS)."""
-    cycle, k = divmod(i, 10)
-    palette = matplotlib.colormaps["tab10"].colors if cycle % 2 == 0 else _SECOND_COLOURS
-    return matplotlib.colors.to_hex(palette[k]), _CASE_MARKERS[cycle % len(_CASE_MARKERS)]
+    """(colour, marker) of case i: 20 colours and 15 markers in turn, so every colour differs for
+    i < 20, every marker for i < 15 and every (colour, marker) for i < 60."""
+    cycle, k = divmod(i % 20, 10)
+    palette = matplotlib.colormaps["tab10"].colors if cycle == 0 else _SECOND_COLOURS
+    return matplotlib.colors.to_hex(palette[k]), _CASE_MARKERS[i % len(_CASE_MARKERS)]
 
 
 def read_csv(path):

@@ -38,6 +38,12 @@ def table(headers, rows):
     return "\n".join(out)
 
 
+def slug_of(title):
+    """The anchor of a heading's HTML text: its words in lower case joined by '-'."""
+    text = re.sub(r"<[^>]+>", "", html.unescape(title))
+    return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-") or "section"
+
+
 def with_contents(body):
     """`body` (the report's HTML) with an id on every <h2> and, before the first one, a table of
     contents linking to each (slugs from the heading's text; a repeated slug gets -2, -3, ...)."""
@@ -45,8 +51,7 @@ def with_contents(body):
 
     def anchor(match):
         title = match.group(1)
-        text = re.sub(r"<[^>]+>", "", html.unescape(title))
-        slug = re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-") or "section"
+        slug = slug_of(title)
         seen[slug] = seen.get(slug, 0) + 1
         if seen[slug] > 1:
             slug = f"{slug}-{seen[slug]}"

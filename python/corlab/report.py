@@ -24,6 +24,7 @@ from . import figures
 from .html_table import esc, fmt, pct, table, with_contents
 from .report_dataset import dataset_section
 from .report_oblique import oblique_section
+from .report_summary import glance
 
 COARSE_OMITS = [
     "Contact mesh: h_min = 1 mm with h <= a_max/4 (paper and paper preset: 0.25 mm, h <= "
@@ -378,7 +379,8 @@ table{border-collapse:collapse;margin:0.6em 0;font-size:0.9em}
 td,th{border:1px solid #bbb;padding:3px 6px;text-align:left}th{background:#eee}
 img{max-width:100%;border:1px solid #ddd;margin:4px 0}code{background:#f4f4f4;padding:1px 3px}
 .warn{background:#fff3cd;padding:0.5em;border:1px solid #e0c060}
-.toc{background:#f8f8f8;border:1px solid #ddd;padding:0.3em 1em;columns:2}"""
+.toc{background:#f8f8f8;border:1px solid #ddd;padding:0.3em 1em;columns:2}
+.glance{background:#eef5ff;border:1px solid #9bc;padding:0.4em 1em}.glance ul{margin:0.3em 0}"""
 
 
 def make_report(out_dir):
@@ -424,6 +426,7 @@ def make_report(out_dir):
 <p>"Research on normal restitution coefficient based on dimensionless analyses",
 doi 10.6052/0459-1879-22-583. Our FE solver is corlab's explicit axisymmetric code, not ABAQUS.
 All numbers below are computed from the runs in this directory.</p>
+{glance(fit)}
 {omitted}
 <h2>Summary</h2>{discussion(fit)}
 <h2>Fitted coefficients (95 % confidence intervals, Student t)</h2>

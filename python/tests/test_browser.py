@@ -103,14 +103,17 @@ def screenshot(driver, path):
     driver.set_window_size(1400, 1000)
 
 
-def open_explorer(driver):
-    """Loads the page from file:// with the network emulated offline; its state once ready."""
+def open_explorer(driver, url=None):
+    """Loads the page (or `url`, the page with a fragment) from file:// with the network emulated
+    offline, from a blank page (a fresh load even where only the fragment differs); its state
+    once ready."""
     page = explorer_page()
     driver.execute_cdp_cmd("Network.enable", {})
     driver.execute_cdp_cmd("Network.emulateNetworkConditions", {
         "offline": True, "latency": 0, "downloadThroughput": -1, "uploadThroughput": -1})
+    driver.get("about:blank")
     console_errors(driver)  # start from an empty console
-    driver.get(page.as_uri())
+    driver.get(url or page.as_uri())
     wait_for(driver, "window.corlabExplorer && window.corlabExplorer.ready")
     return page_state(driver)
 
@@ -121,11 +124,11 @@ def page_state(driver):
 
 
 def predict(corlab_bin, request, spacing):
-    """`corlab predict --model all` over the page's speed range, as JSON."""
+    """`corlab predict --model all` over the page's speed range and radius ratio, as JSON."""
     v = request["velocity"]
     cmd = [corlab_bin, "predict", "--model", "all", "--sphere", request["sphere"], "--substrate",
            request["substrate"], "--velocity", f"{v[0]!r}:{v[-1]!r}:{len(v)}", "--spacing",
-           spacing, "--format", "json"]
+           spacing, "--radius-ratio", repr(float(request["radius_ratio"])), "--format", "json"]
     done = subprocess.run(cmd, capture_output=True, text=True, timeout=60)
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
@@ -156,8 +159,8 @@ def test_explorer_opens_offline_without_console_errors(browser, artefacts):
     assert [r for r in resources if not r.startswith(("data:", "blob:"))] == []
     assert all(ok for _, ok in images(browser)), images(browser)
     # the plot is drawn: one trace per model at least, the band and the dataset's runs
-    traces = browser.execute_script(
-        "return document.getElementById('plot').data.map(t => t.name || '')")
+    traces = browser.execute_script(  # a model's traces carry its name in meta
+        "return document.getElementById('plot').data.map(t => t.meta ? t.meta.model : t.name)")
     names = [m["name"] for m in state["catalog"]["models"]]
     assert set(names) <= set(traces)
     assert "FE dataset, nearest runs" in traces
@@ -167,20 +170,25 @@ def test_explorer_opens_offline_without_console_errors(browser, artefacts):
     assert console_errors(browser) == []
 
 
-# Three pairs, each set through the page's own inputs: built-in names, a built-in pair with lin
-# spacing, custom values in every field.
+# Four pairs, each set through the page's own inputs: built-in names, a built-in pair with lin
+# spacing, custom values in every field (moduli in the page's default units, GPa and MPa), a
+# particle pair (radius ratio 0.5: corlab2026p's case).
 PAIRS = [
     ({}, {"v-min": "0.1", "v-max": "20", "v-count": "200", "v-spacing": "log"}),
     ({"sphere-name": "steel_ma2023", "substrate-name": "steel_jackson2010"},
      {"v-min": "0.5", "v-max": "50", "v-count": "37", "v-spacing": "lin"}),
-    ({"sphere-name": "custom", "sphere-E": "115e9", "sphere-nu": "0.31", "sphere-rho": "8900",
-      "sphere-sy": "250e6", "sphere-H": "1e9", "substrate-name": "custom", "substrate-E": "70e9",
-      "substrate-nu": "0.33", "substrate-rho": "2700", "substrate-sy": "2.75e8",
-      "substrate-H": "5e8"},
+    ({"sphere-name": "custom", "sphere-E": "115", "sphere-nu": "0.31", "sphere-rho": "8900",
+      "sphere-sy": "250", "sphere-H": "1000", "substrate-name": "custom", "substrate-E": "70",
+      "substrate-nu": "0.33", "substrate-rho": "2700", "substrate-sy": "2.75e2",
+      "substrate-H": "500"},
      {"v-min": "0.05", "v-max": "100", "v-count": "101", "v-spacing": "log"}),
+    ({"sphere-name": "steel_aisi_52100", "substrate-name": "aluminium_6061_t6"},
+     {"v-min": "0.2", "v-max": "15", "v-count": "40", "v-spacing": "log", "radius-ratio": "0.5"}),
 ]
 SPECS = [("alumina_ma2023", "aluminium_ma2023"), ("steel_ma2023", "steel_jackson2010"),
-         ("E=115e9,nu=0.31,rho=8900,sy=250e6,H=1e9", "E=70e9,nu=0.33,rho=2700,sy=2.75e8,H=5e8")]
+         ("E=115e9,nu=0.31,rho=8900,sy=250e6,H=1000e6",
+          "E=70e9,nu=0.33,rho=2700,sy=2.75e8,H=500e6"),
+         ("steel_aisi_52100", "aluminium_6061_t6")]
 
 
 @pytest.mark.parametrize("pair", range(len(PAIRS)))
@@ -202,7 +210,9 @@ def test_explorer_e_equals_corlab_predict(browser, corlab_bin, pair):
     assert (request["sphere"], request["substrate"]) == SPECS[pair]
     assert len(request["velocity"]) == int(speeds["v-count"])
     assert state["error"] in (None, ""), state["error"]
+    assert request["radius_ratio"] == float(speeds.get("radius-ratio", 0))
     cli = predict(corlab_bin, request, speeds["v-spacing"])
+    assert cli["radius_ratio"] == request["radius_ratio"]
     assert [m["model"] for m in result["models"]] == [m["model"] for m in cli["models"]]
     assert result["effective_modulus"] == pytest.approx(cli["effective_modulus"], rel=TOLERANCE)
     for page, ref in zip(result["models"], cli["models"]):
@@ -214,20 +224,27 @@ def test_explorer_e_equals_corlab_predict(browser, corlab_bin, pair):
     assert console_errors(browser) == []
 
 
-def test_explorer_dem_fragments_are_corlab_dems(browser, corlab_bin, tmp_path):
-    state = open_explorer(browser)
-    dem = state["dem"]
+def assert_dem_is_clis(driver, corlab_bin, dem, out):
+    """The page's DEM fragments (and those it shows) are what `corlab dem` writes into `out` for
+    the command the page shows."""
     assert "error" not in dem, dem
     cmd = shlex.split(dem["command"])
     assert cmd[:2] == ["corlab", "dem"] and cmd[-2:] == ["--out", "dem_export"], cmd
-    done = subprocess.run([corlab_bin] + cmd[1:-1] + [str(tmp_path)], capture_output=True,
-                          text=True, timeout=120)
+    done = subprocess.run([corlab_bin] + cmd[1:-1] + [str(out)], capture_output=True,
+                          text=True, timeout=300)
     assert done.returncode == 0, done.stderr
     for name, file in (("LAMMPS", "lammps.in"), ("LIGGGHTS", "liggghts.in"),
                        ("YADE", "yade_fragment.py")):
-        assert dem["fragments"][name] == (tmp_path / file).read_text(), name
-        shown = browser.execute_script(f"return document.getElementById('dem-{name}').textContent")
+        assert dem["fragments"][name] == (out / file).read_text(), name
+        shown = driver.execute_script(f"return document.getElementById('dem-{name}').textContent")
         assert shown == dem["fragments"][name]
+    return cmd
+
+
+def test_explorer_dem_fragments_are_corlab_dems(browser, corlab_bin, tmp_path):
+    state = open_explorer(browser)
+    cmd = assert_dem_is_clis(browser, corlab_bin, state["dem"], tmp_path)
+    assert "--wall-only" in cmd
 
 
 def test_explorer_shows_the_clis_message_for_bad_input(browser, corlab_bin):
@@ -235,7 +252,7 @@ def test_explorer_shows_the_clis_message_for_bad_input(browser, corlab_bin):
     choose(browser, "sphere-name", "alumina_ma2023")
     set_field(browser, "sphere-nu", "0.7")  # switches the sphere to custom
     state = page_state(browser)
-    assert state["request"]["sphere"] == "E=370000000000,nu=0.7,rho=3958.226,H=0"
+    assert state["request"]["sphere"] == "E=370e9,nu=0.7,rho=3958.226,H=0"
     done = subprocess.run([corlab_bin, "predict", "--model", "all", "--sphere",
                            state["request"]["sphere"], "--substrate", "aluminium_ma2023",
                            "--velocity", "1"], capture_output=True, text=True, timeout=60)
@@ -258,6 +275,18 @@ def test_report_opens_with_every_image_loaded(browser, artefacts, tiny_reproduct
     figures = sorted((out / "figures").glob("*.png"))
     assert figures and len(found) >= len(figures) > 0
     assert [src for src, ok in found if not ok] == []
+    # the summary: right under the title, before the contents, inside the first screen (1000 px),
+    # every link landing on a section; it names the runs fit.json counts
+    fit = json.loads((out / "fit.json").read_text())
+    top, bottom, links, before_toc, text = browser.execute_script(
+        "window.scrollTo(0, 0); const g = document.getElementById('at-a-glance');"
+        " const r = g.getBoundingClientRect(); return [r.top, r.bottom,"
+        " [...g.querySelectorAll('a')].map(a => !!document.getElementById(a.hash.slice(1))),"
+        " !!(g.compareDocumentPosition(document.querySelector('nav.toc')) & 4), g.textContent]")
+    assert 0 < top < bottom <= 1000, (top, bottom)
+    assert len(links) >= 6 and all(links), links
+    assert before_toc
+    assert f"{fit['studies_total']['runs_on_disk']} finished runs" in text
     # the table of contents: an entry per section, each link landing on its heading
     toc = browser.execute_script(
         "return [...document.querySelectorAll('nav.toc a')].map(a => [a.hash.slice(1),"
@@ -267,6 +296,7 @@ def test_report_opens_with_every_image_loaded(browser, artefacts, tiny_reproduct
     browser.find_element("css selector", f'nav.toc a[href="#{toc[-1][0]}"]').click()
     wait_for(browser, f"location.hash === '#{toc[-1][0]}'")
     assert console_errors(browser) == []
+    browser.execute_script("window.scrollTo(0, 0)")
     screenshot(browser, artefacts / "report.png")
 
 
@@ -280,6 +310,8 @@ def test_explorer_nearest_run_of_a_dataset_runs_own_pair_is_that_run(browser):
     choose(browser, "sphere-name", "custom")
     choose(browser, "substrate-name", "custom")
     for body in ("sphere", "substrate"):
+        for key in ("E", "sy", "H"):  # the dataset's values are in Pa
+            choose(browser, f"{body}-{key}-unit", "Pa")
         for key, column in (("E", "E"), ("nu", "nu"), ("rho", "rho"), ("sy", "sigma_y"),
                             ("H", "H")):
             set_field(browser, f"{body}-{key}", run[f"{body}_{column}"])

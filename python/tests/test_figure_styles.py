@@ -1,5 +1,6 @@
 """Figures with one series per case give every case its own look: Fig. 6 draws 15 cases, each in
-its own colour and marker, and no two colours of the first 20 cases are near each other."""
+its own colour and its own marker, and no two colours of the first 20 cases are near each
+other."""
 # SPDX-License-Identifier: BSD-3-Clause
 import itertools
 import math
@@ -10,9 +11,10 @@ from corlab import figures
 
 
 def test_case_styles_are_distinct_and_start_with_the_default_colours():
-    styles = [figures.case_style(i) for i in range(10 * len(figures._CASE_MARKERS))]
+    styles = [figures.case_style(i) for i in range(60)]
     assert len(set(styles)) == len(styles)
     assert len({colour for colour, _ in styles[:20]}) == 20  # 20 cases: 20 colours
+    assert len({marker for _, marker in styles[:15]}) == 15  # 15 cases: 15 markers
     tab10 = matplotlib.colormaps["tab10"].colors
     assert [colour for colour, _ in styles[:10]] == [matplotlib.colors.to_hex(c) for c in tab10]
 
@@ -48,3 +50,4 @@ def test_fig6_draws_fifteen_cases_in_fifteen_styles(tmp_path, monkeypatch):
     looks = {(matplotlib.colors.to_hex(line.get_color()), line.get_marker()) for line in points}
     assert len(looks) == 15
     assert len({colour for colour, _ in looks}) == 15
+    assert len({marker for _, marker in looks}) == 15

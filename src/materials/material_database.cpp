@@ -61,6 +61,8 @@ MaterialDatabase MaterialDatabase::load(const std::filesystem::path& file) {
       const std::string_view k = field_key.str();
       if (k == "source") {
         m.source = value.value_or(std::string());
+      } else if (k == "category") {
+        db.categories_[name] = value.value_or(std::string());
       } else if (k == "description") {
         continue;
       } else if (auto number = value.value<double>()) {
@@ -100,6 +102,13 @@ const Material& MaterialDatabase::get(std::string_view name, std::string_view fi
         fmt::format("one of [{}] or E=..,nu=..,rho=..[,sy=..]", fmt::join(names(), ", ")));
   }
   return it->second;
+}
+
+const std::string& MaterialDatabase::category(std::string_view name, std::string_view field) const {
+  static const std::string none;
+  (void)get(name, field);  // the unknown-name message
+  const auto it = categories_.find(name);
+  return it == categories_.end() ? none : it->second;
 }
 
 std::vector<std::string> MaterialDatabase::names() const {

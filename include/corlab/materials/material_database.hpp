@@ -28,9 +28,13 @@ class MaterialDatabase {
   const Material& get(std::string_view name, std::string_view field = "material") const;
   bool contains(std::string_view name) const;
   std::vector<std::string> names() const;
+  /// The entry's `category` (data/materials.toml: "paper case", "glass", "steel", ...; the
+  /// material library's grouping); empty for an entry without one. Throws as get() does.
+  const std::string& category(std::string_view name, std::string_view field = "material") const;
 
  private:
   std::map<std::string, Material, std::less<>> materials_;
+  std::map<std::string, std::string, std::less<>> categories_;
 };
 
 /// Parses a material spec (see file comment) and validates the result.

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,35 @@ TEST(MaterialDatabase, BuiltinEntries) {
   EXPECT_DOUBLE_EQ(db.get("alumina_ma2023").density, 3958.226);
   const auto names = db.names();
   EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
-  EXPECT_EQ(names.size(), 12u);
+  // the seed paper's 12 materials and the library of engineering materials
+  EXPECT_EQ(std::count_if(names.begin(), names.end(),
+                          [&](const std::string& n) { return db.category(n) == "paper case"; }),
+            12);
+}
+
+// The library (data/materials.toml): every entry names its category and its source, and every
+// kind of engineering material the explorer offers is there, with a yield stress where it yields.
+TEST(MaterialDatabase, LibraryCoversTheCommonEngineeringMaterials) {
+  const auto& db = MaterialDatabase::builtin();
+  std::map<std::string, int> per_category;
+  for (const auto& name : db.names()) {
+    const Material& m = db.get(name);
+    EXPECT_FALSE(m.source.empty()) << name;
+    const std::string& category = db.category(name);
+    EXPECT_FALSE(category.empty()) << name;
+    ++per_category[category];
+    const bool brittle = category == "glass" || category == "ceramic";
+    if (category != "paper case") {
+      EXPECT_EQ(m.yield_stress.has_value(), !brittle) << name;
+    }
+  }
+  for (const char* category :
+       {"glass", "ceramic", "steel", "copper alloy", "aluminium alloy", "titanium", "polymer"}) {
+    EXPECT_GE(per_category[category], 2) << category;
+  }
+  const Material& glass = db.get("glass_soda_lime");
+  EXPECT_DOUBLE_EQ(glass.youngs_modulus, 70e9);
+  EXPECT_NE(glass.source.find("EN 572-1"), std::string::npos);
 }
 
 TEST(MaterialDatabase, UnknownNameMessage) {
@@ -48,8 +77,9 @@ TEST(MaterialDatabase, UnknownNameMessage) {
     ADD_FAILURE();
   } catch (const InputError& e) {
     const std::string msg = e.what();
-    EXPECT_EQ(msg.rfind("invalid sphere = 'unobtainium': must be one of [alumina_ma2023, ", 0), 0u)
+    EXPECT_EQ(msg.rfind("invalid sphere = 'unobtainium': must be one of [acetal_pom, ", 0), 0u)
         << msg;
+    EXPECT_NE(msg.find(", alumina_ma2023, "), std::string::npos) << msg;
     EXPECT_NE(msg.find("] or E=..,nu=..,rho=..[,sy=..]"), std::string::npos) << msg;
   }
 }
