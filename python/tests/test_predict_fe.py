@@ -75,8 +75,8 @@ def test_fe_is_cached_and_a_corrupted_or_foreign_entry_is_recomputed(corlab_bin,
 
 def test_auto_answers_with_the_model_inside_its_range_and_the_fe_beyond(corlab_bin, tmp_path):
     """alumina on aluminium (v_y = 0.060 m/s): corlab2026p at 0.12 m/s (v/v_y = 2), the FE at
-    20 m/s (v/v_y = 333 > 3); an elastic pair (no closed form) from the FE. The cache is a file, not a
-    directory: one warning, the answers still given."""
+    20 m/s (v/v_y = 333 > 3); an elastic pair (no closed form) from the FE. The cache is a
+    file, not a directory: one warning, the answers still given."""
     blocked = tmp_path / "a_file"
     blocked.write_text("")
     rows, err = predict(corlab_bin, blocked, "--model", "auto", "--sphere", SPHERE,
