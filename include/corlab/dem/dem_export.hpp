@@ -5,7 +5,9 @@
 /// restitution, and the input fragments for LAMMPS, LIGGGHTS and YADE plus e(v)/chi tables.
 /// Calibration (physics) and text (I/O) are separate: calibrate_pairs() then write_*().
 
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +57,29 @@ struct PairTable {
 /// InputError naming `pair-table`.
 PairTable parse_pair_table(std::string_view text);
 
+/// The two bodies of one pair as `corlab predict` takes them: the particle of type_i is the
+/// sphere, the other body (type_j's particle, or the wall) the substrate.
+struct PairBodies {
+  Material sphere;
+  Material substrate;
+  double radius_ratio = 0.0;  ///< r_i / r_j; 0: the wall, a flat [-]
+  std::string sphere_label;
+  std::string substrate_label;
+};
+/// A pair's e(v) computed outside this library (corlab's FE solver:
+/// dataset/dem_fe_targets.hpp): the target, its description in the exports, and one-line
+/// warnings for the user (how far it can be trusted).
+struct ExternalTarget {
+  RestitutionCurve curve;  ///< e(v) [m/s] -> [-]
+  std::string description;
+  std::vector<std::string> warnings;
+};
+/// Computes a pair's ExternalTarget at the fit speeds [m/s] (the curve answers at any speed).
+using PairTargetSource =
+    std::function<ExternalTarget(const PairBodies& bodies, std::span<const double> speeds)>;
+/// The model names that PairTargetSource answers ("fe", "auto"; not registered models).
+bool is_external_model(std::string_view model);
+
 /// What the user asks for.
 struct ExportSpec {
   std::vector<ParticleType> types;    ///< at least one
@@ -74,6 +99,9 @@ struct ExportSpec {
   /// Coulomb friction coefficient mu [-] of every pair (0: frictionless, the normal part only);
   /// above 0 each fragment adds Mindlin's tangential stiffness (tangential.hpp).
   double friction = 0.0;
+  /// e(v) of every pair without its own target when `model` is "fe" or "auto"
+  /// (is_external_model); set by the CLI and Python (the FE solver is not part of this library).
+  PairTargetSource target_source;
 };
 
 /// Most rows per pair of the e(v) tables (write_table_csv, write_json): each row of a fitted pair
@@ -97,11 +125,14 @@ struct PairCalibration {
   /// rho* = 3 m*/(4 pi R*^3) [kg/m^3]: the density of the sphere whose impact on a flat is this
   /// pair's (wall: the particle's; two identical spheres: 4 rho); a model's e(v) is taken at it.
   double effective_density = 0.0;
-  double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
-  double shear_modulus = 0.0;      ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
-  double friction = 0.0;           ///< Coulomb mu [-] (ExportSpec::friction)
-  std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
-  std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
+  double hertz_stiffness = 0.0;  ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
+  double shear_modulus = 0.0;    ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
+  double friction = 0.0;         ///< Coulomb mu [-] (ExportSpec::friction)
+  std::string label;             ///< "glass-glass", "glass-copper" (type labels; wall last)
+  std::string target;            ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
+  /// One-line warnings on the target: a model asked outside its validity (as `corlab predict`
+  /// warns), an FE speed without an e.
+  std::vector<std::string> warnings;
   RestitutionCurve curve;          ///< target e(v) [m/s] -> [-]
   std::optional<double> constant;  ///< the constant target e (--restitution or a pair's own)
   double contact_time_fast = 0.0;  ///< Hertz contact time at v_max [s] (the shortest)
