@@ -85,7 +85,8 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   out << text;
 }
 
-int run_dem(const DemArgs& args) {
+// The spec of the arguments (the tables read), without the FE source of --model fe|auto.
+dem::ExportSpec export_spec(const DemArgs& args) {
   dem::ExportSpec spec;
   for (const auto& t : args.types) spec.types.push_back(parse_type(t));
   if (!args.wall.empty()) {
@@ -110,6 +111,11 @@ int run_dem(const DemArgs& args) {
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
   spec.friction = args.friction;
+  return spec;
+}
+
+int run_dem(const DemArgs& args) {
+  dem::ExportSpec spec = export_spec(args);
   dem::validate_table_points(args.table_points);
   // --model fe|auto: each pair's e(v) from the FE solver (dem_fe_targets.hpp), as predict's.
   std::optional<study::ResultCache> cache;
