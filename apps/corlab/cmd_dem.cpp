@@ -120,6 +120,11 @@ int run_dem(const DemArgs& args) {
   // --model fe|auto: each pair's e(v) from the FE solver (dem_fe_targets.hpp), as predict's.
   std::optional<study::ResultCache> cache;
   const InterruptScope interrupt;
+  if (!dem::is_external_model(spec.model) && (args.jobs != 0 || args.no_cache)) {
+    throw_invalid(args.jobs != 0 ? "--jobs" : "--no-cache",
+                  args.jobs != 0 ? std::to_string(args.jobs) : "true",
+                  "unset unless --model fe or auto (the FE runs)");
+  }
   if (dem::is_external_model(spec.model)) {
     if (!args.no_cache) {
       cache.emplace(study::default_cache_directory(), study::cache_build_id(),
@@ -221,7 +226,7 @@ const CommandRegistration kRegistration{Command{
           ->check(CLI::Range(0, 4096));
       sub.add_flag("--no-cache", a->no_cache,
                    "fe|auto: compute every speed and store nothing (cache: `corlab cache`)");
-      sub.add_flag("--quiet", a->quiet, "fe|auto: no progress line on stderr");
+      sub.add_flag("--quiet", a->quiet, "no progress line of the FE runs (fe|auto) on stderr");
       return [a] { return run_dem(*a); };
     },
     60}};

@@ -59,7 +59,7 @@ def test_auto_answers_past_corlab2026p_s_range_with_the_fe(corlab_bin, tmp_path,
 
 def test_fe_without_the_solver_and_a_model_past_its_range(corlab_bin, tmp_path):
     """A registered model past its accurate range warns as predict does; an elastic pair with a
-    registered model names the FE as the way out."""
+    registered model names the FE as the way out; an FE option without the FE is refused."""
     pair, done = dem(corlab_bin, tmp_path / "cache", tmp_path / "m", "--wall",
                      "aluminium_ma2023", "--model", "corlab2026p", "--v-min", "1",
                      "--v-max", "20")
@@ -70,3 +70,8 @@ def test_fe_without_the_solver_and_a_model_past_its_range(corlab_bin, tmp_path):
                           model="corlab2026p", v_min=1.0, v_max=20.0)
     with pytest.raises(ValueError, match="--model fe or auto"):
         corlab.dem.export([(ALUMINA, 0.001)], wall=GLASS, wall_only=True, model="corlab2026p")
+    bad = subprocess.run([corlab_bin, "dem", "--type", f"{ALUMINA}:0.001", "--restitution", "0.5",
+                          "--jobs", "2", "--out", str(tmp_path / "bad")],
+                         capture_output=True, text=True, timeout=60)
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1
+    assert "invalid --jobs = '2': must be unset unless --model fe or auto" in bad.stderr
