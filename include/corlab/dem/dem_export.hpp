@@ -125,14 +125,11 @@ struct PairCalibration {
   /// rho* = 3 m*/(4 pi R*^3) [kg/m^3]: the density of the sphere whose impact on a flat is this
   /// pair's (wall: the particle's; two identical spheres: 4 rho); a model's e(v) is taken at it.
   double effective_density = 0.0;
-  double hertz_stiffness = 0.0;  ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
-  double shear_modulus = 0.0;    ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
-  double friction = 0.0;         ///< Coulomb mu [-] (ExportSpec::friction)
-  std::string label;             ///< "glass-glass", "glass-copper" (type labels; wall last)
-  std::string target;            ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
-  /// One-line warnings on the target: a model asked outside its validity (as `corlab predict`
-  /// warns), an FE speed without an e.
-  std::vector<std::string> warnings;
+  double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
+  double shear_modulus = 0.0;      ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
+  double friction = 0.0;           ///< Coulomb mu [-] (ExportSpec::friction)
+  std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
+  std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
   RestitutionCurve curve;          ///< target e(v) [m/s] -> [-]
   std::optional<double> constant;  ///< the constant target e (--restitution or a pair's own)
   double contact_time_fast = 0.0;  ///< Hertz contact time at v_max [s] (the shortest)
@@ -150,6 +147,9 @@ struct PairCalibration {
   /// among its pairs): its e at the fit speeds against the target (parameter = worst ratio).
   std::optional<CurveFit> liggghts_written;
   double particle_radius = 0.0;  ///< r_i of type_i [m] (LIGGGHTS yield ratio)
+  /// One-line warnings on the target: a model asked outside its validity (as `corlab predict`
+  /// warns), an FE speed without an e.
+  std::vector<std::string> warnings;
   /// "i-j" or "i-wall" (type ids) followed by the label: "1-wall (glass-copper)".
   std::string name() const;
   /// LAMMPS damping viscoelastic coefficient eta_n = c/(m* sqrt(R*)) [1/(m s)].
@@ -163,7 +163,10 @@ struct PairCalibration {
 /// with a particle; a target e outside [kMinRestitution, 1] at a speed of the range names the
 /// pair, the model and the speed) and calibrates every pair i <= j and each
 /// type against the wall. A pair's target: its --pair constant or --pair-table, else the export's
-/// (restitution, model or table; with none, every pair needs its own).
+/// (restitution, model or table; with none, every pair needs its own). A model takes the pair as
+/// `corlab predict` does (PairBodies; only the particle yielding: the other body is the sphere),
+/// with predict's warnings in PairCalibration::warnings; model "fe" or "auto" is
+/// ExportSpec::target_source's (InputError naming `model` without one).
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec);
 
 /// LIGGGHTS thornton_ning's coefficientYieldRatio per type (a_y = ratio r_i): its wall fit,
