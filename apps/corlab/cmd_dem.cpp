@@ -4,19 +4,24 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "command.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/core/interrupt.hpp"
 #include "corlab/core/number.hpp"
 #include "corlab/core/output_directory.hpp"
+#include "corlab/dataset/dem_fe_targets.hpp"
 #include "corlab/dem/dem_export.hpp"
 #include "corlab/dem/tangential.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "corlab/study/result_cache.hpp"
 #include "corlab/study/results_table.hpp"
 
 namespace corlab::cli {
@@ -37,6 +42,9 @@ struct DemArgs {
   bool wall_only = false;
   double friction = 0.0;  // Coulomb mu [-] of every pair
   std::string out = "dem_export";
+  int jobs = 0;           // --model fe|auto: speeds run at once (0: one per core)
+  bool no_cache = false;  // --model fe|auto: compute every speed, store nothing
+  bool quiet = false;     // --model fe|auto: no progress line
 };
 
 dem::ParticleType parse_type(const std::string& spec) {
@@ -77,7 +85,8 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
   out << text;
 }
 
-int run_dem(const DemArgs& args) {
+// The spec of the arguments (the tables read), without the FE source of --model fe|auto.
+dem::ExportSpec export_spec(const DemArgs& args) {
   dem::ExportSpec spec;
   for (const auto& t : args.types) spec.types.push_back(parse_type(t));
   if (!args.wall.empty()) {
@@ -102,10 +111,48 @@ int run_dem(const DemArgs& args) {
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
   spec.friction = args.friction;
+  return spec;
+}
+
+int run_dem(const DemArgs& args) {
+  dem::ExportSpec spec = export_spec(args);
   dem::validate_table_points(args.table_points);
-  // A pair no model covers (an elastic particle pair) is refused by calibrate_pairs with the ways
-  // out (--pair, a yield stress, --wall-only).
-  const std::vector<dem::PairCalibration> pairs = dem::calibrate_pairs(spec);
+  // --model fe|auto: each pair's e(v) from the FE solver (dem_fe_targets.hpp), as predict's.
+  std::optional<study::ResultCache> cache;
+  const InterruptScope interrupt;
+  if (!dem::is_external_model(spec.model) && (args.jobs != 0 || args.no_cache)) {
+    throw_invalid(args.jobs != 0 ? "--jobs" : "--no-cache",
+                  args.jobs != 0 ? std::to_string(args.jobs) : "true",
+                  "unset unless --model fe or auto (the FE runs)");
+  }
+  if (dem::is_external_model(spec.model)) {
+    if (!args.no_cache) {
+      cache.emplace(study::default_cache_directory(), study::cache_build_id(),
+                    [](const std::string& warning) {
+                      std::fprintf(stderr, "corlab: warning: %s\n", warning.c_str());
+                    });
+    }
+    spec.target_source =
+        dataset::fe_pair_targets(spec.model, {.jobs = args.jobs,
+                                              .cache = cache ? &*cache : nullptr,
+                                              .progress = args.quiet ? nullptr : stderr,
+                                              .cancel = interrupt.flag()});
+  }
+  // A pair a registered model does not cover (an elastic pair) is refused by calibrate_pairs
+  // with the ways out (--model fe or auto, --pair, a yield stress, --wall-only).
+  std::vector<dem::PairCalibration> pairs;
+  try {
+    pairs = dem::calibrate_pairs(spec);
+  } catch (const InputError&) {
+    if (!interrupt.requested()) throw;
+    fmt::print(stderr, "corlab dem: interrupted ({}); finished FE speeds are cached\n",
+               interrupt.signal_name());
+    return interrupt.exit_code();
+  }
+  for (const auto& p : pairs) {
+    for (const auto& w : p.warnings)
+      std::fprintf(stderr, "corlab: warning: pair %s: %s\n", p.name().c_str(), w.c_str());
+  }
   const std::filesystem::path dir(args.out);
   ensure_output_directory(dir, "--out");
   write_file(dir / "lammps.in", dem::write_lammps(spec, pairs));
@@ -157,8 +204,10 @@ const CommandRegistration kRegistration{Command{
                      "A/B=FILE: e(v) of one pair from an FE results.csv (columns velocity, e), "
                      "e.g. of two spheres of those types (repeat)");
       auto* e = sub.add_option("--restitution", a->restitution, "constant target e in (0, 1)");
-      auto* m =
-          sub.add_option("--model", a->model, "registered CoR model for e(v), e.g. thornton1997");
+      auto* m = sub.add_option("--model", a->model,
+                               "registered CoR model for e(v), e.g. thornton1997; fe (corlab's FE "
+                               "solver per pair, cached) or auto (corlab2026p where accurate, "
+                               "else the FE)");
       auto* t =
           sub.add_option("--table", a->table, "FE results.csv (columns velocity, e) for e(v)");
       e->excludes(m)->excludes(t);
@@ -173,6 +222,11 @@ const CommandRegistration kRegistration{Command{
                      "rows per pair of the output tables, in [2, 10000]");
       sub.add_option("--out", a->out, "output directory");
       sub.add_flag("--wall-only", a->wall_only, "only type-wall contacts (no particle pairs)");
+      sub.add_option("--jobs", a->jobs, "fe|auto: speeds run at once (0: one per core)")
+          ->check(CLI::Range(0, 4096));
+      sub.add_flag("--no-cache", a->no_cache,
+                   "fe|auto: compute every speed and store nothing (cache: `corlab cache`)");
+      sub.add_flag("--quiet", a->quiet, "no progress line of the FE runs (fe|auto) on stderr");
       return [a] { return run_dem(*a); };
     },
     60}};

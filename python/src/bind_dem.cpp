@@ -10,11 +10,13 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "bindings.hpp"
 #include "corlab/core/error.hpp"
+#include "corlab/dataset/dem_fe_targets.hpp"
 #include "corlab/dem/calibration.hpp"
 #include "corlab/dem/contact_ode.hpp"
 #include "corlab/dem/dem_export.hpp"
@@ -23,6 +25,7 @@
 #include "corlab/dem/law_info.hpp"
 #include "corlab/dem/viscoelastic_restitution.hpp"
 #include "corlab/materials/material_database.hpp"
+#include "corlab/study/result_cache.hpp"
 
 namespace py = pybind11;
 
@@ -169,7 +172,9 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     const std::optional<std::pair<std::vector<double>, std::vector<double>>>& table,
                     const std::string& table_source,
                     const py::dict& pairs_dict,
-                    double friction) {
+                    double friction,
+                    int jobs,
+                    bool cache) {
   const auto pairs = number_dict(pairs_dict, "pairs");
   dem::ExportSpec spec;
   spec.friction = friction;  // Coulomb mu [-] of every pair
@@ -209,7 +214,28 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
     spec.table = dem::tabulated_curve(v, e);
     spec.table_source = table_source.empty() ? "table given in Python" : table_source;
   }
-  const auto calibrated = dem::calibrate_pairs(spec);
+  // model "fe" or "auto": each pair's e(v) from the FE solver (dem_fe_targets.hpp), cached.
+  std::vector<std::string> warnings;
+  std::optional<study::ResultCache> store;
+  if (dem::is_external_model(spec.model)) {
+    if (cache) {
+      store.emplace(study::default_cache_directory(), study::cache_build_id(),
+                    [&warnings](const std::string& w) { warnings.push_back(w); });
+    }
+    spec.target_source =
+        dataset::fe_pair_targets(spec.model, {.jobs = jobs, .cache = store ? &*store : nullptr});
+  }
+  std::vector<dem::PairCalibration> calibrated;
+  {
+    py::gil_scoped_release release;
+    calibrated = dem::calibrate_pairs(spec);
+  }
+  for (const auto& p : calibrated) {
+    for (const auto& w : p.warnings) warnings.push_back("pair " + p.name() + ": " + w);
+  }
+  for (const auto& w : warnings) {
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
+  }
   py::dict out;
   out["lammps"] = dem::write_lammps(spec, calibrated);
   out["lammps_nopython"] = dem::write_lammps(spec, calibrated, false);
@@ -275,12 +301,16 @@ void bind_dem(py::module_& m) {
         py::arg("restitution") = std::nullopt, py::arg("model") = "", py::arg("v_min") = 0.1,
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
         py::arg("table") = std::nullopt, py::arg("table_source") = "",
-        py::arg("pairs") = py::dict(), py::arg("friction") = 0.0,
+        py::arg("pairs") = py::dict(), py::arg("friction") = 0.0, py::arg("jobs") = 0,
+        py::arg("cache") = true,
         "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables. "
         "table = (velocities [m/s], e [-]): an FE e(v) table instead of `restitution` or "
         "`model` (e.g. t = corlab.read_results('results.csv'); table=(t['velocity'], t['e'])); "
         "table_source names it in the exported files. A type or wall material may carry a "
-        "label ('glass=E=63e9,nu=0.22,rho=2500'); pairs = {'glass/glass': 1.0} sets one pair's "
+        "label ('glass=E=63e9,nu=0.22,rho=2500'); model 'fe' or 'auto': each pair's e(v) from "
+        "corlab's FE solver at the fit speeds (as predict_curve; jobs: speeds at once, cache: "
+        "the result cache), elastic pairs included; a pair's accuracy warnings are "
+        "UserWarnings; pairs = {'glass/glass': 1.0} sets one pair's "
         "constant e (labels or type ids, 'wall'); friction = Coulomb mu of every pair (0: "
         "frictionless; above 0 the fragments add Mindlin's tangential stiffness 8 G* a)");
 }

@@ -366,6 +366,7 @@ void bind_predict_curve(py::module_& m) {
       "answered_by, detail (lists: the run's status, 'model' for corlab2026p, and why a speed "
       "has no e or no error bar). Bad input raises ValueError.");
   m.attr("CORLAB2026P_ACCURATE_INTERVAL_95") = dataset::kCorlab2026pAccurateInterval95;
+  m.attr("CORLAB2026P_ACCURATE_VELOCITY_RATIO") = dataset::kCorlab2026pAccurateVelocityRatio;
 }
 
 }  // namespace

@@ -37,6 +37,11 @@ ModelRangeCheck corlab2026p_accurate(const fem::ImpactConfig& config) {
     return {false, fmt::format("v/v_y = {:.4g} below {:g} (near or below first yield)",
                                in.velocity_ratio, box.velocity_ratio_min)};
   }
+  if (in.velocity_ratio > kCorlab2026pAccurateVelocityRatio) {
+    return {false, fmt::format("v/v_y = {:.4g} above {:g} (past the near-yield regime, where "
+                               "corlab2026p's dataset residuals exceed 2 %)",
+                               in.velocity_ratio, kCorlab2026pAccurateVelocityRatio)};
+  }
   if (v > box.velocity_max) {
     return {false, fmt::format("v = {:g} m/s above {:g} m/s", v, box.velocity_max)};
   }

@@ -18,6 +18,7 @@
 #include "corlab/materials/material_database.hpp"
 #include "corlab/restitution/first_yield.hpp"
 #include "corlab/restitution/registry.hpp"
+#include "corlab/restitution/validity.hpp"
 #include "dem/detail/export_spec.hpp"
 #include "dem/detail/export_text.hpp"
 #include "dem/detail/script_text.hpp"
@@ -29,70 +30,82 @@ double sphere_mass(const ParticleType& t) {
   return 4.0 / 3.0 * units::kPi * t.radius * t.radius * t.radius * t.material.density;
 }
 
-// e(v) of the pair (material `a` of type_i against `b`). A registered model is written for a
-// sphere of density rho on a yielding flat; the Hertz impact of any pair (R*, m*, E*) is exactly
-// that of a sphere of density rho* = 3 m*/(4 pi R*^3) on a flat of the same E*, and every model
-// depends on the sphere only through E* and its density (k1 = E*/(rho v^2), Thornton's v_y), not
-// its radius. So the body with a yield stress (the softer if both) is the model's flat, the other
-// its sphere, and the sphere gets the pair's rho* (c.effective_density; make_model's radius_ratio
-// for two particles): 4 rho for two identical spheres, the particle's own density against the
-// wall. corlab2026p reads the pair whole (which body is curved: R1/R2; a particle on the wall, or
-// the wall on a yielding particle, as a flat).
-RestitutionCurve model_curve(const ExportSpec& spec,
-                             const PairCalibration& c,
-                             const Material& a,
-                             const Material& b,
-                             std::string& description) {
-  const bool b_yields = b.yield_stress.has_value();
-  const bool a_yields = a.yield_stress.has_value();
-  if (!a_yields && !b_yields) {
-    const std::string first = type_label(spec, c.type_i);
-    const std::string second = c.type_j == 0 ? "wall" : type_label(spec, c.type_j);
+// The pair as `corlab predict` takes it: the particle of type_i is the sphere, the other body
+// (type_j's particle, R1/R2 = r_i/r_j, or the wall, a flat) the substrate.
+PairBodies pair_bodies(const ExportSpec& spec,
+                       const PairCalibration& c,
+                       const Material& a,
+                       const Material& b) {
+  PairBodies bodies{
+      .sphere = a,
+      .substrate = b,
+      .sphere_label = type_label(spec, c.type_i),
+      .substrate_label = c.type_j == 0 ? wall_label(spec) : type_label(spec, c.type_j)};
+  if (c.type_j != 0) {
+    bodies.radius_ratio = spec.types[static_cast<std::size_t>(c.type_i - 1)].radius /
+                          spec.types[static_cast<std::size_t>(c.type_j - 1)].radius;
+  }
+  return bodies;
+}
+
+// e(v) of the pair from a registered model, oriented as `corlab predict` takes the pair: the
+// particle is the sphere on the other body when that body yields (a model reads the
+// substrate's yield stress; before, the softer body was the flat, and a brass particle on a
+// stainless wall was the wall on the particle, 0.003-0.004 from `predict`); when only the
+// particle yields, the other body is the sphere on it. A model is written for a sphere of
+// density rho on a flat; the Hertz impact of any pair (R*, m*, E*) is exactly that of a sphere
+// of density rho* = 3 m*/(4 pi R*^3) on a flat of the same E*, and every model depends on the
+// sphere only through E* and its density (k1 = E*/(rho v^2), Thornton's v_y), not its radius.
+// So the sphere gets the pair's rho* (c.effective_density; make_model's radius_ratio for two
+// particles): 4 rho for two identical spheres, the particle's own density against the wall.
+// corlab2026p reads the pair whole (R1/R2; the wall as a flat). The warnings are predict's.
+RestitutionCurve model_curve(const ExportSpec& spec, PairCalibration& c, const PairBodies& p) {
+  if (!p.sphere.yield_stress && !p.substrate.yield_stress) {
     throw_invalid(
-        "pair " + c.name(), first + "/" + second,
-        fmt::format("a pair with a yield stress for model {} (neither material has one: elastic, "
-                    "e = 1); set its e with --pair {}/{}=E (1: elastic), give a material sy=..., "
-                    "or leave particle pairs out with --wall-only",
-                    spec.model, first, second));
+        "pair " + c.name(), p.sphere_label + "/" + (c.type_j == 0 ? "wall" : p.substrate_label),
+        fmt::format("a pair with a yield stress for model {} (neither material has one: its e "
+                    "is the elastic-wave loss); use --model fe or auto (corlab's FE solver), set "
+                    "its e with --pair {}/{}=E, give a material sy=..., or leave particle pairs "
+                    "out with --wall-only",
+                    spec.model, p.sphere_label, c.type_j == 0 ? "wall" : p.substrate_label));
   }
-  const bool b_is_flat = b_yields && (!a_yields || *b.yield_stress <= *a.yield_stress);
-  Material sphere = b_is_flat ? a : b;
-  const Material& flat = b_is_flat ? b : a;
-  const std::string sphere_label = b_is_flat       ? type_label(spec, c.type_i)
-                                   : c.type_j == 0 ? wall_label(spec)
-                                                   : type_label(spec, c.type_j);
-  const std::string flat_label = !b_is_flat      ? type_label(spec, c.type_i)
-                                 : c.type_j == 0 ? wall_label(spec)
-                                                 : type_label(spec, c.type_j);
-  description = detail::script_text(spec.model) + " (" + sphere_label + " on " + flat_label;
+  const bool flipped = !p.substrate.yield_stress;  // only the particle yields
+  Material sphere = flipped ? p.substrate : p.sphere;
+  const Material& flat = flipped ? p.sphere : p.substrate;
+  c.target = detail::script_text(spec.model) + " (" +
+             (flipped ? p.substrate_label + " on " + p.sphere_label
+                      : p.sphere_label + " on " + p.substrate_label);
   if (sphere.density != c.effective_density) {
-    description += fmt::format(", sphere density rho* = {:.6g} kg/m^3", c.effective_density);
+    c.target += fmt::format(", sphere density rho* = {:.6g} kg/m^3", c.effective_density);
   }
-  description += ")";
+  c.target += ")";
   restitution::ModelOptions options;
   if (c.type_j == 0) {
     sphere.density = c.effective_density;  // the particle's, also for a wall on a particle
   } else {  // make_model puts rho* on the sphere; corlab2026p reads R1/R2 whole
-    const double ri = spec.types[static_cast<std::size_t>(c.type_i - 1)].radius;
-    const double rj = spec.types[static_cast<std::size_t>(c.type_j - 1)].radius;
-    options.radius_ratio = b_is_flat ? ri / rj : rj / ri;
+    options.radius_ratio = flipped ? 1.0 / p.radius_ratio : p.radius_ratio;
   }
   auto model = restitution::make_model(spec.model, sphere, flat, options);
+  const auto speeds = log_speeds(spec.v_min, spec.v_max, spec.fit_points);
+  c.warnings = restitution::validity_warnings(
+      model.info(), speeds, pair_reduced_sphere(sphere, flat, options.radius_ratio), flat);
+  if (auto w = restitution::radius_ratio_warning(model.info(), options.radius_ratio); !w.empty())
+    c.warnings.push_back(std::move(w));
   return [model](double v) { return model.cor(v); };
 }
 
-// The pair's e(v) target: its own table, else the export's table or model.
+// The pair's e(v) target: its own table, else the export's table, model or external source
+// (fe, auto); sets c.target (and c.warnings).
 RestitutionCurve pair_curve(const ExportSpec& spec,
-                            const PairCalibration& c,
+                            PairCalibration& c,
                             const Material& a,
-                            const Material& b,
-                            std::string& description) {
+                            const Material& b) {
   if (const PairTable* t = detail::pair_table(spec, c.type_i, c.type_j)) {
-    description = "table " + detail::script_text(t->source) + " (--pair-table)";
+    c.target = "table " + detail::script_text(t->source) + " (--pair-table)";
     return t->curve;
   }
   if (spec.table) {
-    description = "table " + detail::script_text(spec.table_source);
+    c.target = "table " + detail::script_text(spec.table_source);
     return *spec.table;
   }
   if (spec.model.empty()) {
@@ -101,7 +114,18 @@ RestitutionCurve pair_curve(const ExportSpec& spec,
                   "set: --restitution, --model or --table for every pair, or --pair or "
                   "--pair-table for this one");
   }
-  return model_curve(spec, c, a, b, description);
+  const PairBodies bodies = pair_bodies(spec, c, a, b);
+  if (!is_external_model(spec.model)) return model_curve(spec, c, bodies);
+  if (!spec.target_source) {
+    throw_invalid("model", spec.model,
+                  "a registered model (corlab models) here: fe and auto need corlab's FE solver "
+                  "(corlab dem, corlab.dem.export)");
+  }
+  ExternalTarget target =
+      spec.target_source(bodies, log_speeds(spec.v_min, spec.v_max, spec.fit_points));
+  c.target = std::move(target.description);
+  c.warnings = std::move(target.warnings);
+  return std::move(target.curve);
 }
 
 // The constant e closest to the target in the worst case: the mid-range of e over the speeds.
@@ -182,7 +206,7 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
     c.best_constant = best_constant_fit(speeds, c.curve);
     return c;
   }
-  c.curve = pair_curve(spec, c, ti.material, *other, c.target);
+  c.curve = pair_curve(spec, c, ti.material, *other);
   require_physical_target(spec, c);
   c.viscoelastic = fit_viscoelastic_damping(c.hertz_stiffness, c.effective_mass, speeds, c.curve);
   c.liggghts = fit_liggghts_thornton_pressure(c.effective_modulus, c.effective_radius,
@@ -203,6 +227,8 @@ double liggghts_e_at_ratio(const PairCalibration& c, double ratio, double v) {
 }
 
 }  // namespace
+
+bool is_external_model(std::string_view model) { return model == "fe" || model == "auto"; }
 
 std::vector<double> liggghts_type_ratios(const ExportSpec& spec,
                                          const std::vector<PairCalibration>& pairs) {

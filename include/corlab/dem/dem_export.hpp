@@ -5,7 +5,9 @@
 /// restitution, and the input fragments for LAMMPS, LIGGGHTS and YADE plus e(v)/chi tables.
 /// Calibration (physics) and text (I/O) are separate: calibrate_pairs() then write_*().
 
+#include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +57,29 @@ struct PairTable {
 /// InputError naming `pair-table`.
 PairTable parse_pair_table(std::string_view text);
 
+/// The two bodies of one pair as `corlab predict` takes them: the particle of type_i is the
+/// sphere, the other body (type_j's particle, or the wall) the substrate.
+struct PairBodies {
+  Material sphere;
+  Material substrate;
+  double radius_ratio = 0.0;  ///< r_i / r_j; 0: the wall, a flat [-]
+  std::string sphere_label;
+  std::string substrate_label;
+};
+/// A pair's e(v) computed outside this library (corlab's FE solver:
+/// dataset/dem_fe_targets.hpp): the target, its description in the exports, and one-line
+/// warnings for the user (how far it can be trusted).
+struct ExternalTarget {
+  RestitutionCurve curve;  ///< e(v) [m/s] -> [-]
+  std::string description;
+  std::vector<std::string> warnings;
+};
+/// Computes a pair's ExternalTarget at the fit speeds [m/s] (the curve answers at any speed).
+using PairTargetSource =
+    std::function<ExternalTarget(const PairBodies& bodies, std::span<const double> speeds)>;
+/// The model names that PairTargetSource answers ("fe", "auto"; not registered models).
+bool is_external_model(std::string_view model);
+
 /// What the user asks for.
 struct ExportSpec {
   std::vector<ParticleType> types;    ///< at least one
@@ -74,6 +99,9 @@ struct ExportSpec {
   /// Coulomb friction coefficient mu [-] of every pair (0: frictionless, the normal part only);
   /// above 0 each fragment adds Mindlin's tangential stiffness (tangential.hpp).
   double friction = 0.0;
+  /// e(v) of every pair without its own target when `model` is "fe" or "auto"
+  /// (is_external_model); set by the CLI and Python (the FE solver is not part of this library).
+  PairTargetSource target_source;
 };
 
 /// Most rows per pair of the e(v) tables (write_table_csv, write_json): each row of a fitted pair
@@ -119,6 +147,9 @@ struct PairCalibration {
   /// among its pairs): its e at the fit speeds against the target (parameter = worst ratio).
   std::optional<CurveFit> liggghts_written;
   double particle_radius = 0.0;  ///< r_i of type_i [m] (LIGGGHTS yield ratio)
+  /// One-line warnings on the target: a model asked outside its validity (as `corlab predict`
+  /// warns), an FE speed without an e.
+  std::vector<std::string> warnings;
   /// "i-j" or "i-wall" (type ids) followed by the label: "1-wall (glass-copper)".
   std::string name() const;
   /// LAMMPS damping viscoelastic coefficient eta_n = c/(m* sqrt(R*)) [1/(m s)].
@@ -132,7 +163,10 @@ struct PairCalibration {
 /// with a particle; a target e outside [kMinRestitution, 1] at a speed of the range names the
 /// pair, the model and the speed) and calibrates every pair i <= j and each
 /// type against the wall. A pair's target: its --pair constant or --pair-table, else the export's
-/// (restitution, model or table; with none, every pair needs its own).
+/// (restitution, model or table; with none, every pair needs its own). A model takes the pair as
+/// `corlab predict` does (PairBodies; only the particle yielding: the other body is the sphere),
+/// with predict's warnings in PairCalibration::warnings; model "fe" or "auto" is
+/// ExportSpec::target_source's (InputError naming `model` without one).
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec);
 
 /// LIGGGHTS thornton_ning's coefficientYieldRatio per type (a_y = ratio r_i): its wall fit,

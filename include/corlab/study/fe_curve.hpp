@@ -41,8 +41,11 @@ fem::SubstrateShape resolve_fe_shape(std::string_view shape,
                                      std::string_view shape_field = "shape",
                                      std::string_view ratio_field = "radius_ratio");
 
-/// The run of one speed v [m/s]: ImpactConfig{} with the pair's materials and shape. Throws
-/// InputError for an invalid shape and radius ratio (validate() is the caller's).
+/// The run of one speed v [m/s]: ImpactConfig{} with the pair's materials and shape. A flat that
+/// does not yield is a half-space: large enough that no elastic wave returns from its boundary
+/// before the bodies part (its e is the elastic-wave loss; fe_curve.cpp, as_half_space), with
+/// coarser far elements. Throws InputError for an invalid shape and radius ratio (validate() is
+/// the caller's).
 fem::ImpactConfig fe_curve_config(const FePair& pair, double velocity);
 
 /// What a run is keyed by in the cache: its config (config_to_json, every key), the error

@@ -48,6 +48,29 @@ TEST(FeCurve, TheConfigIsTheDefaultWithThePairAndTheSpeed) {
   EXPECT_NO_THROW(fem::validate(fe_curve_config(pair, 3.0)));
 }
 
+TEST(FeCurve, AnElasticFlatIsAHalfSpaceForTheContactTime) {
+  // alumina on glass at 1 m/s: Hertz t_c = 236 us (the run's 236.2 us), glass's dilatational
+  // wave 5.65 km/s: 1.5 x 5.65e3 x 236e-6 / 2 = 1.0 m of glass, far elements 1/35 of it.
+  FePair pair{.sphere = parse_material_spec("alumina_ma2023", "sphere"),
+              .substrate = parse_material_spec("E=70e9,nu=0.22,rho=2500", "substrate")};
+  const fem::ImpactConfig c = fe_curve_config(pair, 1.0);
+  const double c_l = pair.substrate.dilatational_wave_speed();
+  EXPECT_NEAR(c_l, 5654.0, 1.0);
+  EXPECT_NEAR(c.substrate.radius, 1.5 * c_l * 236e-6 / 2.0, 0.01);
+  EXPECT_EQ(c.substrate.depth, c.substrate.radius);
+  EXPECT_DOUBLE_EQ(c.mesh.h_max, c.substrate.radius / 35.0);
+  EXPECT_NO_THROW(fem::validate(c));
+  EXPECT_GT(fe_curve_config(pair, 0.1).substrate.radius, c.substrate.radius);  // longer contact
+  // A yielding flat keeps the dataset's block; two spheres keep theirs.
+  const fem::ImpactConfig defaults;
+  EXPECT_EQ(fe_curve_config(alumina_on_aluminium(), 1.0).substrate.radius,
+            defaults.substrate.radius);
+  pair.shape = SubstrateShape::kSphere;
+  pair.radius_ratio = 1.0;
+  EXPECT_EQ(fe_curve_config(pair, 1.0).substrate.radius, defaults.sphere.radius);
+  EXPECT_EQ(fe_curve_config(pair, 1.0).mesh.h_max, defaults.mesh.h_max);
+}
+
 TEST(FeCurve, TheKeyHoldsTheWholeConfig) {
   const FePair pair = alumina_on_aluminium();
   const auto key = fe_run_key(fe_curve_config(pair, 3.0));
