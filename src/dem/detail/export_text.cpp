@@ -4,8 +4,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
+#include "corlab/dem/contact_laws.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "corlab/version.hpp"
 #include "dem/detail/script_text.hpp"
 
@@ -24,6 +27,25 @@ std::string export_header(const ExportSpec& spec, std::string_view code) {
                        script_text(spec.wall->name));
   }
   return out;
+}
+
+bool has_friction(const ExportSpec& spec) {
+  return spec.friction > 0.0 || std::any_of(spec.pair_friction.begin(), spec.pair_friction.end(),
+                                            [](const auto& p) { return p.value > 0.0; });
+}
+
+std::string friction_words(const ExportSpec& spec) {
+  std::string out = fmt::format("{:.6g}", spec.friction);
+  for (const auto& p : spec.pair_friction) {
+    out += fmt::format("; {}/{} {:.6g}", script_text(p.first), script_text(p.second), p.value);
+  }
+  return out;
+}
+
+double rolling_stiffness(double e_star, double r_star, double m_star, double g_star, double v_max) {
+  const double k = hertz_stiffness(e_star, r_star);
+  const double delta = std::pow(1.25 * m_star * v_max * v_max / k, 0.4);
+  return mindlin_coefficient(g_star) * std::sqrt(r_star * delta);
 }
 
 std::string fit_comment(const CurveFit& fit) {

@@ -95,12 +95,10 @@ YADE_CASE = """
 O.reset()
 exec(open(%(fragment)r).read())
 R = %(radius).17g
-O.bodies.append(box((0, 0, -R), (8 * R, 8 * R, R), fixed=True, material=corlab_wall_mat))
 a = O.bodies.append(sphere((0, 0, R + %(gap).17g), R, material=corlab_mat1))
 O.bodies[a].state.vel = Vector3(%(vt).17g, 0, %(vn).17g)
-O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()]),
-             InteractionLoop([Ig2_Box_Sphere_ScGeom()], [corlab_ip2],
-                             [Law2_ScGeom_MindlinPhys_Mindlin()]),
+O.engines = [ForceResetter(), InsertionSortCollider(corlab_bound),
+             InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2]),
              NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]
 O.dt = %(dt).17g
 O.run(%(touch)d, True)
@@ -113,7 +111,8 @@ print('CORLAB_ROW %(theta).6f', s.vel[0], s.vel[2], s.angVel[1], k[0], k[1])
 
 
 def run_yade(yade, out, cases):
-    """YADE: also reads the contact's kno [N/m^1.5] and kso [N/m^1.5] a few steps after touch."""
+    """YADE: also reads the contact's kno [N/m^1.5] and kso [N/m^1.5] a few steps after touch
+    (body 0: the fragment's floor, a utils.wall)."""
     text = ""
     for case in cases:
         touch = int(case.gap / case.vn / case.dt) + 5
