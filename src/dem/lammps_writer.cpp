@@ -36,6 +36,13 @@ CodeLaw law_of(Route r) {
   }
 }
 
+// The law whose measured step the pair needs: an elastic pair (e = 1) of the hook's fragment runs
+// elastic Hertz, the hook's law without its damping (no jump at first touch).
+CodeLaw pair_law(const PairCalibration& p, bool python_hook) {
+  if (python_hook && p.constant && *p.constant >= 1.0) return CodeLaw::lammps_hook;
+  return law_of(route_of(p, python_hook));
+}
+
 // "tangential ..." of a pair with G* [Pa], E* [Pa] and mu: frictionless, or Mindlin's k_t = 8 G*
 // [Pa] (F_t = k_t a xi), x_gamma = sqrt(4 G*/E*) [-] (the normal damping ratio) and mu [-].
 std::string tangential(double shear_modulus, double effective_modulus, double friction) {
@@ -122,43 +129,82 @@ std::string route_comment(const ExportSpec& spec, const PairCalibration& p, Rout
 // v_in, the damping, and the post_force callback over wall contacts and particle pairs.
 constexpr std::string_view kHookFunctions =
     R"(corlab_memory = {}
+corlab_lmp = []
+corlab_dv = corlab_v[1] - corlab_v[0]
+corlab_planes = [w for w, wall in enumerate(corlab_walls) if wall[0] == "plane"]
+corlab_plane_n = np.array([corlab_walls[w][2] for w in corlab_planes], float).reshape(-1, 3)
+corlab_plane_d = (np.array([corlab_walls[w][1] for w in corlab_planes], float).reshape(-1, 3)
+                  * corlab_plane_n).sum(axis=1)
+corlab_wall_rows = np.array(corlab_wall_row, np.int64).reshape(len(corlab_walls), len(corlab_row))
+corlab_wall_estars = np.array(corlab_wall_estar, float).reshape(len(corlab_walls), len(corlab_row))
 
-def corlab_v_in(name, keys, rate):
-    # Approach speed at first touch: kept from the last step for contacts that go on.
-    old_keys, old_v = corlab_memory.get(name, (np.zeros(0, np.int64), np.zeros(0)))
-    v_in = rate.copy()
+def corlab_factor(name, keys, rows, rate):
+    # chi(e(v_in)) / v_in of each contact [s/m]: taken at its first step (v_in = the approach
+    # speed then, chi from the pair's table, linear in v, end values outside) and kept.
+    old_keys, old_f = corlab_memory.get(name, (np.zeros(0, np.int64), np.zeros(0)))
+    pos = np.clip((rate - corlab_v[0]) / corlab_dv, 0.0, corlab_v.size - 1.0)
+    k = np.minimum(pos.astype(np.int64), corlab_v.size - 2)
+    w = pos - k
+    chi = corlab_chi[rows, k] * (1.0 - w) + corlab_chi[rows, k + 1] * w
+    factor = np.where(rate > 0, chi / np.maximum(rate, 1e-300), 0.0)
     if old_keys.size and keys.size:
-        k = np.minimum(np.searchsorted(old_keys, keys), old_keys.size - 1)
-        found = old_keys[k] == keys
-        v_in[found] = old_v[k[found]]
+        j = np.minimum(np.searchsorted(old_keys, keys), old_keys.size - 1)
+        found = old_keys[j] == keys
+        factor[found] = old_f[j[found]]
     order = np.argsort(keys)
-    corlab_memory[name] = (keys[order], v_in[order])
-    return v_in
+    corlab_memory[name] = (keys[order], factor[order])
+    return factor
 
-def corlab_damping(rows, v_in, rate, estar, radius, overlap):
-    # Hysteresis damping K delta^1.5 chi rate / v_in, K = 4/3 E* sqrt(R*), chi of e(v_in).
-    chi = np.zeros(rows.size)
-    for r in np.unique(rows):
-        m = rows == r
-        chi[m] = np.interp(v_in[m], corlab_v, corlab_chi[r])
-    k = 4.0 / 3.0 * estar * np.sqrt(radius)
-    return np.where(v_in > 0, k * overlap ** 1.5 * chi * rate / np.maximum(v_in, 1e-300), 0.0)
+def corlab_damping(factor, rate, estar, radius, overlap):
+    # Hysteresis damping K delta^1.5 chi rate / v_in [N], K = 4/3 E* sqrt(R*).
+    return 4.0 / 3.0 * estar * np.sqrt(radius) * overlap ** 1.5 * factor * rate
 
-def corlab_wall_gap(wall, x):
-    # Distance [m] of each centre from the wall and the unit normal into the particles.
-    if wall[0] == "plane":
-        n = np.asarray(wall[2], float)
-        return (x - np.asarray(wall[1], float)) @ n, np.broadcast_to(n, x.shape), True
-    axis, c1, c2, radius, lo, hi = wall[1:]
-    o = [k for k in range(3) if k != axis]
-    d = x[:, o] - np.array([c1, c2])
-    rho = np.sqrt((d * d).sum(axis=1))
-    n = np.zeros(x.shape)
-    n[:, o] = -d / np.maximum(rho, 1e-300)[:, None]
-    return radius - rho, n, (x[:, axis] >= lo) & (x[:, axis] <= hi)
+corlab_plane_rows = corlab_wall_rows[corlab_planes]
+corlab_near = {}
+
+def corlab_candidates(x, r, tag):
+    # Atom pairs and (atom, plane) that may touch before some atom moves skin/2 = r_min/2: kept
+    # from the step they were found (cKDTree) until an atom moves that far or LAMMPS reorders.
+    c = corlab_near
+    if ("tag" not in c or c["tag"].shape != tag.shape or not np.array_equal(c["tag"], tag)
+            or ((x - c["x"]) ** 2).sum(axis=1).max() > 0.25 * c["skin"] ** 2):
+        c["tag"], c["x"], c["skin"] = tag.copy(), x.copy(), r.min()
+        tree = cKDTree(x, balanced_tree=False, compact_nodes=False)
+        c["pairs"] = tree.query_pairs(2.0 * r.max() + c["skin"], output_type="ndarray")
+        gap = x @ corlab_plane_n.T - corlab_plane_d
+        c["plane"] = np.nonzero(gap < (r + c["skin"])[:, None])
+    return c["pairs"], c["plane"]
+
+def corlab_wall_contacts(x, r, t, near):
+    # Every (atom, wall) in contact: atom, wall, overlap [m], unit normal into the particles.
+    i, k = near
+    gap = (x[i] * corlab_plane_n[k]).sum(axis=1) - corlab_plane_d[k]
+    m = (r[i] > gap) & (corlab_plane_rows[k, t[i]] >= 0)
+    i, k = i[m], k[m]
+    atoms, walls = [i], [np.array(corlab_planes, np.int64)[k]]
+    overlaps, normals = [r[i] - gap[m]], [corlab_plane_n[k]]
+    for w, wall in enumerate(corlab_walls):
+        if wall[0] != "cylinder":
+            continue
+        axis, c1, c2, radius, lo, hi = wall[1:]
+        o = [a for a in range(3) if a != axis]
+        d = x[:, o] - np.array([c1, c2])
+        rho = np.sqrt((d * d).sum(axis=1))
+        i = np.nonzero((r > radius - rho) & (corlab_wall_rows[w][t] >= 0) & (x[:, axis] >= lo)
+                       & (x[:, axis] <= hi))[0]
+        n = np.zeros((i.size, 3))
+        n[:, o] = -d[i] / np.maximum(rho[i], 1e-300)[:, None]
+        atoms.append(i)
+        walls.append(np.full(i.size, w, np.int64))
+        overlaps.append(r[i] - (radius - rho[i]))
+        normals.append(n)
+    return (np.concatenate(atoms), np.concatenate(walls), np.concatenate(overlaps),
+            np.concatenate(normals))
 
 def corlab_ev_force(lmpptr, vflag):
-    lmp = lammps(ptr=lmpptr)
+    if not corlab_lmp:
+        corlab_lmp.append(lammps(ptr=lmpptr))
+    lmp = corlab_lmp[0]
     nlocal = lmp.extract_global("nlocal")
     nall = nlocal + lmp.extract_global("nghost")
     x = lmp.numpy.extract_atom("x", nelem=nall)
@@ -167,20 +213,21 @@ def corlab_ev_force(lmpptr, vflag):
     t = lmp.numpy.extract_atom("type", nelem=nall)
     tag = lmp.numpy.extract_atom("id", nelem=nall).astype(np.int64)
     f = lmp.numpy.extract_atom("f", nelem=nlocal)
-    for w, wall in enumerate(corlab_walls):
-        gap, n, within = corlab_wall_gap(wall, x[:nlocal])
-        overlap = r[:nlocal] - gap
-        rows = corlab_wall_row[w][t[:nlocal]]
-        i = np.nonzero((overlap > 0) & (rows >= 0) & within)[0]
-        rate = -(v[i] * n[i]).sum(axis=1)
-        v_in = corlab_v_in(w, tag[i], rate)
-        f[i] += corlab_damping(rows[i], v_in, rate, corlab_wall_estar[w][t[i]], r[i],
-                               overlap[i])[:, None] * n[i]
+    pairs, plane = corlab_candidates(x[:nall], r[:nall], tag[:nall])
+    if corlab_walls:
+        near = plane[0] < nlocal
+        i, w, overlap, n = corlab_wall_contacts(x[:nlocal], r[:nlocal], t[:nlocal],
+                                                (plane[0][near], plane[1][near]))
+        rate = -(v[i] * n).sum(axis=1)
+        factor = corlab_factor("wall", tag[i] * len(corlab_walls) + w,
+                               corlab_wall_rows[w, t[i]], rate)
+        force = corlab_damping(factor, rate, corlab_wall_estars[w, t[i]], r[i], overlap)
+        for a in range(3):
+            f[:, a] += np.bincount(i, force * n[:, a], minlength=nlocal)
     if nall < 2 or corlab_row.max() < 0:
         return
-    pairs = cKDTree(x[:nall]).query_pairs(2.0 * r[:nall].max(), output_type="ndarray")
     if pairs.size == 0:
-        corlab_v_in("pair", np.zeros(0, np.int64), np.zeros(0))
+        corlab_factor("pair", np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0))
         return
     i, j = pairs[:, 0], pairs[:, 1]
     d = x[j] - x[i]
@@ -191,12 +238,13 @@ def corlab_ev_force(lmpptr, vflag):
     n = d / dist[:, None]
     rate = ((v[i] - v[j]) * n).sum(axis=1)
     keys = np.minimum(tag[i], tag[j]) * 2 ** 31 + np.maximum(tag[i], tag[j])
-    v_in = corlab_v_in("pair", keys, rate)
-    force = corlab_damping(corlab_row[t[i], t[j]], v_in, rate, corlab_estar[t[i], t[j]],
-                           r[i] * r[j] / (r[i] + r[j]), overlap)[:, None] * n
+    factor = corlab_factor("pair", keys, corlab_row[t[i], t[j]], rate)
+    force = corlab_damping(factor, rate, corlab_estar[t[i], t[j]], r[i] * r[j] / (r[i] + r[j]),
+                           overlap)
     li, lj = i < nlocal, j < nlocal
-    np.add.at(f, i[li], -force[li])
-    np.add.at(f, j[lj], force[lj])
+    for a in range(3):
+        f[:, a] += (np.bincount(j[lj], force[lj] * n[lj, a], minlength=nlocal)
+                    - np.bincount(i[li], force[li] * n[li, a], minlength=nlocal))
 )";
 
 // The pair of type `t` with wall material `m` (nullptr: none, e.g. no wall material).
@@ -345,7 +393,7 @@ Delivery lammps_delivery(const ExportSpec& spec, const PairCalibration& pair, bo
   const Route r = route_of(pair, python_hook);
   switch (r) {
     case Route::tsuji:
-      return {law_of(r), "damping tsuji (pre-compensated)", 0.0, {}};
+      return {pair_law(pair, python_hook), "damping tsuji (pre-compensated)", 0.0, {}};
     case Route::hook:
       return {law_of(r),
               "elastic Hertz + corlab's python/invoke hook",
@@ -363,7 +411,7 @@ Delivery lammps_delivery(const ExportSpec& spec, const PairCalibration& pair, bo
 
 double lammps_time_step(const std::vector<PairCalibration>& pairs, bool python_hook) {
   return detail::recommended_step(
-      pairs, [python_hook](const PairCalibration& p) { return law_of(route_of(p, python_hook)); });
+      pairs, [python_hook](const PairCalibration& p) { return pair_law(p, python_hook); });
 }
 
 std::string write_lammps(const ExportSpec& spec,
@@ -440,9 +488,7 @@ std::string write_lammps(const ExportSpec& spec,
   }
   out += wall_fixes(spec, pairs, python_hook);
   if (hook) out += hook_python(spec, pairs);
-  const auto law = [python_hook](const PairCalibration& p) {
-    return law_of(route_of(p, python_hook));
-  };
+  const auto law = [python_hook](const PairCalibration& p) { return pair_law(p, python_hook); };
   out += detail::time_step_comment(spec, pairs, law);
   out += fmt::format("timestep {:.4g}\n", detail::recommended_step(pairs, law));
   return out;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 
 #include "corlab/dem/dem_export.hpp"
 #include "corlab/dem/tangential.hpp"
@@ -48,6 +49,24 @@ std::string elastic_constants(const ExportSpec& spec) {
   if (spec.wall) add(*spec.wall);
   for (const auto& w : spec.extra_walls) add(w.material);
   return young + "\n" + poisson + "\n";
+}
+
+// LIGGGHTS refuses a youngsModulus outside [5e6, 1e9] Pa in SI units unless told: the switch
+// for the moduli the export holds.
+std::string moduli_switches(const ExportSpec& spec) {
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = 0.0;
+  const auto see = [&](const Material& m) {
+    lo = std::min(lo, m.youngs_modulus);
+    hi = std::max(hi, m.youngs_modulus);
+  };
+  for (const auto& t : spec.types) see(t.material);
+  if (spec.wall) see(*spec.wall);
+  for (const auto& w : spec.extra_walls) see(w.material);
+  std::string out;
+  if (lo < 5e6) out += "soft_particles yes  # a youngsModulus below 5e6 Pa\n";
+  if (hi > 1e9) out += "hard_particles yes  # a youngsModulus above 1e9 Pa\n";
+  return out;
 }
 
 // A per-type-pair property/global matrix of n atom types: value(pair or nullptr, a, b).
@@ -159,8 +178,8 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
   const int types = static_cast<int>(spec.types.size());
   const int n = types + wall_materials(spec);
   out +=
-      "# Needs: atom_style granular, communicate single vel yes, hard_particles yes (moduli\n"
-      "# above 1e9 Pa); include it after create_box N";
+      "# Needs: atom_style granular, communicate single vel yes (it sets soft_particles or\n"
+      "# hard_particles where a modulus is outside [5e6, 1e9] Pa); include it after create_box N";
   out += spec.wall
              ? fmt::format(" with N = {} (the wall materials are types {}..{}).\n", n, types + 1, n)
              : fmt::format(" with N = {}.\n", n);
@@ -178,6 +197,7 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
                        p.liggghts_written ? p.liggghts_written->max_abs_error : 1.0,
                        p.best_constant->max_abs_error);
   }
+  out += moduli_switches(spec);
   out += elastic_constants(spec);
   if (tn) {
     out +=

@@ -86,9 +86,9 @@ std::string time_step_comment(const ExportSpec& spec,
                        p.contact_time_fast, p.contact_time_slow, rule.name, rule.steps_per_contact);
   }
   out += fmt::format(
-      "{0} Recommended step {1:.3e} s (the shortest of those): at it this code's e stays within "
-      "{2:.0e}\n{0} of its law's (measured in drop tests, scripts/dem_time_step.py); a larger step "
-      "delivers another e.\n",
+      "{0} Recommended step {1:.3e} s (the shortest of those): at it, and at twice it, this\n"
+      "{0} code's e stays within {2:.0e} of its law's (measured in drop tests, wherever in a step\n"
+      "{0} a contact starts: scripts/dem_time_step.py); a larger step delivers another e.\n",
       comment, recommended_step(pairs, law_of), kTimeStepError);
   return out;
 }

@@ -3,7 +3,8 @@ export with five walls (a floor, a side wall of its own material at x = +W, thre
 closing the box), two particle types poured at run time with a sideways speed, and the checks
 every code's run must pass.
 
-Two types (PER_TYPE each, radii 4 and 5 mm, soft so that the export's step is large) are put in
+Two types (PER_TYPE each, radii 4 and 5 mm, soft so that the export's step is large: YADE
+needs 800 steps per contact) are put in
 at z in [Z_LO, Z_TOP] with vx = VX (towards the side wall) and fall under gravity for SIM_TIME of
 simulated time at the fragment's own step, the fragment included unedited. Each code writes per
 sample (every `sample_steps` steps: a quarter of the shortest contact time) the atoms' id, type,
@@ -12,9 +13,9 @@ every centre inside the walls (no atom through one: within r_min/2); the largest
 that of a fall from Z_TOP with VX (energy bounded: a blow-up reaches tens of m/s); the final kinetic
 energy below 1% of its peak (the bed settles); and the e of each atom's first side-wall contact that
 no other contact disturbed (no particle contact, floor or other wall from the last sample before it
-to the first after; gravity is along the wall, so vx is the normal speed): -vx after / vx before
-within the export's stated max |de| + its time-step error of the target, for at least MIN_SAMPLES
-atoms.
+to the first after; gravity is along the wall, so vx is the normal speed; approach at least
+V_IN_MIN): -vx after / vx before within the export's stated max |de| + its time-step error of the
+target, for at least MIN_SAMPLES atoms.
 """
 # SPDX-License-Identifier: BSD-3-Clause
 import math
@@ -22,20 +23,25 @@ import os
 
 from dem_check_common import export
 
-TYPES = ("soft_a=E=5e6,nu=0.3,rho=1000:0.004", "soft_b=E=1e7,nu=0.3,rho=2000:0.005")
+TYPES = ("soft_a=E=1e6,nu=0.3,rho=1000:0.004", "soft_b=E=2e6,nu=0.3,rho=2000:0.005")
 W = 0.04  # m: the walls x = +-W, y = +-W
-WALLS = ("soft_wall=E=2e7,nu=0.3,rho=2000",  # the floor z = 0
-         "side=E=3e7,nu=0.3,rho=2000@plane:%g,0,0,-1,0,0" % W,  # the side wall, its own material
-         "soft_wall=E=2e7,nu=0.3,rho=2000@plane:%g,0,0,1,0,0" % -W,
-         "soft_wall=E=2e7,nu=0.3,rho=2000@plane:0,%g,0,0,-1,0" % W,
-         "soft_wall=E=2e7,nu=0.3,rho=2000@plane:0,%g,0,0,1,0" % -W)
+FLOOR = "soft_wall=E=4e6,nu=0.3,rho=2000"
+WALLS = (FLOOR,  # the floor z = 0
+         "side=E=6e6,nu=0.3,rho=2000@plane:%g,0,0,-1,0,0" % W,  # the side wall, its own material
+         FLOOR + "@plane:%g,0,0,1,0,0" % -W,
+         FLOOR + "@plane:0,%g,0,0,-1,0" % W,
+         FLOOR + "@plane:0,%g,0,0,1,0" % -W)
 RESTITUTION = 0.5
-PER_TYPE = 60
-Z_LO, Z_TOP = 0.05, 0.2  # m, the insertion region's height
+PER_TYPE = 50
+Z_LO, Z_TOP = 0.03, 0.12  # m, the insertion region's height
 VX = 1.0  # m/s towards the side wall x = +W
 SIM_TIME = 0.4  # s
 G = 9.81  # m/s^2
 MIN_SAMPLES = 10
+# The slowest approach sampled [m/s]: in LIGGGHTS with friction a particle sliding down the wall
+# that meets it slowly rebounds with less than its normal e (0.393 at 0.02 m/s against 0.5;
+# frictionless 0.4999), so the check keeps to approaches of at least this speed.
+V_IN_MIN = 0.1
 MARGIN = 0.006  # m: the insertion region keeps this far from the walls
 
 
@@ -75,7 +81,7 @@ def first_wall_contacts(samples, radius):
             continue
         clear = all(rows[k][4] == 0 and rows[k][3] - r > 0 and rows[k][1] - r > -W
                     for k in range(pre, post + 1))
-        if clear and rows[pre][2] > 0:
+        if clear and rows[pre][2] >= V_IN_MIN:
             out.append((atom, rows[0][0], rows[pre][2], -rows[post][2] / rows[pre][2]))
     return out
 
