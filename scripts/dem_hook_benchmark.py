@@ -7,8 +7,8 @@ Two exports of the same particles (two soft types, 200 each, with the five walls
 check): `--table` corlab's FE e(v) of alumina on aluminium (every pair: the hook's e(v)) and
 `--restitution 0.6`. Each code puts the 400 particles on a lattice from the floor up, just
 apart (a bed, the end of a pour: LAMMPS create_atoms, YADE spheres added), runs 1000 steps
-and then STEPS steps more, timed alone (LAMMPS's Loop time, YADE's wall clock around O.run).
-Timings on a shared machine: take the ratio of runs made side by side.
+and then STEPS steps more, timed alone in CPU time (LAMMPS's Loop time x its % CPU use, YADE's
+process time around O.run): on a shared machine wall-clock ratios swing by 3x.
 usage: scripts/dem_hook_benchmark.py --corlab build/bin/corlab [--lmp lmp] [--yade yade]
        [--steps 4000] [--codes lammps,yade] [--work DIR]
 """
@@ -66,9 +66,9 @@ if 'corlab_set_en' in globals():
 O.engines = engines + [InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2]),
                        NewtonIntegrator(damping=0.0, gravity=(0, 0, -%(g)g))]
 O.run(%(settle)d, True)
-t0 = time.time()
+t0 = time.process_time()
 O.run(%(steps)d, True)
-print('CORLAB_TIME', time.time() - t0)
+print('CORLAB_TIME', time.process_time() - t0)
 """
 
 
@@ -84,7 +84,8 @@ def per_step(code, binary, out, data, steps):
         seconds, n, atoms = loops[-1]
         if int(atoms) != 2 * PER_TYPE:
             raise RuntimeError("%s atoms poured, not %d" % (atoms, 2 * PER_TYPE))
-        return float(seconds) / int(n)
+        cpu = float(re.findall(r"([0-9.]+)% CPU use", text)[-1]) / 100.0
+        return float(seconds) * cpu / int(n)
     path = os.path.join(out, "bench.py")
     with open(path, "w") as f:
         f.write(YADE % {"fragment": os.path.join(out, "yade_fragment.py"), "places": places(data),
