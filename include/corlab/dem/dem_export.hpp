@@ -174,7 +174,8 @@ void add_wall(ExportSpec& spec, std::string_view text);
 std::vector<double> liggghts_type_ratios(const ExportSpec& spec,
                                          const std::vector<PairCalibration>& pairs);
 /// LIGGGHTS writes one normal model for all pairs: thornton_ning (e(v) through per-type yield
-/// ratios) when its worst misfit over the pairs is below that of per-pair constants (model hertz).
+/// ratios) when its worst misfit over the pairs is below that of per-pair constants (model hertz)
+/// and the walls are of one material.
 bool liggghts_uses_thornton_ning(const std::vector<PairCalibration>& pairs);
 
 /// How one code's fragment delivers one pair's target: the law it runs, in words, and its

@@ -168,6 +168,9 @@ TEST(DemWalls, TheHookDampsEveryWall) {
       std::string::npos);
   EXPECT_NE(lammps.find("corlab_wall_row = [np.array([-1, 0]), np.array([-1, 1])]"),
             std::string::npos);
+  // LIGGGHTS's yield ratio is per atom type: with two wall materials it writes model hertz
+  EXPECT_FALSE(liggghts_uses_thornton_ning(pairs));
+  EXPECT_NE(write_liggghts(spec, pairs).find("pair_style gran model hertz"), std::string::npos);
 }
 
 TEST(DemWalls, WallsAndPairsAreRefusedInOneLine) {
