@@ -332,8 +332,11 @@ std::optional<double> pair_friction(const ExportSpec& spec, int i, int j) {
 }
 
 int named_wall(const ExportSpec& spec, const std::string& first, const std::string& second) {
+  std::string text = first;
+  text += "/";
+  text += second;
   for (const std::string* name : {&first, &second}) {
-    const int id = resolve_type(spec, *name, "pair", first + "/" + second);
+    const int id = resolve_type(spec, *name, "pair", text);
     if (id <= 0) return -id;
   }
   return -1;

@@ -172,9 +172,11 @@ double liggghts_time_step(const std::vector<PairCalibration>& pairs) {
   return detail::recommended_step(pairs, [law](const PairCalibration&) { return law; });
 }
 
-std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
+namespace {
+
+// The header: what the fragment needs, the model, the tangential part, each pair's delivery.
+std::string header(const ExportSpec& spec, const std::vector<PairCalibration>& pairs, bool tn) {
   std::string out = detail::export_header(spec, "LIGGGHTS 3.8 (pair_style gran)");
-  const bool tn = liggghts_uses_thornton_ning(pairs);
   const int types = static_cast<int>(spec.types.size());
   const int n = types + wall_materials(spec);
   out +=
@@ -197,6 +199,34 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
                        p.liggghts_written ? p.liggghts_written->max_abs_error : 1.0,
                        p.best_constant->max_abs_error);
   }
+  return out;
+}
+
+// The yield ratios (coefficientYieldRatio per atom type) and surface energies of thornton_ning.
+std::string thornton_ning_properties(const ExportSpec& spec,
+                                     const std::vector<PairCalibration>& pairs) {
+  std::string out;
+  const int n = static_cast<int>(spec.types.size()) + wall_materials(spec);
+  std::string ratio = "fix m5 all property/global coefficientYieldRatio peratomtype";
+  for (const double r : liggghts_type_ratios(spec, pairs)) ratio += fmt::format(" {:.10g}", r);
+  if (spec.wall) {
+    out +=
+        "# The wall types' own yield ratios are never read (a_y = ratio r_i of the particle),\n"
+        "# 1.0 fills their places.\n";
+    for (int k = 0; k < wall_materials(spec); ++k) ratio += " 1.0";
+  }
+  out += ratio + "\n";
+  out +=
+      fmt::format("fix m6 all property/global surfaceEnergy peratomtypepair {} {}\n", n,
+                  fmt::join(std::vector<std::string>(static_cast<std::size_t>(n * n), "0.0"), " "));
+  return out;
+}
+
+}  // namespace
+
+std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
+  const bool tn = liggghts_uses_thornton_ning(pairs);
+  std::string out = header(spec, pairs, tn);
   out += moduli_switches(spec);
   out += elastic_constants(spec);
   if (tn) {
@@ -217,25 +247,9 @@ std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibra
                : 0.0;
   };
   out += type_pair_matrix(spec, pairs, "fix m4 all property/global coefficientFriction", mu);
-  std::string model = "hertz";
-  if (tn) {
-    model = "thornton_ning";
-    std::string ratio = "fix m5 all property/global coefficientYieldRatio peratomtype";
-    for (const double r : liggghts_type_ratios(spec, pairs)) ratio += fmt::format(" {:.10g}", r);
-    if (spec.wall) {
-      out +=
-          "# The wall types' own yield ratios are never read (a_y = ratio r_i of the particle),\n"
-          "# 1.0 fills their places.\n";
-      for (int k = 0; k < wall_materials(spec); ++k) ratio += " 1.0";
-    }
-    out += ratio + "\n";
-    out += fmt::format(
-        "fix m6 all property/global surfaceEnergy peratomtypepair {} {}\n", n,
-        fmt::join(std::vector<std::string>(static_cast<std::size_t>(n * n), "0.0"), " "));
-  }
-  const bool friction = detail::has_friction(spec);
-  std::string words =
-      fmt::format("model {} tangential {}", model, friction ? "history" : "no_history");
+  if (tn) out += thornton_ning_properties(spec, pairs);
+  std::string words = fmt::format("model {} tangential {}", tn ? "thornton_ning" : "hertz",
+                                  detail::has_friction(spec) ? "history" : "no_history");
   if (spec.rolling > 0.0) {
     out +=
         "# Rolling resistance (--rolling): rolling_friction cdt, a constant torque mu_r R* F_n\n"

@@ -207,24 +207,11 @@ double yade_time_step(const std::vector<PairCalibration>& pairs) {
                                   [](const PairCalibration&) { return CodeLaw::yade_mindlin; });
 }
 
-std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
-  std::string out =
-      detail::export_header(spec, "YADE (2023.02a), Python: exec() it in a YADE script");
-  out +=
-      "# Hertz-Mindlin: Ip2_FrictMat_FrictMat_MindlinPhys maps en to its damping exactly for\n"
-      "# Hertz up to en = 0.9 (measured: 0.3 -> 0.3001, 0.9 -> 0.89993) but falls short above\n"
-      "# (0.96 -> 0.9568, 0.99 -> 0.9790, 0.999 -> 0.9841; en = 1: elastic): the stated max |de|\n"
-      "# includes that. Use corlab_ip2 in the InteractionLoop\n"
-      "# with Law2_ScGeom_MindlinPhys_Mindlin(); en is per material pair (MatchMaker).\n";
-  out += tangential_comment(spec);
-  const bool hook =
-      std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
-  out += "# Type pairs and the target:\n";
-  for (const auto& p : pairs) {
-    out += fmt::format("# {}: {}; {}, max |de| {:.1e}\n", p.name(), p.target,
-                       p.constant ? "en" : "the hook (table interpolation)",
-                       yade_delivery(spec, p).max_abs_error);
-  }
+namespace {
+
+// The imports and one FrictMat per type and wall material (frictionAngle: the export's mu).
+std::string materials(const ExportSpec& spec) {
+  std::string out;
   out +=
       "from yade import *\nfrom yade import geom, utils\nfrom math import pi\nimport numpy\n"
       "corlab_type_of_material = {}\n";
@@ -241,6 +228,12 @@ std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration
     out += material_line(material_name(code), code, spec.extra_walls[k].material,
                          wall_label(spec, static_cast<int>(k) + 1), spec.friction);
   }
+  return out;
+}
+
+// corlab_ip2 (en and frictAngle per material pair, rolling), corlab_law2 and the functors.
+std::string interaction_physics(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
+  std::string out;
   std::vector<std::string> matches;
   std::vector<std::string> angles;
   for (int i = 1; spec.wall_only && i <= static_cast<int>(spec.types.size()); ++i) {
@@ -279,6 +272,31 @@ std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration
       "corlab_ig2 = [Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom(), "
       "Ig2_Wall_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()]\n",
       spec.rolling > 0.0 ? "True" : "False");
+  return out;
+}
+
+}  // namespace
+
+std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
+  std::string out =
+      detail::export_header(spec, "YADE (2023.02a), Python: exec() it in a YADE script");
+  out +=
+      "# Hertz-Mindlin: Ip2_FrictMat_FrictMat_MindlinPhys maps en to its damping exactly for\n"
+      "# Hertz up to en = 0.9 (measured: 0.3 -> 0.3001, 0.9 -> 0.89993) but falls short above\n"
+      "# (0.96 -> 0.9568, 0.99 -> 0.9790, 0.999 -> 0.9841; en = 1: elastic): the stated max |de|\n"
+      "# includes that. Use corlab_ip2 and corlab_law2 in the InteractionLoop; en is per\n"
+      "# material pair (MatchMaker).\n";
+  out += tangential_comment(spec);
+  const bool hook =
+      std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
+  out += "# Type pairs and the target:\n";
+  for (const auto& p : pairs) {
+    out += fmt::format("# {}: {}; {}, max |de| {:.1e}\n", p.name(), p.target,
+                       p.constant ? "en" : "the hook (table interpolation)",
+                       yade_delivery(spec, p).max_abs_error);
+  }
+  out += materials(spec);
+  out += interaction_physics(spec, pairs);
   out +=
       "# The walls (fixed bodies of the wall materials); their ids in corlab_walls.\ncorlab_walls "
       "= []\n";
