@@ -29,7 +29,7 @@ namespace {
 
 struct DemArgs {
   std::vector<std::string> types;        // [LABEL=]MATERIAL:RADIUS
-  std::string wall;                      // [LABEL=]MATERIAL
+  std::vector<std::string> walls;        // [LABEL=]MATERIAL[@SHAPE]
   std::vector<std::string> pairs;        // A/B=E
   std::vector<std::string> pair_tables;  // A/B=FILE
   std::optional<double> restitution;
@@ -40,7 +40,8 @@ struct DemArgs {
   int fit_points = 9;
   int table_points = 64;
   bool wall_only = false;
-  double friction = 0.0;  // Coulomb mu [-] of every pair
+  std::vector<std::string> friction;  // MU (every pair) or A/B=MU (repeat)
+  double rolling = 0.0;               // rolling resistance mu_r [-] of every pair
   std::string out = "dem_export";
   int jobs = 0;           // --model fe|auto: speeds run at once (0: one per core)
   bool no_cache = false;  // --model fe|auto: compute every speed, store nothing
@@ -89,11 +90,7 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
 dem::ExportSpec export_spec(const DemArgs& args) {
   dem::ExportSpec spec;
   for (const auto& t : args.types) spec.types.push_back(parse_type(t));
-  if (!args.wall.empty()) {
-    auto wall = dem::parse_labelled_material(args.wall, "wall");
-    spec.wall = std::move(wall.material);
-    if (wall.label_given) spec.wall_label = std::move(wall.label);
-  }
+  for (const auto& w : args.walls) dem::add_wall(spec, w);
   for (const auto& p : args.pairs) spec.pair_restitution.push_back(dem::parse_pair_restitution(p));
   for (const auto& p : args.pair_tables) {
     auto table = dem::parse_pair_table(p);
@@ -110,7 +107,18 @@ dem::ExportSpec export_spec(const DemArgs& args) {
   spec.v_max = args.v_max;
   spec.fit_points = args.fit_points;
   spec.wall_only = args.wall_only;
-  spec.friction = args.friction;
+  bool friction_given = false;
+  for (const auto& f : args.friction) {
+    if (f.find('/') != std::string::npos) {
+      spec.pair_friction.push_back(dem::parse_pair_value(f, "friction"));
+    } else if (friction_given) {
+      throw_invalid("friction", f, "one MU for every pair (A/B=MU for single pairs)");
+    } else {
+      spec.friction = parse_finite("friction", f);
+      friction_given = true;
+    }
+  }
+  spec.rolling = args.rolling;
   return spec;
 }
 
@@ -139,10 +147,11 @@ int run_dem(const DemArgs& args) {
                                               .cancel = interrupt.flag()});
   }
   // A pair a registered model does not cover (an elastic pair) is refused by calibrate_pairs
-  // with the ways out (--model fe or auto, --pair, a yield stress, --wall-only).
+  // with the ways out (--model fe or auto, --pair, a yield stress, --wall-only); every wall
+  // material's pairs and each pair's friction: calibrate_export.
   std::vector<dem::PairCalibration> pairs;
   try {
-    pairs = dem::calibrate_pairs(spec);
+    pairs = dem::calibrate_export(spec);
   } catch (const InputError&) {
     if (!interrupt.requested()) throw;
     fmt::print(stderr, "corlab dem: interrupted ({}); finished FE speeds are cached\n",
@@ -161,6 +170,12 @@ int run_dem(const DemArgs& args) {
   write_file(dir / "yade_fragment.py", dem::write_yade(spec, pairs));
   write_file(dir / "restitution_table.csv", dem::write_table_csv(spec, pairs, args.table_points));
   write_file(dir / "dem_export.json", dem::write_json(spec, pairs, args.table_points));
+  const auto walls = dem::export_walls(spec);
+  for (std::size_t k = 0; k < walls.size(); ++k) {  // LIGGGHTS's mesh of an oblique plane
+    if (walls[k].shape == dem::WallShape::plane && dem::plane_axis(walls[k]) < 0) {
+      write_file(dir / fmt::format("corlab_wall{}.stl", k + 1), dem::wall_stl(walls[k]));
+    }
+  }
   for (const auto& p : pairs) {
     const auto lammps = dem::lammps_delivery(spec, p, true);
     const auto lammps_plain = dem::lammps_delivery(spec, p, false);
@@ -195,8 +210,11 @@ const CommandRegistration kRegistration{Command{
       sub.add_option("--type", a->types,
                      "particle type [LABEL=]MATERIAL:RADIUS[m] (repeat; type ids 1, 2...)")
           ->required();
-      sub.add_option("--wall", a->wall,
-                     "[LABEL=]MATERIAL of a flat wall (one fix per type in LAMMPS)");
+      sub.add_option(
+          "--wall", a->walls,
+          "[LABEL=]MATERIAL[@SHAPE] a wall (repeat): SHAPE plane:PX,PY,PZ,NX,NY,NZ[,HALF] "
+          "(normal into the particles), cylinder:AXIS,C1,C2,R,LO,HI (particles inside) "
+          "or floor (default, z = 0)");
       sub.add_option("--pair", a->pairs,
                      "A/B=E: constant e of one pair (type labels or ids, wall), e.g. an elastic "
                      "glass/glass=1 (repeat)");
@@ -213,8 +231,12 @@ const CommandRegistration kRegistration{Command{
       e->excludes(m)->excludes(t);
       m->excludes(t);
       sub.add_option("--friction", a->friction,
-                     "Coulomb friction coefficient mu of every pair (default 0: frictionless); "
-                     "above 0 the fragments add Mindlin's tangential stiffness 8 G* a");
+                     "MU: Coulomb friction coefficient of every pair (default 0: frictionless), "
+                     "A/B=MU: of one pair (repeat); above 0 the fragments add Mindlin's "
+                     "tangential stiffness 8 G* a");
+      sub.add_option("--rolling", a->rolling,
+                     "rolling resistance coefficient mu_r of every pair (moment <= mu_r R* F_n; "
+                     "default 0: none)");
       sub.add_option("--v-min", a->v_min, "lower end of the e(v) range [m/s]");
       sub.add_option("--v-max", a->v_max, "upper end of the e(v) range [m/s]");
       sub.add_option("--fit-points", a->fit_points, "speeds of the e(v) fits (log-uniform)");

@@ -263,6 +263,11 @@ double PairCalibration::liggghts_yield_ratio() const {
 }
 
 bool liggghts_uses_thornton_ning(const std::vector<PairCalibration>& pairs) {
+  // Several wall materials: a type's one yield ratio would be one wall's fit (and the misfits of
+  // the others' pairs, fitted apart, would not be what runs): one constant e per pair instead.
+  if (std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return p.wall > 0; })) {
+    return false;
+  }
   double worst_tn = 0.0;
   double worst_constant = 0.0;
   bool any_curve = false;

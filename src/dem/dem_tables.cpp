@@ -15,9 +15,11 @@
 namespace corlab::dem {
 namespace {
 
+// "1-2", "1-wall" (the first wall material), "1-wall2" (the second, ...).
 std::string short_name(const PairCalibration& p) {
-  return p.type_j == 0 ? fmt::format("{}-wall", p.type_i)
-                       : fmt::format("{}-{}", p.type_i, p.type_j);
+  if (p.type_j != 0) return fmt::format("{}-{}", p.type_i, p.type_j);
+  return p.wall == 0 ? fmt::format("{}-wall", p.type_i)
+                     : fmt::format("{}-wall{}", p.type_i, p.wall + 1);
 }
 
 // e of the fitted viscoelastic law at v (ODE), for the tables.
@@ -106,6 +108,7 @@ std::string write_json(const ExportSpec& spec,
     nlohmann::json j{{"pair", short_name(p)},
                      {"type_i", p.type_i},
                      {"type_j", p.type_j},
+                     {"wall_material", p.wall},
                      {"label", p.label},
                      {"target", p.target},
                      {"effective_modulus_Pa", p.effective_modulus},

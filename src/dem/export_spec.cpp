@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "corlab/core/error.hpp"
 #include "corlab/core/number.hpp"
@@ -81,6 +82,25 @@ PairRestitution parse_pair_restitution(std::string_view text) {
   return p;
 }
 
+PairValue parse_pair_value(std::string_view text, std::string_view field) {
+  const std::string syntax =
+      fmt::format("A/B=X with type labels or ids (or a wall's label) and a {} >= 0", field);
+  const auto slash = text.find('/');
+  const auto eq = text.rfind('=');
+  if (slash == std::string_view::npos || eq == std::string_view::npos || eq < slash) {
+    throw_invalid(field, text, syntax);
+  }
+  PairValue p;
+  p.first = std::string(trim(text.substr(0, slash)));
+  p.second = std::string(trim(text.substr(slash + 1, eq - slash - 1)));
+  if (p.first.empty() || p.second.empty()) throw_invalid(field, text, syntax);
+  p.value = parse_finite(fmt::format("{} {}/{}", field, p.first, p.second), text.substr(eq + 1));
+  if (p.value < 0.0) {
+    throw_invalid(fmt::format("{} {}/{}", field, p.first, p.second), p.value, ">= 0");
+  }
+  return p;
+}
+
 PairTable parse_pair_table(std::string_view text) {
   constexpr std::string_view kSyntax =
       "A/B=FILE with type labels or ids (or wall) and an FE results.csv (columns velocity, e)";
@@ -112,6 +132,12 @@ std::string wall_label(const ExportSpec& spec) {
   return "wall";
 }
 
+std::string wall_label(const ExportSpec& spec, int k) {
+  if (k == 0) return wall_label(spec);
+  const LabelledMaterial& m = spec.extra_walls[static_cast<std::size_t>(k - 1)];
+  return m.label.empty() ? fmt::format("wall{}", k + 1) : m.label;
+}
+
 void validate_table_points(int points) {
   if (points < 2 || points > kMaxTablePoints) {
     throw_invalid("table-points", points,
@@ -128,6 +154,13 @@ int resolve_type(const ExportSpec& spec,
                  std::string_view field,
                  const std::string& text) {
   const int n = static_cast<int>(spec.types.size());
+  const int walls = static_cast<int>(spec.extra_walls.size());
+  for (int k = 1; k <= walls; ++k) {  // a further wall material: by its label only
+    if (name == wall_label(spec, k)) return -k;
+  }
+  if (name == "wall" && walls > 0) {
+    throw_invalid(field, text, "a wall named by its label (the export has several wall materials)");
+  }
   const bool wall = name == "wall" || (spec.wall && name == wall_label(spec));
   for (int i = 1; i <= n; ++i) {
     if (name != type_label(spec, i) && name != std::to_string(i)) continue;
@@ -145,9 +178,12 @@ int resolve_type(const ExportSpec& spec,
   }
   std::string known;
   for (int i = 1; i <= n; ++i) known += type_label(spec, i) + ", ";
+  for (int k = 1; k <= walls; ++k) known += wall_label(spec, k) + ", ";
   throw_invalid(field, text,
                 fmt::format("two of [{}wall] (labels or type ids) and ={}", known,
-                            field == "pair" ? "E" : "FILE"));
+                            field == "pair"         ? "E"
+                            : field == "pair-table" ? "FILE"
+                                                    : "MU"));
 }
 
 // The pair (lower id first, 0 = wall) that `first`/`second` name: at least one particle type,
@@ -159,10 +195,10 @@ std::pair<int, int> named_pair(const ExportSpec& spec,
   const std::string text = first + "/" + second;
   const int a = resolve_type(spec, first, field, text);
   const int b = resolve_type(spec, second, field, text);
-  if (a == 0 && b == 0) {
+  if (a <= 0 && b <= 0) {
     throw_invalid(field, text, "a pair with a particle type (the wall has no wall/wall contact)");
   }
-  if (spec.wall_only && a != 0 && b != 0) {
+  if (spec.wall_only && a > 0 && b > 0) {
     throw_invalid(field, text, "a type-wall pair (the export is --wall-only)");
   }
   return {std::min(a, b), std::max(a, b)};
@@ -185,6 +221,15 @@ void validate_labels(const ExportSpec& spec) {
     labels.push_back(label);
   }
   if (!spec.wall) return;
+  for (int k = 1; k <= static_cast<int>(spec.extra_walls.size()); ++k) {
+    const std::string wall = wall_label(spec, k);
+    if (!is_label(wall)) throw_invalid("wall label", wall, kChars);
+    if (std::find(labels.begin(), labels.end(), wall) != labels.end() || wall == "wall" ||
+        wall == wall_label(spec) || is_type_id(wall)) {
+      throw_invalid("wall label", wall, kRule);
+    }
+    labels.push_back(wall);
+  }
   const std::string wall = wall_label(spec);
   if (!is_label(wall)) throw_invalid("wall label", wall, kChars);
   // A wall of a type's database material shares its name (--pair says `wall` or the type id); a
@@ -203,8 +248,11 @@ void validate_pair_targets(const ExportSpec& spec) {
                        const std::string& text) {
     const auto key = named_pair(spec, first, second, field);
     if (std::find(named.begin(), named.end(), key) != named.end()) {
-      throw_invalid(field, text,
-                    "a pair that no other --pair or --pair-table names (one target per pair)");
+      throw_invalid(
+          field, text,
+          field == "friction"
+              ? "a pair that no other --friction A/B=MU names (one mu per pair)"
+              : "a pair that no other --pair or --pair-table names (one target per pair)");
     }
     named.push_back(key);
   };
@@ -214,12 +262,20 @@ void validate_pair_targets(const ExportSpec& spec) {
   for (const auto& t : spec.pair_tables) {
     add(t.first, t.second, "pair-table", t.first + "/" + t.second + "=" + t.source);
   }
+  named.clear();  // a pair's mu is another quantity than its e
+  for (const auto& p : spec.pair_friction) {
+    add(p.first, p.second, "friction", fmt::format("{}/{}={}", p.first, p.second, p.value));
+  }
 }
 
 // Whether `first`/`second` (labels or ids) name the pair (i, j) (j = 0: the wall).
-bool names_pair(
-    const ExportSpec& spec, const std::string& first, const std::string& second, int i, int j) {
-  const auto key = named_pair(spec, first, second, "pair");
+bool names_pair(const ExportSpec& spec,
+                const std::string& first,
+                const std::string& second,
+                int i,
+                int j,
+                std::string_view field = "pair") {
+  const auto key = named_pair(spec, first, second, field);
   return key == std::pair{std::min(i, j), std::max(i, j)};
 }
 
@@ -248,6 +304,11 @@ void validate_export_spec(const ExportSpec& spec) {
   }
   if (spec.restitution) require_open_range("restitution", *spec.restitution, 0.0, 1.0);
   validate_friction(spec.friction);
+  for (const auto& p : spec.pair_friction) validate_friction(p.value);
+  if (!std::isfinite(spec.rolling) || spec.rolling < 0.0) {
+    throw_invalid("rolling", spec.rolling, ">= 0 (rolling resistance mu_r; 0: none)");
+  }
+  validate_walls(spec);
   require_positive("v_min", spec.v_min, "[m/s]");
   if (!(spec.v_max > spec.v_min)) throw_invalid("v_max", spec.v_max, "> v_min");
   if (spec.fit_points < 2 || spec.fit_points > 200)
@@ -261,6 +322,24 @@ std::optional<double> pair_override(const ExportSpec& spec, int i, int j) {
     if (names_pair(spec, p.first, p.second, i, j)) return p.restitution;
   }
   return std::nullopt;
+}
+
+std::optional<double> pair_friction(const ExportSpec& spec, int i, int j) {
+  for (const auto& p : spec.pair_friction) {
+    if (names_pair(spec, p.first, p.second, i, j, "friction")) return p.value;
+  }
+  return std::nullopt;
+}
+
+int named_wall(const ExportSpec& spec, const std::string& first, const std::string& second) {
+  std::string text = first;
+  text += "/";
+  text += second;
+  for (const std::string* name : {&first, &second}) {
+    const int id = resolve_type(spec, *name, "pair", text);
+    if (id <= 0) return -id;
+  }
+  return -1;
 }
 
 const PairTable* pair_table(const ExportSpec& spec, int i, int j) {

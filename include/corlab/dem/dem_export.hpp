@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "corlab/dem/calibration.hpp"
+#include "corlab/dem/dem_walls.hpp"
 #include "corlab/dem/time_step.hpp"
 #include "corlab/materials/material.hpp"
 
@@ -53,6 +54,16 @@ struct PairTable {
   std::string source;      ///< the table's file name (parse_pair_table), in the exports
   RestitutionCurve curve;  ///< e(v) [m/s] -> [-] (tabulated_curve)
 };
+/// A number of one pair (--friction A/B=MU): labels or type ids, or a wall's label ("wall" when
+/// there is one wall material).
+struct PairValue {
+  std::string first;
+  std::string second;
+  double value = 0.0;
+};
+/// Parses "A/B=X" with X a finite number >= 0; InputError naming `field` (e.g. friction).
+PairValue parse_pair_value(std::string_view text, std::string_view field);
+
 /// Parses "A/B=FILE" into first, second and source (the curve is the caller's to read);
 /// InputError naming `pair-table`.
 PairTable parse_pair_table(std::string_view text);
@@ -102,6 +113,15 @@ struct ExportSpec {
   /// e(v) of every pair without its own target when `model` is "fe" or "auto"
   /// (is_external_model); set by the CLI and Python (the FE solver is not part of this library).
   PairTargetSource target_source;
+  /// Coulomb mu [-] of single pairs (--friction A/B=MU), replacing `friction` there.
+  std::vector<PairValue> pair_friction;
+  /// Rolling resistance coefficient mu_r [-] of every pair (0: none): the largest rolling
+  /// moment is mu_r R* F_n (each code's own keyword, dem_walls.hpp).
+  double rolling = 0.0;
+  /// Wall materials after the first (`wall`): material k of the walls is extra_walls[k - 1].
+  std::vector<LabelledMaterial> extra_walls;
+  /// The walls' geometry (each names its material); empty with a wall: the floor z = 0.
+  std::vector<Wall> walls;
 };
 
 /// Most rows per pair of the e(v) tables (write_table_csv, write_json): each row of a fitted pair
@@ -127,7 +147,8 @@ struct PairCalibration {
   double effective_density = 0.0;
   double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
   double shear_modulus = 0.0;      ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
-  double friction = 0.0;           ///< Coulomb mu [-] (ExportSpec::friction)
+  double friction = 0.0;           ///< Coulomb mu [-] (ExportSpec::friction or the pair's own)
+  int wall = 0;                    ///< type_j = 0: the wall material's index (ExportSpec::walls)
   std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
   std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
   RestitutionCurve curve;          ///< target e(v) [m/s] -> [-]
@@ -169,12 +190,26 @@ struct PairCalibration {
 /// ExportSpec::target_source's (InputError naming `model` without one).
 std::vector<PairCalibration> calibrate_pairs(const ExportSpec& spec);
 
+/// Every pair of the export with all its walls: calibrate_pairs with the first wall material,
+/// then each further wall material's type-wall pairs (PairCalibration::wall), and each pair's
+/// Coulomb mu (its --friction A/B=MU, else the export's). Validates the walls (InputError naming
+/// the field). What `corlab dem` and corlab.dem.export write.
+std::vector<PairCalibration> calibrate_export(const ExportSpec& spec);
+/// The label of wall material `k` (0: wall_label) as written in the exports.
+std::string wall_label(const ExportSpec& spec, int k);
+/// The walls of the export: spec.walls, or with a wall material and none given the floor z = 0.
+std::vector<Wall> export_walls(const ExportSpec& spec);
+/// Adds the wall "[LABEL=]MATERIAL[@SHAPE]" (dem_walls.hpp) to the spec: a new label is a new
+/// wall material, a label seen before names the same one (its material must then be the same).
+void add_wall(ExportSpec& spec, std::string_view text);
+
 /// LIGGGHTS thornton_ning's coefficientYieldRatio per type (a_y = ratio r_i): its wall fit,
 /// else its same-type fit; 1 (never yields) for a type without a fitted pair.
 std::vector<double> liggghts_type_ratios(const ExportSpec& spec,
                                          const std::vector<PairCalibration>& pairs);
 /// LIGGGHTS writes one normal model for all pairs: thornton_ning (e(v) through per-type yield
-/// ratios) when its worst misfit over the pairs is below that of per-pair constants (model hertz).
+/// ratios) when its worst misfit over the pairs is below that of per-pair constants (model hertz)
+/// and the walls are of one material.
 bool liggghts_uses_thornton_ning(const std::vector<PairCalibration>& pairs);
 
 /// How one code's fragment delivers one pair's target: the law it runs, in words, and its

@@ -4,6 +4,7 @@
 /// The checks of an ExportSpec (types, labels, targets, the pairs --pair and --pair-table name)
 /// and the lookup of a pair's own target, shared by the calibration (dem_export.cpp).
 #include <optional>
+#include <string>
 
 #include "corlab/dem/dem_export.hpp"
 
@@ -21,6 +22,14 @@ void validate_export_spec(const ExportSpec& spec);
 
 /// The pair's own constant e (--pair), if the spec sets one for (i, j) (j = 0: the wall).
 std::optional<double> pair_override(const ExportSpec& spec, int i, int j);
+/// The pair's own Coulomb mu (--friction A/B=MU), if the spec sets one for (i, j) (j = 0: the
+/// wall of the spec, whose one wall material calibrate_export gives it).
+std::optional<double> pair_friction(const ExportSpec& spec, int i, int j);
+/// The wall material (0, 1, ...) a pair of names (labels or ids) holds, -1 for a particle pair.
+int named_wall(const ExportSpec& spec, const std::string& first, const std::string& second);
+/// The walls' checks (dem_walls.cpp): each wall's material exists, planes and cylinders finite.
+void validate_walls(const ExportSpec& spec);
+
 /// The pair's own e(v) table (--pair-table), if the spec gives one for (i, j).
 const PairTable* pair_table(const ExportSpec& spec, int i, int j);
 

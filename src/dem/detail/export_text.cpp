@@ -4,8 +4,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
+#include "corlab/dem/contact_laws.hpp"
+#include "corlab/dem/tangential.hpp"
 #include "corlab/version.hpp"
 #include "dem/detail/script_text.hpp"
 
@@ -24,6 +27,25 @@ std::string export_header(const ExportSpec& spec, std::string_view code) {
                        script_text(spec.wall->name));
   }
   return out;
+}
+
+bool has_friction(const ExportSpec& spec) {
+  return spec.friction > 0.0 || std::any_of(spec.pair_friction.begin(), spec.pair_friction.end(),
+                                            [](const auto& p) { return p.value > 0.0; });
+}
+
+std::string friction_words(const ExportSpec& spec) {
+  std::string out = fmt::format("{:.6g}", spec.friction);
+  for (const auto& p : spec.pair_friction) {
+    out += fmt::format("; {}/{} {:.6g}", script_text(p.first), script_text(p.second), p.value);
+  }
+  return out;
+}
+
+double rolling_stiffness(double e_star, double r_star, double m_star, double g_star, double v_max) {
+  const double k = hertz_stiffness(e_star, r_star);
+  const double delta = std::pow(1.25 * m_star * v_max * v_max / k, 0.4);
+  return mindlin_coefficient(g_star) * std::sqrt(r_star * delta);
 }
 
 std::string fit_comment(const CurveFit& fit) {
@@ -64,9 +86,9 @@ std::string time_step_comment(const ExportSpec& spec,
                        p.contact_time_fast, p.contact_time_slow, rule.name, rule.steps_per_contact);
   }
   out += fmt::format(
-      "{0} Recommended step {1:.3e} s (the shortest of those): at it this code's e stays within "
-      "{2:.0e}\n{0} of its law's (measured in drop tests, scripts/dem_time_step.py); a larger step "
-      "delivers another e.\n",
+      "{0} Recommended step {1:.3e} s (the shortest of those): at it, and at twice it, this\n"
+      "{0} code's e stays within {2:.0e} of its law's (measured in drop tests, wherever in a step\n"
+      "{0} a contact starts: scripts/dem_time_step.py); a larger step delivers another e.\n",
       comment, recommended_step(pairs, law_of), kTimeStepError);
   return out;
 }

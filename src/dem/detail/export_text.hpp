@@ -16,6 +16,14 @@ namespace corlab::dem::detail {
 std::string export_header(const ExportSpec& spec, std::string_view code);
 /// "fit over a..b m/s (n speeds): rms .., max |de| .."
 std::string fit_comment(const CurveFit& fit);
+/// Whether any pair has friction (--friction MU or A/B=MU above 0).
+bool has_friction(const ExportSpec& spec);
+/// The friction as asked, for the headers: "0.3", "0.3; glass/steel 0.5".
+std::string friction_words(const ExportSpec& spec);
+/// The rolling stiffness k_roll [N/m] of a pair with E* [Pa], R* [m], m* [kg], G* [Pa]:
+/// Mindlin's 8 G* a at the deepest overlap of a Hertz impact at v_max [m/s] (LAMMPS `rolling
+/// sds`; YADE's krot = k_roll R*^2 [N m/rad]).
+double rolling_stiffness(double e_star, double r_star, double m_star, double g_star, double v_max);
 /// Speeds v_min..v_max, `points` linear [m/s] (the e(v) tables).
 std::vector<double> table_speeds(const ExportSpec& spec, int points);
 

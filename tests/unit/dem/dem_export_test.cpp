@@ -39,7 +39,8 @@ TEST(DemExport, ConstantEPairsAndCompensatedLammpsInput) {
   const std::string lammps = write_lammps(spec, pairs);
   EXPECT_NE(lammps.find(fmt::format("pair_coeff 1 2 hertz")), std::string::npos);
   EXPECT_NE(lammps.find(fmt::format("{:.10g} tangential", e_in)), std::string::npos);
-  EXPECT_NE(lammps.find("fix corlab_wall2 corlab_type2 wall/gran"), std::string::npos);
+  EXPECT_NE(lammps.find("fix corlab_wall1_t2 corlab_type2 wall/gran/region granular"),
+            std::string::npos);
   // Issue 41: the cutoff is the farthest contact, 2 r_max [m] (here two 5 mm spheres), and a
   // guard stops a run whose atoms of a walled type are outside that type's group.
   EXPECT_NE(lammps.find("pair_style granular 0.01\n"), std::string::npos);

@@ -35,9 +35,8 @@ def lammps_input(fragment, drop):
         lines += ["set atom %d vx %.12g" % (k + 1, u) for k, u in enumerate(drop.velocities)]
     lines += ["include %s" % fragment]
     if drop.geometry == "pair":
-        text = open(fragment).read()
-        lines += ["unfix corlab_wall%d" % t for t in range(1, drop.ntypes + 1)
-                  if "fix corlab_wall%d " % t in text]
+        lines += ["unfix %s" % line.split()[1] for line in open(fragment)
+                  if line.startswith("fix corlab_wall")]
     lines += ["fix corlab_nve all nve/sphere", "timestep %.12g" % dt, "thermo 0",
               "run %d" % drop.steps]
     if drop.geometry == "wall":

@@ -9,6 +9,7 @@ usage: dem_liggghts_check.py CORLAB_BIN LIGGGHTS_BIN WORK_DIR [--report FILE]
 """
 # SPDX-License-Identifier: BSD-3-Clause
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -18,7 +19,8 @@ from dem_check_common import case_rows, finish, parse_e, run  # noqa: E402
 def liggghts_input(fragment, drop):
     r, v = drop.radius, drop.v
     text = open(fragment).read()
-    ntypes = drop.ntypes + (1 if "corlab_wall" in text else 0)  # the wall's material last
+    # the particle types, then one per wall material, as the fragment's header says
+    ntypes = int(re.search(r"create_box N\s*(?:#\s*)?with N = (\d+)", text).group(1))
     lines = ["atom_style granular", "atom_modify map array", "boundary f f f", "newton off",
              "communicate single vel yes", "units si", "hard_particles yes",
              "region reg block -%g %g -%g %g -%g %g units box"
@@ -28,8 +30,8 @@ def liggghts_input(fragment, drop):
         lines += ["create_atoms %d single 0 0 %.12g units box"
                   % (drop.types[0], drop.radii[0] + drop.gap)]
     else:
-        if "corlab_wall" in text:
-            lines += ["unfix corlab_wall"]
+        lines += ["unfix %s" % line.split()[1] for line in text.splitlines()
+                  if line.startswith("fix corlab_wall")]
         x = (-(drop.radii[0] + drop.gap / 2), drop.radii[1] + drop.gap / 2)
         lines += ["create_atoms %d single %.12g 0 %.12g units box" % (t, xt, 4 * r)
                   for t, xt in zip(drop.types, x)]

@@ -95,17 +95,18 @@ YADE_CASE = """
 O.reset()
 exec(open(%(fragment)r).read())
 R = %(radius).17g
-O.bodies.append(box((0, 0, -R), (8 * R, 8 * R, R), fixed=True, material=corlab_wall_mat))
+for w in corlab_walls:  # a Box, as this table was measured: YADE's Wall applies F_t at R - delta
+    O.bodies.erase(w)
+w = O.bodies.append(box((0, 0, -R), (8 * R, 8 * R, R), fixed=True, material=corlab_wall_mat))
 a = O.bodies.append(sphere((0, 0, R + %(gap).17g), R, material=corlab_mat1))
 O.bodies[a].state.vel = Vector3(%(vt).17g, 0, %(vn).17g)
-O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()]),
-             InteractionLoop([Ig2_Box_Sphere_ScGeom()], [corlab_ip2],
-                             [Law2_ScGeom_MindlinPhys_Mindlin()]),
+O.engines = [ForceResetter(), InsertionSortCollider(corlab_bound),
+             InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2]),
              NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]
 O.dt = %(dt).17g
 O.run(%(touch)d, True)
-k = (O.interactions[0, a].phys.kno, O.interactions[0, a].phys.kso) \\
-    if O.interactions.has(0, a) and O.interactions[0, a].isReal else (0.0, 0.0)
+k = (O.interactions[w, a].phys.kno, O.interactions[w, a].phys.kso) \\
+    if O.interactions.has(w, a) and O.interactions[w, a].isReal else (0.0, 0.0)
 O.run(%(rest)d, True)
 s = O.bodies[a].state
 print('CORLAB_ROW %(theta).6f', s.vel[0], s.vel[2], s.angVel[1], k[0], k[1])
@@ -113,7 +114,8 @@ print('CORLAB_ROW %(theta).6f', s.vel[0], s.vel[2], s.angVel[1], k[0], k[1])
 
 
 def run_yade(yade, out, cases):
-    """YADE: also reads the contact's kno [N/m^1.5] and kso [N/m^1.5] a few steps after touch."""
+    """YADE: also reads the contact's kno [N/m^1.5] and kso [N/m^1.5] a few steps after touch
+    (on a Box in place of the fragment's floor)."""
     text = ""
     for case in cases:
         touch = int(case.gap / case.vn / case.dt) + 5

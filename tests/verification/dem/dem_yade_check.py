@@ -22,29 +22,25 @@ def yade_script(fragment, drop):
     hook = "corlab_set_en" in open(fragment).read()
     lines = ["exec(open(%r).read())" % fragment]
     if drop.geometry == "wall":
-        lines += ["R = %.17g" % drop.radii[0],
-                  "O.bodies.append(box((0, 0, -R), (8 * R, 8 * R, R), fixed=True, "
-                  "material=corlab_wall_mat))",
+        lines += ["R = %.17g" % drop.radii[0],  # the floor z = 0: the fragment's utils.wall
                   "a = O.bodies.append(sphere((0, 0, R + %.17g), R, material=corlab_mat%d))"
                   % (drop.gap, drop.types[0]),
                   "O.bodies[a].state.vel = Vector3(%.17g, 0, %.17g)" % (drop.vt, -v)]
         measure = "O.bodies[a].state.vel[2] / %.17g" % v
     else:
         (r1, r2), (t1, t2) = drop.radii, drop.types
-        lines += ["a = O.bodies.append(sphere((%.17g, 0, 0), %.17g, material=corlab_mat%d))"
+        lines += ["for w in corlab_walls:", "    O.bodies.erase(w)",  # head-on, no wall
+                  "a = O.bodies.append(sphere((%.17g, 0, 0), %.17g, material=corlab_mat%d))"
                   % (-(r1 + drop.gap / 2), r1, t1),
                   "b = O.bodies.append(sphere((%.17g, 0, 0), %.17g, material=corlab_mat%d))"
                   % (r2 + drop.gap / 2, r2, t2),
                   "O.bodies[a].state.vel = Vector3(%.17g, 0, 0)" % drop.velocities[0],
                   "O.bodies[b].state.vel = Vector3(%.17g, 0, 0)" % drop.velocities[1]]
         measure = "(O.bodies[b].state.vel[0] - O.bodies[a].state.vel[0]) / %.17g" % v
-    lines += ["O.engines = [ForceResetter(), "
-              "InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Box_Aabb()]),"]
+    lines += ["O.engines = [ForceResetter(), InsertionSortCollider(corlab_bound),"]
     if hook:
         lines += ["    PyRunner(command='corlab_set_en()', iterPeriod=1),"]
-    lines += ["    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom()], "
-              "[corlab_ip2],",
-              "                    [Law2_ScGeom_MindlinPhys_Mindlin()]),",
+    lines += ["    InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2]),",
               "    NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]",
               "O.dt = %.17g" % drop.dt, "O.run(%d, True)" % drop.steps,
               "print('CORLAB_E', %s)" % measure]
