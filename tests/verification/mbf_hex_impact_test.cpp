@@ -66,9 +66,9 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   // The mesh does not explain the difference (h = 1 and 0.75 mm: e_t 0.5718 and 0.5721), nor the
   // penalty or the facet normals; the block does: this one (2R, its base fixed) is no half-space
   // and reflects the impact's waves into the contact. On a 140 mm block e_t is 0.5807 here;
-  // quasi-static at v_n = 1 m/s (h = 0.6 mm) on a 280 mm block, 0.5873, omega +1.6 %, psi2 -0.885
-  // (a temporary build with a smoothed contact normal; docs/theory/solver3d.md, "The small-angle
-  // reference"; 143 CPU-s, too long for this tier).
+  // quasi-static at v_n = 1 m/s (h = 0.6 mm) on a 280 mm block, 0.5869, omega +1.7 %, psi2 -0.888
+  // (docs/theory/solver3d.md, "The small-angle reference", with the command; 149 CPU-s, too long
+  // for this tier).
   // Bounds: a quarter of the distance to the nearest rigid-body answer (rolling: e_t = 5/7, 0.12
   // away) for e_t; 7 % in omega; 0.2 in psi2 (rolling's 0 is 0.84 away).
   EXPECT_NEAR(r.e_t, mbf.tangential_restitution, 0.03);
