@@ -21,9 +21,9 @@ void check(const char* field, double value, bool ok, const char* constraint) {
 }
 
 // The annuli in the normalised problem. Lengths are in a_max = sqrt(R alpha_max), the normal
-// approach x in alpha_max, an annulus's tangential force f_j in mu E* a_max alpha_max / 2 (so
+// approach x in alpha_max, an annulus's tangential force f_j in 2 mu E* a_max alpha_max (so
 // that its Coulomb bound is the integral of x - xi^2 over its contact part, and the normal force
-// is 2/3 x^(3/2) in the same unit), the tangential displacement in mu alpha_max / kappa.
+// times mu is 2/3 x^(3/2) in the same unit), the tangential displacement in mu alpha_max / kappa.
 class Annuli {
  public:
   explicit Annuli(int count) : width_(1.0 / count), force_(static_cast<std::size_t>(count), 0.0) {}
