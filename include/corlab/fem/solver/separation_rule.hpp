@@ -42,7 +42,7 @@ class SeparationRule {
   /// The rule of a run that needs e only (SimulationControl::e_only): windows of
   /// kEOnlyWindowFraction of the contact duration, at least kEOnlyWaveFraction x t_wave [s].
   static SeparationRule e_only(double t_wave, double v_impact) {
-    return SeparationRule(kEOnlyWaveFraction * t_wave, v_impact, kEOnlyWindowFraction);
+    return {kEOnlyWaveFraction * t_wave, v_impact, kEOnlyWindowFraction};
   }
 
   /// Adds the sphere kinetic energy [J] over dt [s] to the window's time integral.
