@@ -154,11 +154,13 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   // result does not depend on which thread ran what.
   std::vector<EstimateRun> runs(1 + kErrorBarRatios.size());
   for (std::size_t k = 0; k < kErrorBarRatios.size(); ++k) runs[k + 1].ratio = kErrorBarRatios[k];
-  std::atomic<std::size_t> next{0};
+  // The run itself on this thread (its control's callbacks stay on the caller's thread), the
+  // companions from `next` on whichever thread is free.
+  std::atomic<std::size_t> next{1};
   const auto run_next = [&]() -> bool {
     const std::size_t k = next++;
     if (k >= runs.size()) return false;
-    if (k > 0 && control.cancel != nullptr && control.cancel->load()) {
+    if (control.cancel != nullptr && control.cancel->load()) {
       runs[k].result.status = RunStatus::kCancelled;  // not started
     } else {
       run_estimate_run(config, control, quiet, k, runs[k]);
@@ -166,8 +168,9 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
     return true;
   };
   std::optional<std::thread> helper;
-  const auto borrow = [&] {
-    if (helper || next.load() + 1 >= runs.size() || !take_spare(control.spare_threads)) return;
+  // A spare thread helps while more companions wait than this thread is about to take (`keep`).
+  const auto borrow = [&](std::size_t keep) {
+    if (helper || next.load() + keep >= runs.size() || !take_spare(control.spare_threads)) return;
     try {
       helper.emplace([&run_next] {
         while (run_next()) {
@@ -177,8 +180,11 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
       ++*control.spare_threads;  // no thread to be had: this one runs them all
     }
   };
-  borrow();
-  while (run_next()) borrow();
+  borrow(0);
+  run_estimate_run(config, control, quiet, 0, runs.front());
+  do {
+    borrow(1);
+  } while (run_next());
   if (helper) {
     helper->join();
     ++*control.spare_threads;
