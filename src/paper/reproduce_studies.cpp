@@ -180,10 +180,16 @@ json run_sweep_study(const SweepSpec& spec,
   so.progress = opt.progress && progress == nullptr;  // one progress line: the whole reproduction
   so.cancel = opt.cancel;
   const bool estimate = opt.error_estimate;
+  // The fits read e (and its error bar) only: each run ends one short window after its last
+  // contact (SimulationControl::e_only), e as the full stop rule's to round-off; e_energy and the
+  // final energies in results.csv are those of the shorter run (the history studies keep the
+  // full rule: their energies are the report's).
   CaseRunner run = [estimate](const fem::ImpactConfig& config,
                               const fem::SimulationControl& control) {
-    return estimate ? fem::simulate_with_error_estimate(config, control)
-                    : fem::simulate(config, control);
+    fem::SimulationControl e_only = control;
+    e_only.e_only = true;
+    return estimate ? fem::simulate_with_error_estimate(config, e_only)
+                    : fem::simulate(config, e_only);
   };
   if (progress != nullptr) {
     // run_sweep hands the runner a config only: its case's cost is found by its swept values.

@@ -65,7 +65,8 @@ Outcome execute_case(const std::vector<SweepCase>& cases,
                      std::size_t index,
                      const std::vector<std::string>& swept_keys,
                      const CaseRunner& runner,
-                     const std::atomic<bool>* cancel) {
+                     const std::atomic<bool>* cancel,
+                     std::atomic<int>* spare) {
   const SweepCase& run = cases.at(index);
   std::vector<std::string> swept_values;
   for (const auto& key : swept_keys) {
@@ -77,6 +78,7 @@ Outcome execute_case(const std::vector<SweepCase>& cases,
   outcome.index = index;
   fem::SimulationControl control;
   control.cancel = cancel;
+  control.spare_threads = spare;
   control.config_validated = true;  // SweepSpec::expand() validated every run's config
   const auto start = Clock::now();
   auto elapsed = [&start] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -132,7 +134,10 @@ Outcome deserialize(std::string_view message) {
 
 std::optional<std::size_t> CaseQueue::next() {
   const std::lock_guard lock(mutex_);
-  if ((cancel_ != nullptr && cancel_->load()) || next_ >= pending_.size()) return std::nullopt;
+  if ((cancel_ != nullptr && cancel_->load()) || next_ >= pending_.size()) {
+    ++spare_;  // the worker that asked stops
+    return std::nullopt;
+  }
   return pending_[next_++];
 }
 
@@ -330,7 +335,8 @@ SweepSummary run_sweep(const SweepSpec& spec,
     detail::WorkerPool pool(
         plan.pending.empty() ? 0 : jobs, [&queue] { return queue.next(); },
         [&](std::size_t index) {
-          return detail::execute_case(plan.cases, index, plan.swept_keys, runner, cancel);
+          return detail::execute_case(plan.cases, index, plan.swept_keys, runner, cancel,
+                                      queue.spare());
         });
     while (true) {
       const bool stopped = pool.stopped();  // read before taking: no outcome can be missed

@@ -27,12 +27,14 @@ struct Outcome {
 
 inline constexpr std::string_view kInterrupted = "interrupted";
 
-/// Runs case `index` with `runner` (never throws; a failure becomes a `failed` row).
+/// Runs case `index` with `runner` (never throws; a failure becomes a `failed` row); `spare`:
+/// the pool's threads with no case left (SimulationControl::spare_threads), or null.
 Outcome execute_case(const std::vector<SweepCase>& cases,
                      std::size_t index,
                      const std::vector<std::string>& swept_keys,
                      const CaseRunner& runner,
-                     const std::atomic<bool>* cancel);
+                     const std::atomic<bool>* cancel,
+                     std::atomic<int>* spare = nullptr);
 
 /// `Outcome` as one message for MPI ("index\tstatus\twall\tline") and back.
 std::string serialize(const Outcome& outcome);
@@ -41,14 +43,18 @@ Outcome deserialize(std::string_view message);
 /// The sweep's workers: each runs cases and queues the outcomes for the one writer thread.
 using WorkerPool = StreamingPool<Outcome>;
 
-/// Hands out the pending case indices in order; stops when cancelled.
+/// Hands out the pending case indices in order; stops when cancelled. A worker that finds no
+/// case left stops: it counts as a spare thread (spare()) that the running cases' error-bar
+/// companions may use (simulate_with_error_estimate).
 class CaseQueue {
  public:
   CaseQueue(std::vector<std::size_t> pending, const std::atomic<bool>* cancel)
       : pending_(std::move(pending)), cancel_(cancel) {}
   std::optional<std::size_t> next();
+  std::atomic<int>* spare() { return &spare_; }
 
  private:
+  std::atomic<int> spare_{0};
   std::mutex mutex_;
   std::vector<std::size_t> pending_;
   std::size_t next_ = 0;

@@ -11,7 +11,13 @@ notes' "every e within x %" claims are made): rows joined on case_id; prints the
 change of e and of e_error's reference e_coarse, the runs that moved most, the largest energy
 balance of each (NaN entries skipped), and the summed wall_s. Exit 1 if the files do not join
 (different cases), are empty or repeat a case id.
-    python3 sweep_compare.py --relative A.csv B.csv [--top N]"""
+    python3 sweep_compare.py --relative A.csv B.csv [--top N]
+
+Against the error bar (a change meant to move e by less than its error bar, issue 43): the same
+join; prints the largest |e_B - e_A| / e_error_A, how many runs moved by more than their error bar,
+and the largest relative change of e_error. Exit 1 as --relative, or if any run moved by more
+than its error bar.
+    python3 sweep_compare.py --error-bar A.csv B.csv [--top N]"""
 # SPDX-License-Identifier: BSD-3-Clause
 import csv
 import sys
@@ -94,7 +100,8 @@ def relative_change(ra, rb, key):
     return (b - a) / a if a == a and b == b and a != 0.0 else float("nan")
 
 
-def relative(argv):
+def joined(argv):
+    """(a, b, top) of the two files joined on case_id, or None (after saying why)."""
     top = 5
     if "--top" in argv:
         k = argv.index("--top")
@@ -102,10 +109,42 @@ def relative(argv):
         argv = argv[:k] + argv[k + 2:]
     a, b = by_case(argv[0]), by_case(argv[1])
     if a is None or b is None:
-        return 1
+        return None
     if set(a) != set(b):
         print(f"the files do not join: {len(set(a) ^ set(b))} case ids in only one of them")
+        return None
+    return a, b, top
+
+
+def against_error_bar(argv):
+    files = joined(argv)
+    if files is None:
         return 1
+    a, b, top = files
+    moves = []
+    for c in a:
+        d = abs(number(b[c], "e") - number(a[c], "e"))
+        bar = number(a[c], "e_error")
+        moves.append((d / bar if bar > 0.0 else float("nan"), d, c))
+    moves.sort(key=lambda t: -t[0] if t[0] == t[0] else 0.0)
+    ratios = [m for m, _, _ in moves if m == m]
+    bars = [abs(relative_change(a[c], b[c], "e_error")) for c in a]
+    outside = sum(1 for m in ratios if m > 1.0)
+    print(f"{len(a)} runs joined on case_id; largest |de| / e_error {largest(ratios):.3e},"
+          f" runs moved by more than their error bar: {outside},"
+          f" {len(a) - len(ratios)} without an error bar in A;"
+          f" e_error: largest |relative change| {largest(bars):.3e}")
+    for m, d, c in moves[:top]:
+        print(f"  {c}: e {a[c]['e']} -> {b[c]['e']} (|de| {d:.3e} = {m:.3e} x e_error"
+              f" {a[c]['e_error']})")
+    return 1 if outside else 0
+
+
+def relative(argv):
+    files = joined(argv)
+    if files is None:
+        return 1
+    a, b, top = files
     changes = sorted(((relative_change(a[c], b[c], "e"), c) for c in a),
                      key=lambda t: -abs(t[0]) if t[0] == t[0] else 0.0)
     finite = [d for d, _ in changes if d == d]
@@ -128,4 +167,6 @@ def relative(argv):
 if __name__ == "__main__":
     if len(sys.argv) > 1 and sys.argv[1] == "--relative":
         sys.exit(relative(sys.argv[2:]))
+    if len(sys.argv) > 1 and sys.argv[1] == "--error-bar":
+        sys.exit(against_error_bar(sys.argv[2:]))
     sys.exit(exact(sys.argv[1:]))

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <filesystem>
 
+#include "corlab/fem/solver/discretisation_error.hpp"
 #include "corlab/study/results_table.hpp"
 #include "corlab/study/sweep.hpp"
 #include "support/scratch_files.hpp"
@@ -78,6 +79,32 @@ TEST(SweepSolver, OneThreadAndTwoThreadsGiveTheSameTable) {
   run_sweep(spec, one, options(1));
   run_sweep(spec, two, options(2));
   EXPECT_EQ(comparable(one / "results.csv"), comparable(two / "results.csv"));
+}
+
+TEST(SweepSolver, ErrorEstimatesOnTheTailsSpareThreadGiveTheSameTable) {
+  // Two workers: the one that finds no case left lends its thread to the last cases' companions
+  // (SimulationControl::spare_threads); the values must be those of one worker.
+  SweepSpec spec = load_sweep_spec(kSpec);
+  for (auto& [key, value] : spec.base) {
+    if (key == "mesh.h_min") value = "0.0625e-3";  // R / 40: companions at sqrt 2 h and 2h
+  }
+  const auto with_estimate = [](int jobs) {
+    SweepOptions o = options(jobs);
+    o.only = {0, 1, 2};  // the 300 MPa cases
+    o.runner = [](const fem::ImpactConfig& config, const fem::SimulationControl& control) {
+      return fem::simulate_with_error_estimate(config, control);
+    };
+    return o;
+  };
+  const fs::path one = fresh_path("estimate_one");
+  const fs::path two = fresh_path("estimate_two");
+  run_sweep(spec, one, with_estimate(1));
+  run_sweep(spec, two, with_estimate(2));
+  const auto rows = comparable(one / "results.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows, comparable(two / "results.csv"));
+  const ResultsTable table = read_results(two / "results.csv");
+  for (const double bar : table.numbers("e_error")) EXPECT_GT(bar, 0.0);  // companions ran
 }
 
 TEST(SweepSolver, CancelledSweepKeepsRowsAndResumesToTheSameTable) {

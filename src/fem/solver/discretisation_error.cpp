@@ -4,9 +4,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 #include "corlab/core/error.hpp"
@@ -31,32 +36,67 @@ ImpactConfig coarsened(const ImpactConfig& config, double ratio) {
   return c;
 }
 
-ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
-                                          const SimulationControl& control) {
-  ImpactResult fine = simulate(config, control);
-  if (fine.status == RunStatus::kCancelled) return fine;
-  if (!config.mesh.file.empty()) {
-    fine.e_error_reason = "mesh.file is set: the estimate coarsens only the built-in mesh";
-    return fine;
+namespace {
+
+/// One of the runs of an estimate: the run itself (ratio 1) or a companion.
+struct EstimateRun {
+  double ratio = 1.0;
+  ImpactResult result;
+  std::string invalid;       ///< why the companion's mesh is not a valid config (InputError)
+  std::exception_ptr error;  ///< anything else the run threw
+};
+
+/// Takes one of the caller's spare threads (SimulationControl::spare_threads) if there is one.
+bool take_spare(std::atomic<int>* spare) {
+  if (spare == nullptr) return false;
+  int n = spare->load();
+  while (n > 0) {
+    if (spare->compare_exchange_weak(n, n - 1)) return true;
   }
-  SimulationControl quiet;
-  quiet.cancel = control.cancel;
+  return false;
+}
+
+/// Runs runs[k]: the run itself (k = 0, with the caller's control) or a companion (`quiet`).
+void run_estimate_run(const ImpactConfig& config,
+                      const SimulationControl& control,
+                      const SimulationControl& quiet,
+                      std::size_t k,
+                      EstimateRun& run) {
+  try {
+    if (k == 0) {
+      run.result = simulate(config, control);
+      return;
+    }
+    try {
+      run.result = simulate(coarsened(config, run.ratio), quiet);
+    } catch (const InputError& err) {
+      // no coarser mesh allowed (e.g. beyond R / 20): the estimate uses the grids it has
+      run.invalid = err.what();
+    }
+  } catch (...) {
+    run.error = std::current_exception();
+  }
+}
+
+/// The run's result (runs[0]) with e_coarse, the error bars and their reason from its
+/// companions (runs[1..]).
+ImpactResult combine_estimate(std::vector<EstimateRun>& runs) {
+  ImpactResult fine = std::move(runs.front().result);
+  if (fine.status == RunStatus::kCancelled) return fine;
   // The grids the estimator reads: the run's own (ratio 1) and its coarser companions.
   std::vector<double> e{fine.e};
   std::vector<double> e_t{fine.e_t};
   std::vector<double> omega{fine.omega};
   std::vector<double> ratios{1.0};
   std::string reason;
-  for (const double ratio : kErrorBarRatios) {
-    ImpactResult coarse;
-    try {
-      coarse = simulate(coarsened(config, ratio), quiet);
-    } catch (const InputError& err) {
-      // no coarser mesh allowed (e.g. beyond R / 20): the estimate uses the grids it has
+  for (std::size_t k = 1; k < runs.size(); ++k) {
+    const double ratio = runs[k].ratio;
+    if (!runs[k].invalid.empty()) {
       if (reason.empty())
-        reason = fmt::format("no companion mesh at {:.3g}h: {}", ratio, err.what());
+        reason = fmt::format("no companion mesh at {:.3g}h: {}", ratio, runs[k].invalid);
       continue;
     }
+    const ImpactResult& coarse = runs[k].result;
     fine.wall_s += coarse.wall_s;
     if (coarse.status == RunStatus::kCancelled) {
       fine.status = RunStatus::kCancelled;
@@ -92,6 +132,67 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   if (!std::isfinite(fine.e_error)) fine.e_error_reason = reason;
   fine.suspect = suspect_reason(fine);  // e above 1 is now judged against its error bar
   return fine;
+}
+
+}  // namespace
+
+ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
+                                          const SimulationControl& control) {
+  if (!config.mesh.file.empty()) {
+    ImpactResult fine = simulate(config, control);
+    if (fine.status != RunStatus::kCancelled) {
+      fine.e_error_reason = "mesh.file is set: the estimate coarsens only the built-in mesh";
+    }
+    return fine;
+  }
+  // The companions need e only: they end at the first short window after the last contact.
+  SimulationControl quiet;
+  quiet.cancel = control.cancel;
+  quiet.e_only = true;
+  // The run itself first, then its companions dearest first; on a spare thread of the caller's
+  // pool (a sweep's tail) two at a time. Each run is single-threaded and deterministic, so the
+  // result does not depend on which thread ran what.
+  std::vector<EstimateRun> runs(1 + kErrorBarRatios.size());
+  for (std::size_t k = 0; k < kErrorBarRatios.size(); ++k) runs[k + 1].ratio = kErrorBarRatios[k];
+  // The run itself on this thread (its control's callbacks stay on the caller's thread), the
+  // companions from `next` on whichever thread is free.
+  std::atomic<std::size_t> next{1};
+  const auto run_next = [&]() -> bool {
+    const std::size_t k = next++;
+    if (k >= runs.size()) return false;
+    if (control.cancel != nullptr && control.cancel->load()) {
+      runs[k].result.status = RunStatus::kCancelled;  // not started
+    } else {
+      run_estimate_run(config, control, quiet, k, runs[k]);
+    }
+    return true;
+  };
+  std::optional<std::thread> helper;
+  // A spare thread helps while more companions wait than this thread is about to take (`keep`).
+  const auto borrow = [&](std::size_t keep) {
+    if (helper || next.load() + keep >= runs.size() || !take_spare(control.spare_threads)) return;
+    try {
+      helper.emplace([&run_next] {
+        while (run_next()) {
+        }
+      });
+    } catch (const std::system_error&) {
+      ++*control.spare_threads;  // no thread to be had: this one runs them all
+    }
+  };
+  borrow(0);
+  run_estimate_run(config, control, quiet, 0, runs.front());
+  do {
+    borrow(1);
+  } while (run_next());
+  if (helper) {
+    helper->join();
+    ++*control.spare_threads;
+  }
+  for (const EstimateRun& run : runs) {
+    if (run.error) std::rethrow_exception(run.error);
+  }
+  return combine_estimate(runs);
 }
 
 }  // namespace corlab::fem

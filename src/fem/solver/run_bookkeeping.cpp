@@ -10,18 +10,29 @@
 
 namespace corlab::fem::solver {
 
+namespace {
+
+SeparationRule rule_for(const RunConstants& m, bool e_only) {
+  return e_only ? SeparationRule::e_only(m.t_wave, m.velocity)
+                : SeparationRule(m.t_wave, m.velocity);
+}
+
+}  // namespace
+
 RunBookkeeping::RunBookkeeping(const RunConstants& model,
                                bool stop_at_max_compression,
+                               bool e_only,
                                ImpactHistory& history)
     : m_(model),
       stop_at_max_compression_(stop_at_max_compression),
+      e_only_(e_only),
       history_(history),
-      rule_(model.t_wave, model.velocity),
+      rule_(rule_for(model, e_only)),
       v_com_prev_(-model.velocity),
       energy_reference_(model.energy_initial) {}
 
 void RunBookkeeping::relaunch(double added_energy, const RunState& s) {
-  rule_ = SeparationRule(m_.t_wave, m_.velocity);
+  rule_ = rule_for(m_, e_only_);
   energy_reference_ += added_energy;
   v_com_prev_ = relative_velocity(s);
 }

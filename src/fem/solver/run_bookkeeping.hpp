@@ -19,8 +19,12 @@ namespace corlab::fem::solver {
 class RunBookkeeping {
  public:
   /// History rows go to `history`; `stop_at_max_compression` ends a run at the sphere's turning
-  /// point (SimulationControl).
-  RunBookkeeping(const RunConstants& model, bool stop_at_max_compression, ImpactHistory& history);
+  /// point, `e_only` watches the rebound over the short window of SeparationRule::e_only
+  /// (SimulationControl).
+  RunBookkeeping(const RunConstants& model,
+                 bool stop_at_max_compression,
+                 bool e_only,
+                 ImpactHistory& history);
 
   /// At a sampled time (the state's; every node in sync), `kinetic` the model's kinetic energy
   /// then [J] (product form, less the subcycling's energy in transit): the energy balance, and a
@@ -46,6 +50,7 @@ class RunBookkeeping {
  private:
   const RunConstants& m_;
   bool stop_at_max_compression_;
+  bool e_only_;
   ImpactHistory& history_;
   SeparationRule rule_;
   double v_com_prev_;  ///< relative velocity at the last sample [m/s]

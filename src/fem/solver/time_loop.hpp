@@ -62,7 +62,7 @@ class TimeLoop {
       : control_(control),
         m_(m),
         s_(s),
-        book_(m, control.stop_at_max_compression, history),
+        book_(m, control.stop_at_max_compression, control.e_only, history),
         field_times_(config.output.field_times),
         fields_(std::move(fields)),
         every_(config.output.history_every),

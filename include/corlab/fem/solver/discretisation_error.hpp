@@ -37,7 +37,9 @@ ImpactConfig coarsened(const ImpactConfig& config, double ratio = kErrorRefineme
 /// companion at 2h) and e_error set. A companion that is not a valid config (elements beyond
 /// R / 20) or does not rebound cleanly is left out of the estimate; e_error is NaN when the run
 /// itself did not rebound, when no companion is left, or for a mesh.file (e_error_reason then
-/// says why). A cancel stops them all.
+/// says why). A cancel stops them all. The companions run for e only (SimulationControl::e_only:
+/// they end one short window after their last contact); while control.spare_threads is > 0 (a
+/// sweep's tail) one of those threads runs them alongside the run, with the same results.
 ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
                                           const SimulationControl& control = {});
 

@@ -6,7 +6,12 @@
 /// velocity is watched over windows of max(kWindowFractionOfContact x contact time, t_wave); the
 /// run ends when it changes by less than kSteadyTolerance over one window (the elastic sphere
 /// still rings, but its momentum no longer changes), and the rebound is clean only if the sphere
-/// then moves away from the substrate. Re-contact restarts the watch.
+/// then moves away from the substrate. Re-contact restarts the watch. A run that needs e only
+/// (SimulationControl::e_only: the error bar's companions) watches over shorter windows,
+/// kEOnlyWindowFraction of the contact time and at least kEOnlyWaveFraction of t_wave (one wave
+/// transit): after the last contact nothing acts on the sphere, so its c.o.m. velocity, and so
+/// e, is already final; the window only has to catch a re-contact (and the chatter of the first
+/// touch, which the floor spans).
 
 namespace corlab::fem {
 
@@ -18,6 +23,10 @@ class SeparationRule {
   /// x v_impact) [-]: relative, with a floor so that a rebound near zero speed still ends.
   static constexpr double kSteadyTolerance = 1e-4;
   static constexpr double kVelocityFloor = 1e-3;
+  /// Window as a fraction of the contact duration of a run that needs e only [-].
+  static constexpr double kEOnlyWindowFraction = 0.02;
+  /// Shortest window of a run that needs e only, as a fraction of t_wave [-].
+  static constexpr double kEOnlyWaveFraction = 0.25;
 
   enum class Decision {
     kContinue,   ///< keep stepping
@@ -25,8 +34,16 @@ class SeparationRule {
     kNoRebound,  ///< steady without contact but not moving away (passed through / stuck)
   };
 
-  /// t_wave [s]: shortest window (a few sphere wave transits); v_impact [m/s] > 0.
-  SeparationRule(double t_wave, double v_impact) : t_wave_(t_wave), v_impact_(v_impact) {}
+  /// t_wave [s]: shortest window (a few sphere wave transits); v_impact [m/s] > 0;
+  /// window_fraction [-]: the window's part of the contact duration.
+  SeparationRule(double t_wave, double v_impact, double window_fraction = kWindowFractionOfContact)
+      : t_wave_(t_wave), v_impact_(v_impact), window_fraction_(window_fraction) {}
+
+  /// The rule of a run that needs e only (SimulationControl::e_only): windows of
+  /// kEOnlyWindowFraction of the contact duration, at least kEOnlyWaveFraction x t_wave [s].
+  static SeparationRule e_only(double t_wave, double v_impact) {
+    return {kEOnlyWaveFraction * t_wave, v_impact, kEOnlyWindowFraction};
+  }
 
   /// Adds the sphere kinetic energy [J] over dt [s] to the window's time integral.
   void accumulate(double sphere_kinetic_energy, double dt) {
@@ -48,8 +65,7 @@ class SeparationRule {
     if (touched_ && !in_contact_ && !separated_) {
       separated_ = true;
       window_ = t_last_ - t_first_;
-      window_ = kWindowFractionOfContact * window_ > t_wave_ ? kWindowFractionOfContact * window_
-                                                             : t_wave_;
+      window_ = window_fraction_ * window_ > t_wave_ ? window_fraction_ * window_ : t_wave_;
       start_window(t, v_com);
     } else if (separated_ && t - window_start_ >= window_) {
       const double change = v_com > window_v_ref_ ? v_com - window_v_ref_ : window_v_ref_ - v_com;
@@ -80,6 +96,7 @@ class SeparationRule {
 
   double t_wave_;
   double v_impact_;
+  double window_fraction_;
   bool touched_ = false;
   bool in_contact_ = false;
   bool separated_ = false;

@@ -22,6 +22,15 @@ struct SimulationControl {
   /// Stop at maximum compression (the sphere's c.o.m. velocity turns from approach to rebound),
   /// with status kMaxCompression: yield-onset probes need only the loading half.
   bool stop_at_max_compression = false;
+  /// The caller needs e only (the error bar's companion runs): the run ends at the first short
+  /// window after the last contact (SeparationRule::e_only) instead of watching the sphere ring
+  /// for a few wave transits; e is the same unless the sphere touches again in between, the
+  /// energies and e_energy are then those of the shorter run.
+  bool e_only = false;
+  /// Threads of the caller's pool that have no work left (a sweep's tail), or null: a run with
+  /// companions (simulate_with_error_estimate) takes one while it is > 0 to run them alongside,
+  /// and gives it back when they are done.
+  std::atomic<int>* spare_threads = nullptr;
   /// Called at each requested field time (output.times) with the current mesh and fields (for
   /// VTU output): on_fields by the axisymmetric model, on_hex_fields by the 3-D one.
   std::function<void(double time, const FieldSnapshot&)> on_fields;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -44,9 +45,12 @@ TEST(DiscretisationError, EstimateOnACoarseRun) {
   ASSERT_EQ(r.status, RunStatus::kSeparated);
   EXPECT_TRUE(std::isfinite(r.e_coarse));
   EXPECT_NE(r.e_coarse, r.e);
-  // The companions at sqrt 2 h and 2h (2 sqrt 2 h = 2.26 mm is beyond R / 20 and left out).
-  const double e_sqrt2 = simulate(coarsened(c, std::sqrt(2.0))).e;
-  EXPECT_EQ(r.e_coarse, simulate(coarsened(c, 2.0)).e);
+  // The companions at sqrt 2 h and 2h (2 sqrt 2 h = 2.26 mm is beyond R / 20 and left out),
+  // run for e only.
+  SimulationControl e_only;
+  e_only.e_only = true;
+  const double e_sqrt2 = simulate(coarsened(c, std::sqrt(2.0)), e_only).e;
+  EXPECT_EQ(r.e_coarse, simulate(coarsened(c, 2.0), e_only).e);
   const std::array<double, 3> e{r.e, e_sqrt2, r.e_coarse};
   const std::array<double, 3> ratios{1.0, std::sqrt(2.0), 2.0};
   EXPECT_EQ(r.e_error, error_bar(kDefaultErrorBar, e, ratios));
@@ -62,6 +66,42 @@ TEST(DiscretisationError, EstimateOnACoarseRun) {
 
 namespace corlab::fem {
 namespace {
+
+TEST(DiscretisationError, ARunForEOnlyEndsSoonerWithTheSameE) {
+  ImpactConfig c;
+  c.mesh.h_min = 1.6e-3;  // the 0.8 mm run's 2h companion
+  c.mesh.contact_elements = 0.0;
+  SimulationControl e_only;
+  e_only.e_only = true;
+  const ImpactResult full = simulate(c);
+  const ImpactResult short_run = simulate(c, e_only);
+  ASSERT_EQ(full.status, RunStatus::kSeparated);
+  ASSERT_EQ(short_run.status, RunStatus::kSeparated);
+  // Nothing acts on the sphere after the last contact: e is final there (round-off apart).
+  EXPECT_NEAR(short_run.e, full.e, 1e-12 * full.e);
+  EXPECT_EQ(short_run.t_contact, full.t_contact);
+  EXPECT_LT(short_run.steps, full.steps);
+  EXPECT_LT(short_run.end_time, full.end_time);
+}
+
+TEST(DiscretisationError, ASpareThreadRunsTheCompanionsAlongsideWithTheSameResult) {
+  ImpactConfig c;
+  c.mesh.h_min = 0.8e-3;
+  c.mesh.contact_elements = 0.0;
+  const ImpactResult alone = simulate_with_error_estimate(c);
+  std::atomic<int> spare{1};
+  SimulationControl control;
+  control.spare_threads = &spare;
+  const ImpactResult shared = simulate_with_error_estimate(c, control);
+  EXPECT_EQ(shared.e, alone.e);
+  EXPECT_EQ(shared.e_coarse, alone.e_coarse);
+  EXPECT_EQ(shared.e_error, alone.e_error);
+  EXPECT_EQ(spare.load(), 1);  // given back
+  std::atomic<int> none{0};
+  control.spare_threads = &none;
+  EXPECT_EQ(simulate_with_error_estimate(c, control).e_error, alone.e_error);
+  EXPECT_EQ(none.load(), 0);
+}
 
 TEST(DiscretisationError, NoValidCompanionMeansNoErrorBar) {
   ImpactConfig c;

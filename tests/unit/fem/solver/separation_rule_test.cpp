@@ -38,6 +38,23 @@ TEST(SeparationRule, SteadyReboundEndsAfterOneWindow) {
   EXPECT_NEAR(rule.mean_sphere_kinetic_energy(), 0.5 * 2.5 * 2.5, 1e-12);
 }
 
+TEST(SeparationRule, ARunForEOnlyWatchesAShorterWindow) {
+  // window = max(0.02 x 10 us, 0.25 x 1 us) = 0.25 us: 3 steps.
+  SeparationRule rule = SeparationRule::e_only(kWave, kV0);
+  double t = 0.0;
+  EXPECT_EQ(run(rule, t, 100, true, -1.0), Decision::kContinue);
+  const double t_sep = t;
+  EXPECT_EQ(run(rule, t, 1000, false, 2.5), Decision::kRebound);
+  EXPECT_NEAR(t - t_sep, 4 * kDt, 1e-12);  // separation step + a 3-step window
+  // The chatter of a first touch (one step in contact) is spanned by the floor.
+  SeparationRule touch = SeparationRule::e_only(kWave, kV0);
+  t = 0.0;
+  run(touch, t, 1, true, -kV0);
+  run(touch, t, 2, false, -kV0);
+  EXPECT_EQ(run(touch, t, 100, true, -4.0), Decision::kContinue);
+  EXPECT_FALSE(touch.separated());
+}
+
 TEST(SeparationRule, ChangingVelocityKeepsWatching) {
   SeparationRule rule(kWave, kV0);
   double t = 0.0;
