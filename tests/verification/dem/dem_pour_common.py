@@ -136,6 +136,17 @@ THERMO = ("thermo_style custom step atoms c_ke c_vmax c_xyz[1] c_xy[1] c_xyz[2] 
           "c_xyz[3]")
 
 
+def monitor_and_run(every, n):
+    """The LAMMPS/LIGGGHTS lines that print COLUMNS and dump the contacts every `every` steps,
+    then run `n` steps."""
+    return ["compute ke all ke", "variable speed atom sqrt(vx*vx+vy*vy+vz*vz)",
+            "compute vmax all reduce max v_speed", "compute xyz all reduce min x y z",
+            "compute xy all reduce max x y", "compute cn all contact/atom",
+            THERMO, "thermo_modify lost ignore norm no", "thermo %d" % every,
+            "dump d all custom %d dump.pour id type x vx z c_cn" % every,
+            "dump_modify d sort id", "run %d" % n]
+
+
 def thermo_rows(out):
     rows, on = [], False
     for line in out.splitlines():

@@ -16,7 +16,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from dem_check_common import run  # noqa: E402
 from dem_pour_common import (  # noqa: E402
-    G, PER_TYPE, THERMO, VX, W, check, dump_samples, insertion_box, pour_export, steps,
+    G, PER_TYPE, VX, W, check, dump_samples, insertion_box, monitor_and_run, pour_export, steps,
     thermo_rows, work_file)
 
 
@@ -33,12 +33,7 @@ def pour_input(fragment, data):
                   "dens %.9g %.9g vel %g %g 0 0 0"
                   % (k + 1, k + 1, PER_TYPE, k + 1, 1234 + k, k + 1, 2 * t["radius_m"],
                      t["density_kg_per_m3"], t["density_kg_per_m3"], VX, VX)]
-    lines += ["compute ke all ke", "variable speed atom sqrt(vx*vx+vy*vy+vz*vz)",
-              "compute vmax all reduce max v_speed", "compute xyz all reduce min x y z",
-              "compute xy all reduce max x y", "compute cn all contact/atom",
-              THERMO, "thermo_modify lost ignore norm no", "thermo %d" % every,
-              "dump d all custom %d dump.pour id type x vx z c_cn" % every,
-              "dump_modify d sort id", "run %d" % n]
+    lines += monitor_and_run(every, n)
     return "\n".join(lines) + "\n", dt
 
 
