@@ -49,6 +49,35 @@ bool default_block_keys(const ImpactConfig& config) {
          config.substrate.depth == d.depth && config.substrate.boundary == d.boundary;
 }
 
+// No default mesh: the InputError naming the keys that give one (a [m] the predicted contact
+// radius, h_finest [m] the limit's smallest h, size [m] the largest body).
+[[noreturn]] void refuse_default(const ImpactConfig& config,
+                                 double a,
+                                 double h_finest,
+                                 double size) {
+  const double n = std::floor(10.0 * a / h_finest) / 10.0;
+  // Where the sphere itself is the largest body, a smaller block does not help.
+  const double block_fit = kMaxSizeOverElement * a / kMinDefaultContactElements;
+  const bool block_helps = config.sphere.radius <= block_fit;
+  std::string keys;
+  if (n >= 1.0)
+    keys = fmt::format(
+        "set mesh.contact_elements = {:g} (coarser than the default's {:g}: check "
+        "it with --error-estimate)",
+        n, kMinDefaultContactElements);
+  if (block_helps)
+    keys += fmt::format("{}substrate.radius and substrate.depth <= {:.3g} m",
+                        keys.empty() ? "set " : ", or ", block_fit);
+  if (keys.empty())
+    keys = fmt::format("set mesh.h_min >= {:.3g} m and mesh.contact_elements = 0", h_finest);
+  throw InputError(fmt::format(
+      "invalid mesh.contact_elements = default: no default 3-D mesh for this case: the predicted "
+      "contact radius a = {:.3g} m needs h <= a / {:g} = {:.3g} m, finer than the limit h >= "
+      "{:.3g} m / {:g} = {:.3g} m (the largest body); {}",
+      a, kMinDefaultContactElements, a / kMinDefaultContactElements, size, kMaxSizeOverElement,
+      h_finest, keys));
+}
+
 }  // namespace
 
 double contact_travel(const ImpactConfig& config) {
@@ -126,28 +155,7 @@ HexResolution hex_resolution(const ImpactConfig& config) {
         r.h_contact, a / r.h_contact, a, kMaxSizeOverElement, size, basis);
     return r;
   }
-  // No default mesh: name the keys that give one.
-  const double n = std::floor(10.0 * a / h_finest) / 10.0;
-  // Where the sphere itself is the largest body, a smaller block does not help.
-  const double block_fit = kMaxSizeOverElement * a / kMinDefaultContactElements;
-  const bool block_helps = config.sphere.radius <= block_fit;
-  std::string keys;
-  if (n >= 1.0)
-    keys = fmt::format(
-        "set mesh.contact_elements = {:g} (coarser than the default's {:g}: check "
-        "it with --error-estimate)",
-        n, kMinDefaultContactElements);
-  if (block_helps)
-    keys += fmt::format("{}substrate.radius and substrate.depth <= {:.3g} m",
-                        keys.empty() ? "set " : ", or ", block_fit);
-  if (keys.empty())
-    keys = fmt::format("set mesh.h_min >= {:.3g} m and mesh.contact_elements = 0", h_finest);
-  throw InputError(fmt::format(
-      "invalid mesh.contact_elements = default: no default 3-D mesh for this case: the predicted "
-      "contact radius a = {:.3g} m needs h <= a / {:g} = {:.3g} m, finer than the limit h >= "
-      "{:.3g} m / {:g} = {:.3g} m (the largest body); {}",
-      a, kMinDefaultContactElements, a / kMinDefaultContactElements, size, kMaxSizeOverElement,
-      h_finest, keys));
+  refuse_default(config, a, h_finest, size);
 }
 
 ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config) {
