@@ -120,7 +120,7 @@ HexResolution hex_resolution(const ImpactConfig& config) {
     r.reason = fmt::format(
         "model default: h = {:.3g} m, {:.3g} elements across the predicted contact radius a = "
         "{:.3g} m, on a block {:.3g} m wide and deep with the viscous_spring far boundary "
-        "({:g} c_p t_c, at most 70 mm and 2000 h: a half-space to 0.003 in e_n and e_t, "
+        "({:g} c_p t_c, at most 70 mm and 2000 h: e_n within 0.003 of the half-space's, "
         "docs/theory/solver3d.md; neither substrate size key nor substrate.boundary set); {}",
         r.h_contact, a / r.h_contact, a, r.block_size, kDefaultBlockWaveFraction, basis);
     return r;
