@@ -24,6 +24,10 @@ contact_elements() {
 
 n=$(contact_elements "${kharaz[@]}")
 [ "$n" = "4.00" ] || fail "plain Kharaz command: a/h = $n, expected the default 4"
+# The default block (issue 39): 0.14 c_p t_c = 11 mm with the viscous-spring boundary, 97,153
+# elements where the 70 mm block had 224,098.
+total=$(awk '/^total/ { print $3 }' "$work/mesh.out")
+[ "$total" -lt 100000 ] || fail "plain Kharaz command: $total elements, expected the default block's < 100000"
 n=$(contact_elements "${kharaz[@]}" --set mesh.contact_elements=3)
 [ "$n" = "3.00" ] || fail "mesh.contact_elements = 3: a/h = $n, expected 3"
 

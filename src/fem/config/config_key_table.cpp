@@ -220,8 +220,16 @@ std::vector<KeyEntry> build_table() {
       +[](ImpactConfig& c) { return &c.substrate.radius; }));
   t.push_back(entry(
       "substrate.depth", "[m]", closed(1e-6, 10.0),
-      "depth, bottom face fixed (also >= 2 predicted contact radii)",
+      "depth, bottom face fixed unless substrate.boundary absorbs (also >= 2 predicted contact "
+      "radii)",
       +[](ImpactConfig& c) { return &c.substrate.depth; }));
+  t.push_back(entry(
+      "substrate.boundary", "", std::nullopt,
+      "the flat's far faces: fixed (base held, sides free; waves reflect) | absorbing "
+      "(Lysmer-Kuhlemeyer dashpots rho c_p, rho c_s on the sides and base) | viscous_spring "
+      "(the dashpots and springs alpha G / distance: a small block stands for the half-space); "
+      "substrate.shape = flat only; the 3-D model's default block takes viscous_spring",
+      +[](ImpactConfig& c) { return &c.substrate.boundary; }));
   add_material_keys<false>(t, {"substrate.material", "substrate.E", "substrate.nu", "substrate.rho",
                                "substrate.sigma_y", "substrate.hardening"});
   add_geometry_and_mesh_keys(t);

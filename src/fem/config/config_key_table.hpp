@@ -25,12 +25,13 @@ using Accessor = std::variant<double* (*)(ImpactConfig&),
                               std::filesystem::path* (*)(ImpactConfig&),
                               SubstrateShape* (*)(ImpactConfig&),
                               SolverModel* (*)(ImpactConfig&),
-                              PlaneAngle* (*)(ImpactConfig&)>;
+                              PlaneAngle* (*)(ImpactConfig&),
+                              SubstrateBoundary* (*)(ImpactConfig&)>;
 
 inline constexpr KeyKind kKindOf[] = {
     KeyKind::number,      KeyKind::integer,  KeyKind::integer, KeyKind::yield_stress,
     KeyKind::number_list, KeyKind::material, KeyKind::path,    KeyKind::choice,
-    KeyKind::choice,      KeyKind::number};
+    KeyKind::choice,      KeyKind::number,   KeyKind::choice};
 
 struct KeyEntry {
   ConfigKeyInfo info;

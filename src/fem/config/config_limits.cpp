@@ -337,7 +337,19 @@ double estimate_elements(const ImpactConfig& c) {
   return n;
 }
 
+// Absorbing far faces exist only on the flat substrate (the rigid flat has no body, the second
+// sphere no far face).
+void check_boundary(const ImpactConfig& c) {
+  if (c.substrate.boundary != SubstrateBoundary::kFixed &&
+      c.substrate.shape != SubstrateShape::kFlat)
+    throw_invalid("substrate.boundary", to_string(c.substrate.boundary),
+                  fmt::format("fixed with substrate.shape = {} (absorbing far faces need the flat "
+                              "substrate)",
+                              to_string(c.substrate.shape)));
+}
+
 void validate_limits(const ImpactConfig& config) {
+  check_boundary(config);
   check_plastic_body(config.sphere.material, "sphere");
   if (!rigid_target(config)) check_plastic_body(config.substrate.material, "substrate");
   check_sizes(config);

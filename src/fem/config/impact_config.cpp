@@ -65,6 +65,18 @@ std::string_view to_string(SubstrateShape shape) {
   return "flat";
 }
 
+std::string_view to_string(SubstrateBoundary boundary) {
+  switch (boundary) {
+    case SubstrateBoundary::kAbsorbing:
+      return "absorbing";
+    case SubstrateBoundary::kViscousSpring:
+      return "viscous_spring";
+    case SubstrateBoundary::kFixed:
+      break;
+  }
+  return "fixed";
+}
+
 std::string_view to_string(SolverModel model) {
   return model == SolverModel::kThreeD ? "3d" : "axisymmetric";
 }

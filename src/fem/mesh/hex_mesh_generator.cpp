@@ -188,8 +188,7 @@ HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   const bool chosen = resolution.block_size > 0.0;
   o.block_half_width = chosen ? resolution.block_size : config.substrate.radius;
   o.block_depth = chosen ? resolution.block_size : config.substrate.depth;
-  const double v_t = config.impact.velocity * std::sin(config.impact.angle.radians);
-  o.travel = v_t * 1.5 * hertz_reference(normal).contact_time;
+  o.travel = contact_travel(config);
   return o;
 }
 

@@ -28,7 +28,64 @@ double largest_size(const ImpactConfig& config) {
   return size;
 }
 
+// The model's default block [m] (HexResolution::block_size) for the element size h [m]: the
+// wave-travel rule, at most the default size and 2000 h, at least twice the fine zone (the
+// generator's own bound: hex_mesh_generator.hpp).
+double default_block(const ImpactConfig& config, double a, double h) {
+  ImpactConfig normal = config;
+  normal.impact.velocity = normal_velocity(config);
+  const double wave = kDefaultBlockWaveFraction *
+                      config.substrate.material.dilatational_wave_speed() *
+                      hertz_reference(normal).contact_time;
+  const double zone = std::max(2.0 * (config.mesh.refine_factor * a + contact_travel(config)),
+                               2.0 * std::max(config.mesh.refine_depth * a, 2.0 * h));
+  return std::max(std::min({wave, SubstrateConfig{}.radius, kMaxSizeOverElement * h}), zone);
+}
+
+// Whether the block is the model's to choose: the flat with neither size key nor the boundary set.
+bool default_block_keys(const ImpactConfig& config) {
+  const SubstrateConfig d;
+  return config.substrate.shape == SubstrateShape::kFlat && config.substrate.radius == d.radius &&
+         config.substrate.depth == d.depth && config.substrate.boundary == d.boundary;
+}
+
+// No default mesh: the InputError naming the keys that give one (a [m] the predicted contact
+// radius, h_finest [m] the limit's smallest h, size [m] the largest body).
+[[noreturn]] void refuse_default(const ImpactConfig& config,
+                                 double a,
+                                 double h_finest,
+                                 double size) {
+  const double n = std::floor(10.0 * a / h_finest) / 10.0;
+  // Where the sphere itself is the largest body, a smaller block does not help.
+  const double block_fit = kMaxSizeOverElement * a / kMinDefaultContactElements;
+  const bool block_helps = config.sphere.radius <= block_fit;
+  std::string keys;
+  if (n >= 1.0)
+    keys = fmt::format(
+        "set mesh.contact_elements = {:g} (coarser than the default's {:g}: check "
+        "it with --error-estimate)",
+        n, kMinDefaultContactElements);
+  if (block_helps)
+    keys += fmt::format("{}substrate.radius and substrate.depth <= {:.3g} m",
+                        keys.empty() ? "set " : ", or ", block_fit);
+  if (keys.empty())
+    keys = fmt::format("set mesh.h_min >= {:.3g} m and mesh.contact_elements = 0", h_finest);
+  throw InputError(fmt::format(
+      "invalid mesh.contact_elements = default: no default 3-D mesh for this case: the predicted "
+      "contact radius a = {:.3g} m needs h <= a / {:g} = {:.3g} m, finer than the limit h >= "
+      "{:.3g} m / {:g} = {:.3g} m (the largest body); {}",
+      a, kMinDefaultContactElements, a / kMinDefaultContactElements, size, kMaxSizeOverElement,
+      h_finest, keys));
+}
+
 }  // namespace
+
+double contact_travel(const ImpactConfig& config) {
+  ImpactConfig normal = config;
+  normal.impact.velocity = normal_velocity(config);
+  const double v_t = config.impact.velocity * std::sin(config.impact.angle.radians);
+  return v_t * 1.5 * hertz_reference(normal).contact_time;
+}
 
 bool uses_default_3d_resolution(const ImpactConfig& config) {
   const MeshConfig d;
@@ -39,6 +96,7 @@ bool uses_default_3d_resolution(const ImpactConfig& config) {
 HexResolution hex_resolution(const ImpactConfig& config) {
   const double a = normal_contact_radius(config);
   HexResolution r;
+  r.boundary = config.substrate.boundary;
   if (!uses_default_3d_resolution(config)) {
     r.h_contact = config.mesh.h_min;
     if (config.mesh.contact_elements > 0.0)
@@ -55,6 +113,18 @@ HexResolution hex_resolution(const ImpactConfig& config) {
   const std::string basis =
       "a/4: Kharaz's e_t within 0.002 of a/6 (9.5 deg), inside its error bar "
       "(docs/theory/solver3d.md)";
+  if (default_block_keys(config) && config.sphere.radius <= kMaxSizeOverElement * h_default) {
+    r.h_contact = h_default;
+    r.block_size = default_block(config, a, h_default);
+    r.boundary = SubstrateBoundary::kViscousSpring;
+    r.reason = fmt::format(
+        "model default: h = {:.3g} m, {:.3g} elements across the predicted contact radius a = "
+        "{:.3g} m, on a block {:.3g} m wide and deep with the viscous_spring far boundary "
+        "({:g} c_p t_c, at most 70 mm and 2000 h: e_n within 0.003 of the half-space's, "
+        "docs/theory/solver3d.md; neither substrate size key nor substrate.boundary set); {}",
+        r.h_contact, a / r.h_contact, a, r.block_size, kDefaultBlockWaveFraction, basis);
+    return r;
+  }
   if (h_default >= h_finest) {
     r.h_contact = h_default;
     r.reason = fmt::format(
@@ -85,28 +155,7 @@ HexResolution hex_resolution(const ImpactConfig& config) {
         r.h_contact, a / r.h_contact, a, kMaxSizeOverElement, size, basis);
     return r;
   }
-  // No default mesh: name the keys that give one.
-  const double n = std::floor(10.0 * a / h_finest) / 10.0;
-  // Where the sphere itself is the largest body, a smaller block does not help.
-  const double block_fit = kMaxSizeOverElement * a / kMinDefaultContactElements;
-  const bool block_helps = config.sphere.radius <= block_fit;
-  std::string keys;
-  if (n >= 1.0)
-    keys = fmt::format(
-        "set mesh.contact_elements = {:g} (coarser than the default's {:g}: check "
-        "it with --error-estimate)",
-        n, kMinDefaultContactElements);
-  if (block_helps)
-    keys += fmt::format("{}substrate.radius and substrate.depth <= {:.3g} m",
-                        keys.empty() ? "set " : ", or ", block_fit);
-  if (keys.empty())
-    keys = fmt::format("set mesh.h_min >= {:.3g} m and mesh.contact_elements = 0", h_finest);
-  throw InputError(fmt::format(
-      "invalid mesh.contact_elements = default: no default 3-D mesh for this case: the predicted "
-      "contact radius a = {:.3g} m needs h <= a / {:g} = {:.3g} m, finer than the limit h >= "
-      "{:.3g} m / {:g} = {:.3g} m (the largest body); {}",
-      a, kMinDefaultContactElements, a / kMinDefaultContactElements, size, kMaxSizeOverElement,
-      h_finest, keys));
+  refuse_default(config, a, h_finest, size);
 }
 
 ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config) {
@@ -117,6 +166,7 @@ ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config) {
   c.mesh.contact_elements = 0.0;
   c.mesh.h_max = std::max(c.mesh.h_max, c.mesh.h_min);
   if (r.block_size > 0.0) c.substrate.radius = c.substrate.depth = r.block_size;
+  c.substrate.boundary = r.boundary;
   return c;
 }
 

@@ -147,7 +147,9 @@ HexModel make_model(const ImpactConfig& config) {
   m.free_y.assign(nn, 1.0);
   m.free_z.assign(nn, 1.0);
   for (const int n : m.mesh.symmetry_nodes) m.free_y[static_cast<std::size_t>(n)] = 0.0;
+  m.dashpots = solver::hex_dashpots(config, m.mesh);
   for (const int n : m.mesh.base_nodes) {
+    if (!m.dashpots.empty()) break;  // absorbing: the dashpots hold the base instead
     const auto i = static_cast<std::size_t>(n);
     m.free_x[i] = m.free_y[i] = m.free_z[i] = 0.0;
   }

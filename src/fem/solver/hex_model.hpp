@@ -30,6 +30,7 @@
 #include "corlab/fem/solver/run_cost.hpp"
 #include "corlab/fem/solver/simd_level.hpp"
 #include "corlab/fem/solver/simulate.hpp"
+#include "fem/solver/dashpots.hpp"
 #include "fem/solver/element_loop.hpp"
 #include "fem/solver/impact_step.hpp"
 #include "fem/solver/run_state.hpp"
@@ -62,6 +63,7 @@ struct HexModel : solver::RunConstants {
   std::array<BodyMaterial, 2> bodies;      // indexed by Body: sphere, substrate
   Vec mass, inv_mass;                      // lumped [kg], [1/kg]
   Vec free_x, free_y, free_z;              // 0 where the dof is held (symmetry plane, base) [-]
+  solver::Dashpots<3> dashpots;            // the absorbing far boundary (else none; base free)
   Vec penalty;                             // per slave [N/m]
   std::vector<int> top_nodes;              // the block's top nodes, each once (none: rigid)
   std::size_t sphere_nodes = 0;            // nodes [0, n) are the sphere's

@@ -8,6 +8,31 @@
 #include "fem/solver/hex_model.hpp"
 
 namespace corlab::fem::hex_solver {
+namespace {
+
+// The absorbing far boundary's forces at v^{n+1/2} into the nodal forces, its work over the step
+// into the state (dashpots.hpp).
+void apply_far_boundary(const HexModel& m, HexState& s) {
+  const auto v = [&s](int n, std::size_t a) {
+    const NodeKinematics& k = s.node[static_cast<std::size_t>(n)];
+    return a == 0 ? k.vx : (a == 1 ? k.vy : k.vz);
+  };
+  const auto f = [&s](int n, std::size_t a) -> double& {
+    NodeForce& g = s.nodal_force[static_cast<std::size_t>(n)];
+    return a == 0 ? g.x : (a == 1 ? g.y : g.z);
+  };
+  const auto u = [&m, &s](int n, std::size_t a) {
+    const auto i = static_cast<std::size_t>(n);
+    const NodeKinematics& k = s.node[i];
+    return a == 0 ? k.x - m.mesh.x[i] : (a == 1 ? k.y - m.mesh.y[i] : k.z - m.mesh.z[i]);
+  };
+  const solver::BoundaryWork w = solver::apply_dashpots(
+      m.dashpots, s.dt, [](int) { return 1.0; }, v, u, f);
+  s.energy.absorbed += w.absorbed;
+  s.energy.boundary = w.stored;
+}
+
+}  // namespace
 
 solver::NodeSums move_nodes(const HexModel& m, HexState& s) {
   const double dt = s.dt;
@@ -45,6 +70,7 @@ solver::ForceReport compute_forces(const HexModel& m, HexState& s) {
   rep.elements = hex_element_pass(m.simd, m, s, s.dt);
   rep.inverted_element = rep.elements.bad_element;
   solver::add_element_work(rep.elements, s);
+  if (!m.dashpots.empty()) apply_far_boundary(m, s);
   s.element_updates += static_cast<long long>(m.mesh.hexes.size());
   rep.penetrating = contact_forces(m, s, s.dt);
   s.force_max = std::max(s.force_max, s.force);

@@ -94,10 +94,21 @@ void set_nodes(const ImpactConfig& config, const Mesh& mesh, ImpactModel& m) {
     }
   }
   for (int i : mesh.axis_nodes) m.free_r[i] = 0.0;
+  if (absorbing_boundary(config)) return;  // the dashpots hold the base instead
   for (int i : mesh.base_nodes) {
     m.free_r[i] = 0.0;
     m.free_z[i] = 0.0;
   }
+}
+
+/// The absorbing far boundary's dashpots, each at its element's impedance (mass scaling raises
+/// an element's rho c by its step scale).
+void set_dashpots(const ImpactConfig& config, const Mesh& mesh, ImpactModel& m) {
+  if (!absorbing_boundary(config)) return;
+  std::vector<double> scale(static_cast<std::size_t>(m.n_elements), 1.0);
+  for (int e = 0; e < m.n_elements; ++e)
+    scale[static_cast<std::size_t>(m.elements.mesh_index[e])] = m.elements.step_scale[e];
+  m.dashpots = axisymmetric_dashpots(config, mesh, scale);
 }
 
 /// Elements sorted by body (sphere first), so that each body's loop runs over one range.
@@ -393,6 +404,7 @@ ImpactModel make_impact_model(const ImpactConfig& config, const Mesh& mesh) {
   m.slaves = mesh.sphere_surface_nodes;
   m.masters = mesh.substrate_surface_nodes;
   set_masses(config, m);
+  set_dashpots(config, mesh, m);
   set_penalties(config.solver, m);
   set_levels(config.solver, m);
   set_time_scales(config, m);

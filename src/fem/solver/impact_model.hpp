@@ -13,6 +13,7 @@
 #include "corlab/fem/config/impact_config.hpp"
 #include "corlab/fem/kernels/axisym_quad4.hpp"
 #include "corlab/fem/mesh/mesh.hpp"
+#include "fem/solver/dashpots.hpp"
 #include "fem/solver/element_loop.hpp"
 #include "fem/solver/run_state.hpp"
 
@@ -90,6 +91,9 @@ struct ImpactModel : RunConstants {
   double dt_critical = 0.0;         ///< smallest element stable step at the start [s]
   SubcyclingLevels levels;          ///< all 0 unless solver.subcycling_levels > 0
   MassScaling scaling;              ///< factor 1 and no floor unless solver.mass_scaling_max > 1
+  /// The absorbing far boundary's dashpots (none unless substrate.boundary = absorbing; the base
+  /// is then free).
+  Dashpots<2> dashpots;
 
   /// The parameters of the body element e (sorted index) belongs to.
   const BodyParams& body_of(int e) const { return e < n_sphere_elements ? sphere : substrate; }

@@ -132,6 +132,31 @@ void set_target_motion(const ImpactModel& m, ImpactState& s) {
   s.target_com_z = target_first_moment(m, s) / m.target_mass;
 }
 
+/// The absorbing far boundary's forces at the latest velocities into fr/fz, its work over the
+/// step into the state; subcycled (`top` >= 0), only the nodes due at the next kick (level <=
+/// top), each with its own step's impulse (weight 2^L).
+void apply_far_boundary(const ImpactModel& m, ImpactState& s, int top) {
+  if (m.dashpots.empty()) return;
+  const auto weight = [&](int n) {
+    if (top < 0) return 1.0;
+    const int level = m.levels.node[static_cast<std::size_t>(n)];
+    return level <= top ? m.levels.node_scale[static_cast<std::size_t>(n)] : 0.0;
+  };
+  const auto v = [&s](int n, std::size_t a) -> double {
+    return a == 0 ? s.vr[static_cast<std::size_t>(n)] : s.vz[static_cast<std::size_t>(n)];
+  };
+  const auto f = [&s](int n, std::size_t a) -> double& {
+    return a == 0 ? s.fr[static_cast<std::size_t>(n)] : s.fz[static_cast<std::size_t>(n)];
+  };
+  const auto u = [&m, &s](int n, std::size_t a) -> double {
+    const auto i = static_cast<std::size_t>(n);
+    return a == 0 ? s.r[i] - m.r0[i] : s.z[i] - m.z0[i];
+  };
+  const BoundaryWork w = apply_dashpots(m.dashpots, s.dt, weight, v, u, f);
+  s.energy.absorbed += w.absorbed;
+  s.energy.boundary = w.stored;
+}
+
 }  // namespace
 
 NodalArrays nodal_arrays(const ImpactModel& m, ImpactState& s) {
@@ -216,6 +241,7 @@ ForceReport compute_forces_subcycled(const ImpactModel& m, ImpactState& s) {
   const int top = sync_level(s.step + 1, m.levels.max_level);
   rep.elements = subcycled_elements(m, s, top);
   record_element_sums(m, s, rep);
+  apply_far_boundary(m, s, top);
   rep.penetrating = apply_contact(m, s);
   if (rep.penetrating && !s.cycle_penetrating) s.t_first_penetrating = s.t;
   s.cycle_penetrating = s.cycle_penetrating || rep.penetrating;
@@ -246,6 +272,7 @@ ForceReport compute_forces(const ImpactModel& m, ImpactState& s) {
                sums);
   s.element_updates += m.n_elements;
   record_element_sums(m, s, rep);
+  apply_far_boundary(m, s, -1);
   rep.penetrating = apply_contact(m, s);
   sample_hysteresis(m, s);
   advance_time(s);

@@ -192,6 +192,11 @@ const std::array kFields{
     CORLAB_RESULT_MEMBER(omega, "rad/s", "rebound spin about the symmetry plane's normal", kBoth),
     CORLAB_RESULT_MEMBER(rebound_angle, "deg", "rebound angle from the normal", kBoth),
     CORLAB_RESULT_MEMBER(energy_friction, "J", "frictional dissipation (3-D model)", kBoth),
+    CORLAB_RESULT_MEMBER(energy_absorbed,
+                         "J",
+                         "energy the absorbing far boundary took out (substrate.boundary = "
+                         "absorbing): elastic waves radiated into the half-space",
+                         kBoth),
     CORLAB_RESULT_MEMBER(
         e_t_error, "-", "discretisation-error bar of e_t (as e_error, same companions)", kBoth),
     CORLAB_RESULT_MEMBER(

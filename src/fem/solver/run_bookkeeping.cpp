@@ -42,7 +42,8 @@ std::optional<RunStatus> RunBookkeeping::sample(const RunState& s, double kineti
   const double v_mean = 0.5 * (relative_velocity(s) + v_com_prev_);
   v_com_prev_ = relative_velocity(s);
   const EnergySums& w = s.energy;
-  const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact + w.friction;
+  const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact + w.friction +
+                       w.absorbed + w.boundary;
   const double balance = (total - energy_reference_) / m_.energy_initial;
   if (!std::isfinite(balance)) {
     balance_max_ = std::numeric_limits<double>::quiet_NaN();

@@ -29,6 +29,8 @@ struct EnergySums {
   double viscous = 0.0;    ///< bulk-viscosity dissipation
   double contact = 0.0;    ///< penalty energy stored now (normal and tangential springs)
   double friction = 0.0;   ///< frictional dissipation (0 without friction)
+  double absorbed = 0.0;   ///< work taken out by the absorbing far boundary (dashpots.hpp)
+  double boundary = 0.0;   ///< energy stored now in the viscous-spring boundary's springs
 };
 
 /// The trapezoidal integral of F d(delta) over the sampled (force, indentation) pairs: the

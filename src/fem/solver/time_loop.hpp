@@ -268,6 +268,7 @@ void finish_run(const Model& m,
   res.energy_hourglass = x * s.energy.hourglass;
   res.energy_viscous = x * s.energy.viscous;
   res.energy_friction = x * s.energy.friction;
+  res.energy_absorbed = x * s.energy.absorbed;
   res.energy_balance_error = loop.bookkeeping().balance_max();
   res.hysteresis_area = x * s.hysteresis.area;
   res.F_max = x * s.force_max;

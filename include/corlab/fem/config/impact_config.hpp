@@ -41,10 +41,23 @@ enum class SubstrateShape : std::uint8_t {
 /// "flat", "rigid" or "sphere".
 std::string_view to_string(SubstrateShape shape);
 
+/// The flat substrate's far faces (its sides and base; docs/theory/solver.md, "Far boundary").
+enum class SubstrateBoundary : std::uint8_t {
+  kFixed,      ///< the base held, the sides free (Ma et al. 2023): waves reflect
+  kAbsorbing,  ///< Lysmer-Kuhlemeyer dashpots on the sides and base (absorbing_boundary.hpp)
+  /// The dashpots and, beside each, the viscous-spring boundary's spring (absorbing_boundary.hpp)
+  kViscousSpring,
+};
+
+/// "fixed", "absorbing" or "viscous_spring".
+std::string_view to_string(SubstrateBoundary boundary);
+
 struct SubstrateConfig {
   SubstrateShape shape = SubstrateShape::kFlat;
+  /// The far faces of the flat (substrate.shape = flat only).
+  SubstrateBoundary boundary = SubstrateBoundary::kFixed;
   double radius = 70e-3;  ///< radial extent [m] (paper: L = 2R); the radius R2 of a sphere
-  double depth = 70e-3;   ///< depth [m]; the bottom face is fixed
+  double depth = 70e-3;   ///< depth [m]; the bottom face is fixed unless `boundary` absorbs
   Material material{.name = "steel_ma2023",
                     .youngs_modulus = 210e9,
                     .poisson_ratio = 0.3,

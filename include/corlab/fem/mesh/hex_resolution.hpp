@@ -21,16 +21,24 @@ inline constexpr double kMinDefaultContactElements = 3.0;
 /// Largest (sphere radius, substrate half-width or depth) / h of a 3-D mesh [-]
 /// (hex_mesh_generator.hpp's limit).
 inline constexpr double kMaxSizeOverElement = 2000.0;
+/// The model's default block (neither substrate size key nor substrate.boundary set): half-width
+/// and depth this fraction of the wave's travel c_p t_c during the contact (c_p the block's,
+/// t_c Hertz's at the normal speed), with the viscous-spring far boundary [-]. Measured with
+/// Kharaz's pair (docs/theory/solver3d.md, "Default block"): at 0.14 c_p t_c (10 mm) e_n is
+/// 0.0025 below the half-space's, and e_t at 9.5 deg within 0.0011 of a fixed 20 mm block's.
+inline constexpr double kDefaultBlockWaveFraction = 0.14;
 
 /// How the element size at the contact was chosen.
 struct HexResolution {
   double h_contact = 0.0;     ///< element size at the contact [m]
   bool model_choice = false;  ///< true: the model's default (no resolution key set)
   std::string reason;         ///< one line: the rule, a/h and its measured basis
-  /// The flat's half-width and depth the model chose [m] (0: substrate.radius and .depth): where
-  /// a/4 is finer than the default 70 mm block allows and neither size key is set, the block is
-  /// 2000 h (500 a: a half-space by the measurement in docs/theory/solver3d.md).
+  /// The flat's half-width and depth the model chose [m] (0: substrate.radius and .depth): with
+  /// the resolution, neither size key nor substrate.boundary set, kDefaultBlockWaveFraction c_p
+  /// t_c, at most the default 70 mm and 2000 h.
   double block_size = 0.0;
+  /// The far boundary the run uses: the config's, or viscous_spring with the model's block.
+  SubstrateBoundary boundary = SubstrateBoundary::kFixed;
 };
 
 /// Whether the 3-D model chooses the resolution: solver.model = 3d with mesh.h_min and
@@ -42,9 +50,13 @@ bool uses_default_3d_resolution(const ImpactConfig& config);
 /// a / 3). Throws InputError naming the key and value to set where no default mesh is feasible.
 HexResolution hex_resolution(const ImpactConfig& config);
 
+/// The sphere's tangential travel over the contact [m]: v sin(angle) x 1.5 Hertz contact times
+/// at the normal speed (the length the 3-D block's fine zone is extended by along +x).
+double contact_travel(const ImpactConfig& config);
+
 /// `config` with the resolution written into the keys (mesh.h_min = h, mesh.contact_elements =
-/// 0), so that a coarsened companion (discretisation_error.hpp) scales the chosen size; `config`
-/// itself where a key is set.
+/// 0; the model's block size and boundary), so that a coarsened companion
+/// (discretisation_error.hpp) scales the chosen size; `config` itself where a key is set.
 ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config);
 
 }  // namespace corlab::fem

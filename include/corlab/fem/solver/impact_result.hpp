@@ -66,6 +66,9 @@ struct ImpactResult {
   double omega = 0.0;
   double rebound_angle = 0.0;    ///< atan(v_x' / v_z') [deg from the normal] (normal impact: 0)
   double energy_friction = 0.0;  ///< frictional dissipation [J] (3-D model with friction)
+  /// Energy the absorbing far boundary took out of the substrate [J] (substrate.boundary =
+  /// absorbing; else 0): the elastic waves radiated into the half-space it stands for.
+  double energy_absorbed = 0.0;
   /// discretisation-error estimate of e_t, from the same companions and estimator as e_error [-]
   /// (NaN unless estimated on an oblique impact)
   double e_t_error = std::numeric_limits<double>::quiet_NaN();

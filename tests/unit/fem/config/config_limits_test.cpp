@@ -230,3 +230,32 @@ TEST(ConfigLimits, SizesAndUnusedKeysAreTreatedAlikeInEveryGeometry) {
 
 }  // namespace
 }  // namespace corlab::fem
+
+namespace corlab::fem {
+namespace {
+
+// substrate.boundary (the flat's far faces, docs/theory/solver.md "Far boundary"): a choice key,
+// echoed and refused where the target has no far face.
+TEST(ConfigLimits, SubstrateBoundaryIsAChoiceOfTheFlatOnly) {
+  EXPECT_EQ(refusal({"substrate.boundary=open"}),
+            "invalid substrate.boundary = 'open': must be one of fixed, absorbing, viscous_spring");
+  EXPECT_EQ(refusal({"substrate.boundary=absorbing", "substrate.shape=rigid"}),
+            "invalid substrate.boundary = 'absorbing': must be fixed with substrate.shape = rigid "
+            "(absorbing far faces need the flat substrate)");
+  EXPECT_EQ(refusal({"substrate.boundary=absorbing", "substrate.shape=sphere"}).substr(0, 61),
+            "invalid substrate.boundary = 'absorbing': must be fixed with ");
+  EXPECT_EQ(refusal({"substrate.boundary=absorbing"}), "");
+  EXPECT_EQ(refusal({"substrate.boundary=viscous_spring", "substrate.shape=rigid"}).substr(0, 66),
+            "invalid substrate.boundary = 'viscous_spring': must be fixed with ");
+  EXPECT_EQ(refusal({"substrate.boundary= fixed "}), "");
+  ImpactConfig c;
+  EXPECT_EQ(c.substrate.boundary, SubstrateBoundary::kFixed);  // the paper's fixed base
+  apply_setting(c, "substrate.boundary", "absorbing");
+  EXPECT_EQ(c.substrate.boundary, SubstrateBoundary::kAbsorbing);
+  EXPECT_EQ(to_string(c.substrate.boundary), "absorbing");
+  apply_setting(c, "substrate.boundary", "viscous_spring");
+  EXPECT_EQ(to_string(c.substrate.boundary), "viscous_spring");
+}
+
+}  // namespace
+}  // namespace corlab::fem

@@ -80,3 +80,41 @@ TEST(HexResolution, NoFeasibleDefaultNamesTheKeys) {
 
 }  // namespace
 }  // namespace corlab::fem
+
+namespace corlab::fem {
+namespace {
+
+// The default block (issue 39): with neither substrate size key nor substrate.boundary set, the
+// plain Kharaz command gets kDefaultBlockWaveFraction c_p t_c with the viscous-spring boundary
+// (11.0 mm at 40 deg: c_p 5797 m/s, t_c 13.5 us at v_n = 2.99 m/s); a size key or the boundary
+// key keeps the user's block.
+TEST(HexResolution, DefaultBlockFollowsTheWavesTravelWithTheViscousSpringBoundary) {
+  ImpactConfig c;
+  apply_settings(c,
+                 {"sphere.material=E=380e9,nu=0.23,rho=4000", "sphere.radius=2.5e-3",
+                  "substrate.material=E=70e9,nu=0.25,rho=2500", "impact.velocity=3.9",
+                  "solver.model=3d", "impact.angle=40", "contact.friction=0.092"},
+                 "test");
+  const HexResolution r = hex_resolution(c);
+  ImpactConfig normal = c;
+  normal.impact.velocity = normal_velocity(c);
+  const double wave = kDefaultBlockWaveFraction * c.substrate.material.dilatational_wave_speed() *
+                      hertz_reference(normal).contact_time;
+  EXPECT_EQ(r.block_size, wave);
+  EXPECT_NEAR(r.block_size, 11.0e-3, 0.1e-3);
+  EXPECT_EQ(r.boundary, SubstrateBoundary::kViscousSpring);
+  EXPECT_NE(r.reason.find("viscous_spring"), std::string::npos) << r.reason;
+  const ImpactConfig resolved = with_resolved_3d_mesh(c);
+  EXPECT_EQ(resolved.substrate.radius, r.block_size);
+  EXPECT_EQ(resolved.substrate.boundary, SubstrateBoundary::kViscousSpring);
+  for (const std::string key : {"substrate.radius=0.02", "substrate.boundary=absorbing"}) {
+    ImpactConfig k = c;
+    apply_settings(k, {key}, "test");
+    const HexResolution kr = hex_resolution(k);
+    EXPECT_EQ(kr.block_size, 0.0) << key;
+    EXPECT_EQ(kr.boundary, k.substrate.boundary) << key;
+  }
+}
+
+}  // namespace
+}  // namespace corlab::fem
