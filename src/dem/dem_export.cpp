@@ -167,6 +167,7 @@ PairCalibration calibrate_one(const ExportSpec& spec, int i, int j) {
   PairCalibration c;
   c.type_i = i;
   c.type_j = j;
+  c.friction = spec.friction;  // the export's mu; calibrate_export applies --friction A/B=MU
   c.particle_radius = ti.radius;
   c.label = type_label(spec, i) + "-" + (j == 0 ? wall_label(spec) : type_label(spec, j));
   const Material* other = nullptr;

@@ -48,7 +48,7 @@ cd "$work"
 env -u PYTHONPATH -u CORLAB_DATA_DIR -u CORLAB_PYTHONPATH bash -c '
   set -euo pipefail
   test "$(command -v corlab)" = /usr/bin/corlab
-  corlab materials | grep -q alumina_ma2023
+  corlab materials | grep -c alumina_ma2023 >/dev/null  # -c: no SIGPIPE
   corlab predict --model corlab2026 --sphere alumina_ma2023 --substrate aluminium_ma2023 --velocity 2.5
   /usr/bin/python3 -c "import corlab, corlab.dem; assert corlab.__file__.startswith(\"/usr/lib/\"); print(\"python:\", corlab.__file__, len(corlab.dem.laws()), \"DEM laws\")"'
 cmake -S "$src/examples/installed" -B "$work/cmake-build" >/dev/null
@@ -70,7 +70,7 @@ dpkg -P corlab >/dev/null
 if dpkg-query -W corlab >/dev/null 2>&1; then echo "deb_test: dpkg still knows corlab" >&2; exit 1; fi
 check_nothing_left "dpkg -P"
 # the library names are gone from the loader's cache (the ldconfig trigger ran on removal)
-if /sbin/ldconfig -p | grep -q 'libcorlab'; then
+if /sbin/ldconfig -p | grep -c libcorlab >/dev/null; then
   echo "deb_test: ldconfig still lists libcorlab after the purge" >&2; exit 1
 fi
 echo "deb_test: $(basename "$deb") installed, used and removed cleanly ($(wc -l <"$work/paths") paths)"

@@ -145,12 +145,13 @@ struct PairCalibration {
   /// rho* = 3 m*/(4 pi R*^3) [kg/m^3]: the density of the sphere whose impact on a flat is this
   /// pair's (wall: the particle's; two identical spheres: 4 rho); a model's e(v) is taken at it.
   double effective_density = 0.0;
-  double hertz_stiffness = 0.0;    ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
-  double shear_modulus = 0.0;      ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
-  double friction = 0.0;           ///< Coulomb mu [-] (ExportSpec::friction or the pair's own)
-  int wall = 0;                    ///< type_j = 0: the wall material's index (ExportSpec::walls)
-  std::string label;               ///< "glass-glass", "glass-copper" (type labels; wall last)
-  std::string target;              ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
+  double hertz_stiffness = 0.0;  ///< K = 4/3 E* sqrt(R*) [N/m^1.5]
+  double shear_modulus = 0.0;    ///< Mindlin's G* [Pa]: k_t = 8 G* a (tangential.hpp)
+  double friction = 0.0;  ///< Coulomb mu [-]: ExportSpec::friction (calibrate_pairs), or the pair's
+                          ///< own --friction A/B=MU (calibrate_export)
+  int wall = 0;           ///< type_j = 0: the wall material's index (ExportSpec::walls)
+  std::string label;      ///< "glass-glass", "glass-copper" (type labels; wall last)
+  std::string target;     ///< "constant e = 0.5" or "thornton1997 (sphere 2 on 1)"
   RestitutionCurve curve;          ///< target e(v) [m/s] -> [-]
   std::optional<double> constant;  ///< the constant target e (--restitution or a pair's own)
   double contact_time_fast = 0.0;  ///< Hertz contact time at v_max [s] (the shortest)
