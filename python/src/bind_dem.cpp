@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
@@ -26,6 +27,7 @@
 #include "corlab/dem/viscoelastic_restitution.hpp"
 #include "corlab/materials/material_database.hpp"
 #include "corlab/study/result_cache.hpp"
+#include "interruptible.hpp"
 
 namespace py = pybind11;
 
@@ -222,14 +224,21 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
       store.emplace(study::default_cache_directory(), study::cache_build_id(),
                     [&warnings](const std::string& w) { warnings.push_back(w); });
     }
-    spec.target_source =
-        dataset::fe_pair_targets(spec.model, {.jobs = jobs, .cache = store ? &*store : nullptr});
   }
-  std::vector<dem::PairCalibration> calibrated;
-  {
-    py::gil_scoped_release release;
-    calibrated = dem::calibrate_pairs(spec);
+  // Ctrl-C stops the FE runs (KeyboardInterrupt; finished speeds stay cached), as in simulate().
+  std::atomic<bool> cancel{false};
+  if (dem::is_external_model(spec.model)) {
+    spec.target_source = dataset::fe_pair_targets(
+        spec.model, {.jobs = jobs, .cache = store ? &*store : nullptr, .cancel = &cancel});
   }
+  const std::vector<dem::PairCalibration> calibrated = run_interruptible(cancel, [&] {
+    try {
+      return dem::calibrate_pairs(spec);
+    } catch (const InputError&) {
+      if (cancel.load()) return std::vector<dem::PairCalibration>{};  // a cancelled run's row
+      throw;
+    }
+  });
   for (const auto& p : calibrated) {
     for (const auto& w : p.warnings) warnings.push_back("pair " + p.name() + ": " + w);
   }

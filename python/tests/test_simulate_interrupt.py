@@ -1,5 +1,6 @@
-"""corlab.simulate() stops on Ctrl-C: a SIGINT to a Python process inside a long run raises
-KeyboardInterrupt promptly, for the 3-D model and the axisymmetric one (issue 39 item 3)."""
+"""corlab.simulate() and corlab.dem.export(model="fe") stop on Ctrl-C: a SIGINT to a Python
+process inside a long run raises KeyboardInterrupt promptly, for the 3-D model, the axisymmetric
+one (issue 39 item 3) and the FE runs behind a DEM export (issue 40)."""
 # SPDX-License-Identifier: BSD-3-Clause
 import os
 import signal
@@ -14,7 +15,7 @@ CHILD = """
 import sys
 import corlab
 print("started", flush=True)
-corlab.simulate({settings!r})
+{call}
 print("finished", flush=True)
 """
 
@@ -23,12 +24,17 @@ print("finished", flush=True)
 PLAIN_3D = {"solver.model": "3d", "impact.angle": 40, "contact.friction": 0.1,
             "substrate.shape": "rigid"}
 FINE_AXISYMMETRIC = {"mesh.h_min": 0.05e-3, "mesh.contact_elements": 0}
+# An elastic wall: the FE runs on a half-space at 9 fit speeds, uncached (tens of seconds).
+DEM_FE = ("corlab.dem.export([('alumina_ma2023', 0.001)], wall='E=70e9,nu=0.22,rho=2500', "
+          "wall_only=True, model='fe', cache=False)")
 
 
-@pytest.mark.parametrize("settings", [PLAIN_3D, FINE_AXISYMMETRIC], ids=["3d", "axisymmetric"])
-def test_sigint_stops_simulate_with_keyboard_interrupt(settings):
+@pytest.mark.parametrize("call", ["corlab.simulate(%r)" % PLAIN_3D,
+                                  "corlab.simulate(%r)" % FINE_AXISYMMETRIC, DEM_FE],
+                         ids=["3d", "axisymmetric", "dem_export_fe"])
+def test_sigint_stops_a_long_run_with_keyboard_interrupt(call):
     child = subprocess.Popen(
-        [sys.executable, "-c", CHILD.format(settings=settings)],
+        [sys.executable, "-c", CHILD.format(call=call)],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=dict(os.environ))
     try:
         assert child.stdout.readline().strip() == "started"
