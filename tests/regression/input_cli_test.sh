@@ -8,18 +8,11 @@
 set -uo pipefail
 corlab=$1 work=$2
 rm -rf "$work" && mkdir -p "$work"
-fail() { echo "FAIL: $*"; exit 1; }
-
-# refused FIELD ARGS...: exit 2, one stderr line naming FIELD, nothing on stdout, within 20 s.
-refused() {
-  local field=$1; shift
-  timeout 20 "$corlab" "$@" > "$work/out" 2> "$work/err"
-  local rc=$?
-  [ $rc -eq 2 ] || fail "$* -> exit $rc, expected 2: $(cat "$work/err")"
-  [ "$(wc -l < "$work/err")" -eq 1 ] || fail "$* -> not one line: $(cat "$work/err")"
-  grep -q "^corlab: error: .*$field" "$work/err" || fail "$* -> does not name $field: $(cat "$work/err")"
-  [ ! -s "$work/out" ] || fail "$* -> wrote to stdout"
-}
+# shellcheck source=../support/cli_refused.sh
+. "$(dirname "$0")/../support/cli_refused.sh"
+# refused FIELD ARGS...: this script's fields are patterns ("impact.gap = 1e+20" and the like):
+# exit 2, one "corlab: error: ...FIELD" line on stderr, nothing on stdout, within 20 s.
+refused() { refused_re "$@"; }
 sim() { refused "$1" simulate "${@:2}" --out "$work/sim" --quiet; }
 
 sim "impact.gap = 1e+20" --set impact.gap=1e20 --set mesh.h_min=1.5e-3 --set mesh.contact_elements=0

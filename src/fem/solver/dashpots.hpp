@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file dashpots.hpp
-/// The absorbing far boundary of a run (substrate.boundary = absorbing; docs/theory/solver.md,
+/// The absorbing far boundary of a run (substrate.boundary = absorbing or viscous_spring; solver.md,
 /// "Far boundary"): the Lysmer-Kuhlemeyer dashpots of absorbing_boundary.hpp lumped to the
 /// substrate's far nodes (far_boundary.hpp), and their forces, for both models. Private to
 /// src/fem/solver.
@@ -27,7 +27,7 @@ struct Dashpots {
   bool empty() const { return node.empty(); }
 };
 
-/// Whether the config's far faces absorb (substrate.boundary = absorbing on the flat).
+/// Whether the config's far faces absorb (substrate.boundary other than fixed, on the flat).
 inline bool absorbing_boundary(const ImpactConfig& config) {
   return config.substrate.shape == SubstrateShape::kFlat &&
          config.substrate.boundary != SubstrateBoundary::kFixed;
