@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file dashpots.hpp
-/// The absorbing far boundary of a run (substrate.boundary = absorbing or viscous_spring; solver.md,
+/// The absorbing far boundary of a run (substrate.boundary absorbing or viscous_spring; solver.md,
 /// "Far boundary"): the Lysmer-Kuhlemeyer dashpots of absorbing_boundary.hpp lumped to the
 /// substrate's far nodes (far_boundary.hpp), and their forces, for both models. Private to
 /// src/fem/solver.
