@@ -176,21 +176,26 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     const py::dict& pairs_dict,
                     double friction,
                     int jobs,
-                    bool cache) {
+                    bool cache,
+                    const std::vector<std::string>& walls,
+                    const py::dict& pair_friction_dict,
+                    double rolling) {
   const auto pairs = number_dict(pairs_dict, "pairs");
   dem::ExportSpec spec;
   spec.friction = friction;  // Coulomb mu [-] of every pair
+  spec.rolling = rolling;    // rolling resistance mu_r [-] of every pair
   for (const auto& [material, radius] : types) {
     auto labelled = dem::parse_labelled_material(material, "type");
     spec.types.push_back({std::move(labelled.material), radius, std::move(labelled.label)});
   }
-  if (!wall.empty()) {
-    auto labelled = dem::parse_labelled_material(wall, "wall");
-    spec.wall = std::move(labelled.material);
-    if (labelled.label_given) spec.wall_label = std::move(labelled.label);
-  }
+  // wall, then walls: each as the CLI's --wall [LABEL=]MATERIAL[@SHAPE]
+  if (!wall.empty()) dem::add_wall(spec, wall);
+  for (const auto& w : walls) dem::add_wall(spec, w);
   for (const auto& [pair, e] : pairs) {
     spec.pair_restitution.push_back(dem::parse_pair_restitution(fmt::format("{}={}", pair, e)));
+  }
+  for (const auto& [pair, mu] : number_dict(pair_friction_dict, "pair_friction")) {
+    spec.pair_friction.push_back(dem::parse_pair_value(fmt::format("{}={}", pair, mu), "friction"));
   }
   spec.restitution = restitution;
   spec.model = model;
@@ -233,7 +238,7 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
   }
   const std::vector<dem::PairCalibration> calibrated = run_interruptible(cancel, [&] {
     try {
-      return dem::calibrate_pairs(spec);
+      return dem::calibrate_export(spec);  // as `corlab dem`: every wall material, each pair's mu
     } catch (const InputError&) {
       if (cancel.load()) return std::vector<dem::PairCalibration>{};  // a cancelled run's row
       throw;
@@ -252,6 +257,9 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
   out["yade"] = dem::write_yade(spec, calibrated);
   out["csv"] = dem::write_table_csv(spec, calibrated);
   out["json"] = dem::write_json(spec, calibrated);
+  py::dict meshes;  // LIGGGHTS's mesh of each oblique plane, by the file name liggghts.in reads
+  for (const auto& [name, stl] : dem::wall_meshes(spec)) meshes[py::str(name)] = stl;
+  out["stl"] = meshes;
   return out;
 }
 
@@ -311,7 +319,8 @@ void bind_dem(py::module_& m) {
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
         py::arg("table") = std::nullopt, py::arg("table_source") = "",
         py::arg("pairs") = py::dict(), py::arg("friction") = 0.0, py::arg("jobs") = 0,
-        py::arg("cache") = true,
+        py::arg("cache") = true, py::arg("walls") = std::vector<std::string>{},
+        py::arg("pair_friction") = py::dict(), py::arg("rolling") = 0.0,
         "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables. "
         "table = (velocities [m/s], e [-]): an FE e(v) table instead of `restitution` or "
         "`model` (e.g. t = corlab.read_results('results.csv'); table=(t['velocity'], t['e'])); "
@@ -321,7 +330,12 @@ void bind_dem(py::module_& m) {
         "the result cache), elastic pairs included; a pair's accuracy warnings are "
         "UserWarnings; pairs = {'glass/glass': 1.0} sets one pair's "
         "constant e (labels or type ids, 'wall'); friction = Coulomb mu of every pair (0: "
-        "frictionless; above 0 the fragments add Mindlin's tangential stiffness 8 G* a)");
+        "frictionless; above 0 the fragments add Mindlin's tangential stiffness 8 G* a), "
+        "pair_friction = {'glass/wall': 0.5} one pair's mu, rolling = rolling resistance mu_r "
+        "of every pair; walls = ['side=steel_ma2023@plane:0.04,0,0,-1,0,0', ...] more walls "
+        "after `wall`, each as `corlab dem --wall` ([LABEL=]MATERIAL[@SHAPE]; docs/user/dem.md). "
+        "Returns the texts by name: lammps, lammps_nopython, liggghts, yade, csv, json and stl "
+        "(file name -> LIGGGHTS mesh of each oblique plane, to write next to liggghts.in).");
 }
 
 }  // namespace corlab::python
