@@ -382,9 +382,14 @@ std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration
       "# (0.96 -> 0.9568, 0.99 -> 0.9790, 0.999 -> 0.9841; en = 1: elastic): the stated max |de|\n"
       "# includes that. Use corlab_ip2 and corlab_law2 in the InteractionLoop; en is per\n"
       "# material pair (MatchMaker).\n";
-  out += tangential_comment(spec);
   const bool hook =
       std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
+  if (hook) {
+    out +=
+        "# e(v): corlab_ip2 takes YADE's damping ratio betan of each en (the same dashpot),\n"
+        "# and corlab_hook (below) sets each contact's own before it touches.\n";
+  }
+  out += tangential_comment(spec);
   out += "# Type pairs and the target:\n";
   for (const auto& p : pairs) {
     out += fmt::format("# {}: {}; {}, max |de| {:.1e}\n", p.name(), p.target,
