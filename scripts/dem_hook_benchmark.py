@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Prints the cost of the e(v) hooks against a constant e in a 400-particle pour (issue 41): per
 step (hook / constant) and per simulated second at each fragment's own step, in LAMMPS (lammps.in:
-fix python/invoke) and YADE (the PyRunner setting en). Nothing is asserted.
+fix python/invoke) and YADE (the PyRunner corlab_hook setting each
+contact's damping before it touches). Nothing is asserted.
 
 Two exports of the same particles (two soft types, 200 each, with the five walls of the pour
 check): `--table` corlab's FE e(v) of alumina on aluminium (every pair: the hook's e(v)) and
@@ -60,11 +61,11 @@ exec(open(%(fragment)r).read())
 mats = [corlab_mat1, corlab_mat2]
 for t, x, y, z in %(places)r:
     O.bodies.append(sphere((x, y, z), %(radii)r[t - 1], material=mats[t - 1]))
-engines = [ForceResetter(), InsertionSortCollider(corlab_bound)]
-if 'corlab_set_en' in globals():
-    engines.append(PyRunner(command='corlab_set_en()', iterPeriod=1))
-O.engines = engines + [InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2]),
-                       NewtonIntegrator(damping=0.0, gravity=(0, 0, -%(g)g))]
+engines = [ForceResetter(), InsertionSortCollider(corlab_bound),
+           InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2])]
+if 'corlab_hook' in globals():
+    engines.append(corlab_hook)
+O.engines = engines + [NewtonIntegrator(damping=0.0, gravity=(0, 0, -%(g)g))]
 O.run(%(settle)d, True)
 t0 = time.process_time()
 O.run(%(steps)d, True)

@@ -170,12 +170,7 @@ int run_dem(const DemArgs& args) {
   write_file(dir / "yade_fragment.py", dem::write_yade(spec, pairs));
   write_file(dir / "restitution_table.csv", dem::write_table_csv(spec, pairs, args.table_points));
   write_file(dir / "dem_export.json", dem::write_json(spec, pairs, args.table_points));
-  const auto walls = dem::export_walls(spec);
-  for (std::size_t k = 0; k < walls.size(); ++k) {  // LIGGGHTS's mesh of an oblique plane
-    if (walls[k].shape == dem::WallShape::plane && dem::plane_axis(walls[k]) < 0) {
-      write_file(dir / fmt::format("corlab_wall{}.stl", k + 1), dem::wall_stl(walls[k]));
-    }
-  }
+  for (const auto& [name, stl] : dem::wall_meshes(spec)) write_file(dir / name, stl);
   for (const auto& p : pairs) {
     const auto lammps = dem::lammps_delivery(spec, p, true);
     const auto lammps_plain = dem::lammps_delivery(spec, p, false);

@@ -163,6 +163,60 @@ py::dict simulate_impact_py(const std::string& law,
   return r;
 }
 
+using VelocityTable = std::pair<std::vector<double>, std::vector<double>>;
+
+// The e(v) of table = (velocities [m/s], e [-]), sorted by speed as the CLI's --table (FE
+// results rows come in finishing order).
+dem::RestitutionCurve sorted_table(const VelocityTable& table) {
+  if (table.first.size() != table.second.size()) {
+    throw_invalid("table", static_cast<double>(table.second.size()),
+                  fmt::format("{} restitution values (one per velocity)", table.first.size()));
+  }
+  std::vector<std::size_t> order(table.first.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return table.first[a] < table.first[b]; });
+  std::vector<double> v, e;
+  for (const std::size_t i : order) {
+    v.push_back(table.first[i]);
+    e.push_back(table.second[i]);
+  }
+  return dem::tabulated_curve(v, e);
+}
+
+// The walls (wall, then walls, each as the CLI's --wall [LABEL=]MATERIAL[@SHAPE]), the pairs'
+// constant e (--pair A/B=E) and the pairs' mu (--friction A/B=MU) of the Python arguments.
+void add_named(dem::ExportSpec& spec,
+               const std::string& wall,
+               const std::vector<std::string>& walls,
+               const py::dict& pairs_dict,
+               const py::dict& pair_friction_dict) {
+  if (!wall.empty()) dem::add_wall(spec, wall);
+  for (const auto& w : walls) dem::add_wall(spec, w);
+  for (const auto& [pair, e] : number_dict(pairs_dict, "pairs")) {
+    spec.pair_restitution.push_back(dem::parse_pair_restitution(fmt::format("{}={}", pair, e)));
+  }
+  for (const auto& [pair, mu] : number_dict(pair_friction_dict, "pair_friction")) {
+    spec.pair_friction.push_back(dem::parse_pair_value(fmt::format("{}={}", pair, mu), "friction"));
+  }
+}
+
+// Every text `corlab dem` writes, by name (stl: file name -> LIGGGHTS's mesh of each oblique
+// plane, the name liggghts.in reads).
+py::dict export_texts(const dem::ExportSpec& spec, const std::vector<dem::PairCalibration>& pairs) {
+  py::dict out;
+  out["lammps"] = dem::write_lammps(spec, pairs);
+  out["lammps_nopython"] = dem::write_lammps(spec, pairs, false);
+  out["liggghts"] = dem::write_liggghts(spec, pairs);
+  out["yade"] = dem::write_yade(spec, pairs);
+  out["csv"] = dem::write_table_csv(spec, pairs);
+  out["json"] = dem::write_json(spec, pairs);
+  py::dict meshes;
+  for (const auto& [name, stl] : dem::wall_meshes(spec)) meshes[py::str(name)] = stl;
+  out["stl"] = meshes;
+  return out;
+}
+
 py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     const std::string& wall,
                     std::optional<double> restitution,
@@ -171,27 +225,23 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
                     double v_max,
                     bool wall_only,
                     int fit_points,
-                    const std::optional<std::pair<std::vector<double>, std::vector<double>>>& table,
+                    const std::optional<VelocityTable>& table,
                     const std::string& table_source,
                     const py::dict& pairs_dict,
                     double friction,
                     int jobs,
-                    bool cache) {
-  const auto pairs = number_dict(pairs_dict, "pairs");
+                    bool cache,
+                    const std::vector<std::string>& walls,
+                    const py::dict& pair_friction_dict,
+                    double rolling) {
   dem::ExportSpec spec;
   spec.friction = friction;  // Coulomb mu [-] of every pair
+  spec.rolling = rolling;    // rolling resistance mu_r [-] of every pair
   for (const auto& [material, radius] : types) {
     auto labelled = dem::parse_labelled_material(material, "type");
     spec.types.push_back({std::move(labelled.material), radius, std::move(labelled.label)});
   }
-  if (!wall.empty()) {
-    auto labelled = dem::parse_labelled_material(wall, "wall");
-    spec.wall = std::move(labelled.material);
-    if (labelled.label_given) spec.wall_label = std::move(labelled.label);
-  }
-  for (const auto& [pair, e] : pairs) {
-    spec.pair_restitution.push_back(dem::parse_pair_restitution(fmt::format("{}={}", pair, e)));
-  }
+  add_named(spec, wall, walls, pairs_dict, pair_friction_dict);
   spec.restitution = restitution;
   spec.model = model;
   spec.v_min = v_min;
@@ -199,21 +249,7 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
   spec.wall_only = wall_only;
   spec.fit_points = fit_points;
   if (table) {
-    if (table->first.size() != table->second.size()) {
-      throw_invalid("table", static_cast<double>(table->second.size()),
-                    fmt::format("{} restitution values (one per velocity)", table->first.size()));
-    }
-    // Sorted by speed, as the CLI's --table (FE results rows come in finishing order).
-    std::vector<std::size_t> order(table->first.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return table->first[a] < table->first[b]; });
-    std::vector<double> v, e;
-    for (const std::size_t i : order) {
-      v.push_back(table->first[i]);
-      e.push_back(table->second[i]);
-    }
-    spec.table = dem::tabulated_curve(v, e);
+    spec.table = sorted_table(*table);
     spec.table_source = table_source.empty() ? "table given in Python" : table_source;
   }
   // model "fe" or "auto": each pair's e(v) from the FE solver (dem_fe_targets.hpp), cached.
@@ -233,7 +269,7 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
   }
   const std::vector<dem::PairCalibration> calibrated = run_interruptible(cancel, [&] {
     try {
-      return dem::calibrate_pairs(spec);
+      return dem::calibrate_export(spec);  // as `corlab dem`: every wall material, each pair's mu
     } catch (const InputError&) {
       if (cancel.load()) return std::vector<dem::PairCalibration>{};  // a cancelled run's row
       throw;
@@ -245,14 +281,7 @@ py::dict export_dem(const std::vector<std::pair<std::string, double>>& types,
   for (const auto& w : warnings) {
     if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();
   }
-  py::dict out;
-  out["lammps"] = dem::write_lammps(spec, calibrated);
-  out["lammps_nopython"] = dem::write_lammps(spec, calibrated, false);
-  out["liggghts"] = dem::write_liggghts(spec, calibrated);
-  out["yade"] = dem::write_yade(spec, calibrated);
-  out["csv"] = dem::write_table_csv(spec, calibrated);
-  out["json"] = dem::write_json(spec, calibrated);
-  return out;
+  return export_texts(spec, calibrated);
 }
 
 }  // namespace
@@ -311,7 +340,8 @@ void bind_dem(py::module_& m) {
         py::arg("v_max") = 10.0, py::arg("wall_only") = false, py::arg("fit_points") = 9,
         py::arg("table") = std::nullopt, py::arg("table_source") = "",
         py::arg("pairs") = py::dict(), py::arg("friction") = 0.0, py::arg("jobs") = 0,
-        py::arg("cache") = true,
+        py::arg("cache") = true, py::arg("walls") = std::vector<std::string>{},
+        py::arg("pair_friction") = py::dict(), py::arg("rolling") = 0.0,
         "Calibrates and returns the LAMMPS/LIGGGHTS/YADE fragments and CSV/JSON tables. "
         "table = (velocities [m/s], e [-]): an FE e(v) table instead of `restitution` or "
         "`model` (e.g. t = corlab.read_results('results.csv'); table=(t['velocity'], t['e'])); "
@@ -321,7 +351,12 @@ void bind_dem(py::module_& m) {
         "the result cache), elastic pairs included; a pair's accuracy warnings are "
         "UserWarnings; pairs = {'glass/glass': 1.0} sets one pair's "
         "constant e (labels or type ids, 'wall'); friction = Coulomb mu of every pair (0: "
-        "frictionless; above 0 the fragments add Mindlin's tangential stiffness 8 G* a)");
+        "frictionless; above 0 the fragments add Mindlin's tangential stiffness 8 G* a), "
+        "pair_friction = {'glass/wall': 0.5} one pair's mu, rolling = rolling resistance mu_r "
+        "of every pair; walls = ['side=steel_ma2023@plane:0.04,0,0,-1,0,0', ...] more walls "
+        "after `wall`, each as `corlab dem --wall` ([LABEL=]MATERIAL[@SHAPE]; docs/user/dem.md). "
+        "Returns the texts by name: lammps, lammps_nopython, liggghts, yade, csv, json and stl "
+        "(file name -> LIGGGHTS mesh of each oblique plane, to write next to liggghts.in).");
 }
 
 }  // namespace corlab::python

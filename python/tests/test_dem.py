@@ -174,3 +174,34 @@ def test_export_friction_adds_mindlin():
     with pytest.raises(ValueError, match="friction"):
         corlab.dem.export([("steel_ma2023", 0.005)], wall="steel_ma2023", restitution=0.5,
                           friction=-1.0)
+
+
+def test_export_has_the_clis_walls_pair_friction_and_rolling(tmp_path, corlab_bin):
+    # corlab.dem.export and `corlab dem` calibrate through one entry (calibrate_export): the same
+    # arguments give the same files, byte for byte, walls, per-pair mu and rolling included.
+    side = "side=E=6e6,nu=0.3,rho=2000@plane:0.04,0,0,-1,0,0"
+    oblique = "side=E=6e6,nu=0.3,rho=2000@plane:0,0,0.1,0,1,1,0.05"
+    out = corlab.dem.export([("soft=E=1e6,nu=0.3,rho=1000", 0.004)],
+                            wall="floor=E=4e6,nu=0.3,rho=2000", walls=[side, oblique],
+                            restitution=0.5, friction=0.3, pair_friction={"soft/side": 0.1},
+                            rolling=0.05, v_max=2.0)
+    done = subprocess.run([corlab_bin, "dem", "--type", "soft=E=1e6,nu=0.3,rho=1000:0.004",
+                           "--wall", "floor=E=4e6,nu=0.3,rho=2000", "--wall", side,
+                           "--wall", oblique, "--restitution", "0.5", "--friction", "0.3",
+                           "--friction", "soft/side=0.1", "--rolling", "0.05", "--v-max", "2",
+                           "--out", str(tmp_path)], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    for key, name in (("lammps", "lammps.in"), ("lammps_nopython", "lammps_nopython.in"),
+                      ("liggghts", "liggghts.in"), ("yade", "yade_fragment.py"),
+                      ("json", "dem_export.json")):
+        assert out[key] == (tmp_path / name).read_text(), key
+    assert out["stl"] == {"corlab_wall3.stl": (tmp_path / "corlab_wall3.stl").read_text()}
+    pairs = {p["label"]: p for p in json.loads(out["json"])["pairs"]}
+    assert pairs["soft-side"]["friction"] == 0.1 and pairs["soft-floor"]["friction"] == 0.3
+    assert "includeMoment=True" in out["yade"]
+    with pytest.raises(ValueError, match="pair_friction"):
+        corlab.dem.export([("steel_ma2023", 0.005)], wall="steel_ma2023", restitution=0.5,
+                          pair_friction={"steel_ma2023/wall": "x"})
+    with pytest.raises(ValueError, match="wall shape"):
+        corlab.dem.export([("steel_ma2023", 0.005)], wall="steel_ma2023", restitution=0.5,
+                          walls=["steel_ma2023@plane:0,0,0,1,0,1"])

@@ -172,6 +172,17 @@ std::string wall_stl(const Wall& wall) {
   return out + "endsolid corlab_wall\n";
 }
 
+std::vector<std::pair<std::string, std::string>> wall_meshes(const ExportSpec& spec) {
+  std::vector<std::pair<std::string, std::string>> out;
+  const auto walls = export_walls(spec);
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    if (walls[k].shape == WallShape::plane && plane_axis(walls[k]) < 0) {
+      out.emplace_back(fmt::format("corlab_wall{}.stl", k + 1), wall_stl(walls[k]));
+    }
+  }
+  return out;
+}
+
 void add_wall(ExportSpec& spec, std::string_view text) {
   const auto at = text.rfind('@');
   Wall w = at == std::string_view::npos ? Wall{} : parse_wall_shape(text.substr(at + 1));

@@ -104,64 +104,109 @@ std::string tangential_comment(const ExportSpec& spec) {
                    detail::friction_words(spec));
 }
 
-// The end of the e(v) tables, then the hook (Python): the normal and gap of a forming contact and
-// the PyRunner callback that sets en per material pair.
+// The hook's margin: sphere-sphere and sphere-Box interactions are made at a gap of
+// kHookMargin (r_1 + r_2), sphere-Wall ones by the hook below kHookMargin r_min [-].
+constexpr double kHookMargin = 0.1;
+
+// The hook's helpers (Python, before corlab_ip2): the damping ratio beta_n that YADE's
+// Ip2_FrictMat_FrictMat_MindlinPhys gives en = e (Thornton et al. 2013, Eqs. B6-B7, Table 2, as
+// YADE 2023.02a computes it; es = en gives beta_s = beta_n), and each material pair's type key.
+// Its Law2 damps by c_n = 2 beta_n sqrt(m* k_n) (c_s alike): the dashpot of en, which a PyRunner
+// can set per contact (betan, betas of its MindlinPhys).
+constexpr std::string_view kHookHelpers = R"(def corlab_beta(e):
+    # beta_n [-] of en = e (1: none)
+    if e >= 1.0:
+        return 0.0
+    a = 0.0
+    for h in (-1489.915, 6276.757, -11342.18, 11494.29, -7206.864, 2928.711, -796.4559,
+              146.8049, -16.41105, -6.918798):
+        a = a * e + h
+    return math.sqrt(1.0 / (1.0 - (1.0 + e) ** 2 * math.exp(a * e)) - 1.0)
+def corlab_key(a, b):
+    t1, t2 = corlab_type_of_material[a], corlab_type_of_material[b]
+    return (max(t1, t2), min(t1, t2)) if min(t1, t2) <= 0 else (min(t1, t2), max(t1, t2))
+corlab_betan = [(a, b, corlab_beta(e)) for a, b, e in corlab_en]
+)";
+
+// The end of the e(v) tables, then the hook (Python): the PyRunner corlab_hook visits every
+// corlab_every steps and sets each contact's damping once, before it touches.
 constexpr std::string_view kHookFunctions = R"(}
-def corlab_normal_gap(b1, b2):
-    # Unit normal from b1 to b2 and the gap [m] (< 0: overlap), or None for other shapes.
-    s1, s2 = b1.shape, b2.shape
-    if not isinstance(s2, Sphere):
-        if not isinstance(s1, Sphere):
-            return None
-        found = corlab_normal_gap(b2, b1)
-        return None if found is None else (-found[0], found[1])
-    c = b2.state.pos
-    if isinstance(s1, Sphere):
-        d = c - b1.state.pos
-        return d / d.norm(), d.norm() - s1.radius - s2.radius
-    if isinstance(s1, Box):
-        lo, hi = b1.state.pos - s1.extents, b1.state.pos + s1.extents
-        d = c - Vector3(*[min(max(c[k], lo[k]), hi[k]) for k in range(3)])
-        return d / d.norm(), d.norm() - s2.radius
-    if isinstance(s1, Wall):
+corlab_keys = {}
+for a, b, _ in corlab_en:
+    if corlab_key(a, b) in corlab_ev:
+        corlab_keys[(a, b)] = corlab_keys[(b, a)] = corlab_key(a, b)
+corlab_missed = 0
+corlab_last_visit = -1
+def corlab_e(key, speed):
+    # e(v) of the pair's table, linear in v, the end values outside
+    vs, es = corlab_ev[key]
+    j = bisect.bisect_right(vs, speed)
+    if j == 0 or j == len(vs):
+        return es[min(j, len(vs) - 1)]
+    return es[j - 1] + (speed - vs[j - 1]) * (es[j] - es[j - 1]) / (vs[j] - vs[j - 1])
+def corlab_set(i, key, b1, b2):
+    # the damping of a contact not yet touching, from its normal approach speed now
+    p = i.phys
+    p.betan = p.betas = corlab_beta(corlab_e(key, (b1.state.vel - b2.state.vel).dot(i.geom.normal)))
+    p.shearElastic = p.usElastic = p.usTotal = p.momentBend = p.momentTwist = Vector3.Zero
+def corlab_wall_gap(w, s):
+    # unit normal from wall w to sphere s and the gap [m] (Wall, or a facet's plane)
+    c = s.state.pos
+    if isinstance(w.shape, Wall):
         n = Vector3.Zero
-        side = c[s1.axis] - b1.state.pos[s1.axis]
-        n[s1.axis] = 1.0 if side > 0 else -1.0
-        return n, abs(side) - s2.radius
-    if isinstance(s1, Facet):
-        n = b1.state.ori * s1.normal
-        side = (c - b1.state.pos).dot(n)
-        return (n if side > 0 else -n), abs(side) - s2.radius
-    return None
-def corlab_set_en():
-    chosen = {}
-    for i in O.interactions.all():
-        if i.isReal:
+        side = c[w.shape.axis] - w.state.pos[w.shape.axis]
+        n[w.shape.axis] = 1.0 if side > 0 else -1.0
+        return n, abs(side) - s.shape.radius
+    n = w.state.ori * w.shape.normal
+    side = (c - w.state.pos).dot(n)
+    return (n if side > 0 else -n), abs(side) - s.shape.radius
+def corlab_visit():
+    global corlab_missed, corlab_last_visit
+    soonest = {}
+    for w in corlab_walls:  # wall contacts within corlab_margin: made now (erased walls: None)
+        for i in O.interactions.withBodyAll(w) if O.bodies[w] is not None else ():
+            if i.isReal:
+                continue
+            b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
+            key = corlab_keys.get((b1.material.id, b2.material.id))
+            if key is None or not isinstance((b2 if i.id1 == w else b1).shape, Sphere):
+                continue
+            wall, ball = (b1, b2) if i.id1 == w else (b2, b1)
+            n, gap = corlab_wall_gap(wall, ball)
+            if gap >= corlab_margin:
+                continue
+            if isinstance(wall.shape, Facet):  # YADE makes facet contacts only when touching
+                speed = -ball.state.vel.dot(n)
+                if speed > 0 and (key not in soonest or gap / speed < soonest[key][0]):
+                    soonest[key] = (gap / speed, speed)
+                continue
+            j = utils.createInteraction(i.id1, i.id2)
+            corlab_set(j, key, O.bodies[j.id1], O.bodies[j.id2])
+    for i in O.interactions.all(True):
+        depth = i.geom.penetrationDepth
+        if depth >= 0:
+            if i.iterMadeReal > corlab_last_visit:  # touched before a visit prepared it
+                b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
+                if ((b1.material.id, b2.material.id) in corlab_keys
+                        and not isinstance(b1.shape, Facet) and not isinstance(b2.shape, Facet)):
+                    corlab_missed += 1
             continue
         b1, b2 = O.bodies[i.id1], O.bodies[i.id2]
-        t1 = corlab_type_of_material.get(b1.material.id)
-        t2 = corlab_type_of_material.get(b2.material.id)
-        found = None if t1 is None or t2 is None else corlab_normal_gap(b1, b2)
-        if found is None:
+        key = corlab_keys.get((b1.material.id, b2.material.id))
+        if key is None:
             continue
-        n, gap = found
-        speed = (b1.state.vel - b2.state.vel).dot(n)
-        key = (max(t1, t2), min(t1, t2)) if min(t1, t2) <= 0 else (min(t1, t2), max(t1, t2))
-        if speed <= 0 or key not in corlab_ev:
-            continue
-        when = gap / speed
-        if key not in chosen or when < chosen[key][0]:
-            chosen[key] = (when, speed)
-    if not chosen:
-        return
-    for k, entry in enumerate(corlab_en):
-        t1 = corlab_type_of_material[entry[0]]
-        t2 = corlab_type_of_material[entry[1]]
-        key = (max(t1, t2), min(t1, t2)) if min(t1, t2) <= 0 else (min(t1, t2), max(t1, t2))
-        if key in chosen:
-            vs, es = corlab_ev[key]
-            corlab_en[k] = (entry[0], entry[1], float(numpy.interp(chosen[key][1], vs, es)))
-    corlab_ip2.en = MatchMaker(matches=corlab_en)
+        if -depth > corlab_erase_gap:
+            O.interactions.erase(i.id1, i.id2)
+        else:
+            corlab_set(i, key, b1, b2)
+    corlab_last_visit = O.iter
+    if soonest:
+        for k, (a, b, _) in enumerate(corlab_betan):
+            key = corlab_key(a, b)
+            if key in soonest:
+                corlab_betan[k] = (a, b, corlab_beta(corlab_e(key, soonest[key][1])))
+        corlab_ip2.betan = MatchMaker(matches=corlab_betan)
+corlab_hook = PyRunner(command='corlab_visit()', iterPeriod=corlab_every, initRun=True)
 )";
 
 }  // namespace
@@ -210,11 +255,12 @@ double yade_time_step(const std::vector<PairCalibration>& pairs) {
 namespace {
 
 // The imports and one FrictMat per type and wall material (frictionAngle: the export's mu).
-std::string materials(const ExportSpec& spec) {
+std::string materials(const ExportSpec& spec, bool hook) {
   std::string out;
   out +=
       "from yade import *\nfrom yade import geom, utils\nfrom math import pi\nimport numpy\n"
       "corlab_type_of_material = {}\n";
+  if (hook) out += "import bisect\nimport math\n";
   for (std::size_t i = 0; i < spec.types.size(); ++i) {
     const int id = static_cast<int>(i) + 1;
     out += material_line(material_name(id), id, spec.types[i].material, type_label(spec, id),
@@ -231,8 +277,14 @@ std::string materials(const ExportSpec& spec) {
   return out;
 }
 
-// corlab_ip2 (en and frictAngle per material pair, rolling), corlab_law2 and the functors.
-std::string interaction_physics(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
+// corlab_ip2 (en and frictAngle per material pair, rolling), corlab_law2 and the functors. With
+// the hook: betan and betas per material pair instead of en (the same dashpot, kHookHelpers; an
+// e(v) pair's is e(v_max), for a contact the hook did not prepare), interactions kept apart
+// (neverErase: the hook makes and erases them) and spheres' interactions made at a gap of
+// kHookMargin (r_1 + r_2) (the Sphere and Box functors' interactionDetectionFactor).
+std::string interaction_physics(const ExportSpec& spec,
+                                const std::vector<PairCalibration>& pairs,
+                                bool hook) {
   std::string out;
   std::vector<std::string> matches;
   std::vector<std::string> angles;
@@ -248,13 +300,16 @@ std::string interaction_physics(const ExportSpec& spec, const std::vector<PairCa
     const std::string a = material_name(p.type_i);
     const std::string b = material_name(second_code(p));
     matches.push_back(
-        fmt::format("({}, {}, {:.8g})", a, b, p.constant ? *p.constant : p.curve(spec.v_min)));
+        fmt::format("({}, {}, {:.8g})", a, b,
+                    p.constant ? *p.constant : p.curve(hook ? spec.v_max : spec.v_min)));
     angles.push_back(fmt::format("({}, {}, {:.17g})", a, b, std::atan(p.friction)));
   }
+  out += fmt::format("corlab_en = [{}]\n", fmt::join(matches, ", "));
+  if (hook) out += kHookHelpers;
   out += fmt::format(
-      "corlab_en = [{}]\ncorlab_ip2 = Ip2_FrictMat_FrictMat_MindlinPhys(en=MatchMaker(matches="
-      "corlab_en), frictAngle=MatchMaker(matches=[{}]))\n",
-      fmt::join(matches, ", "), fmt::join(angles, ", "));
+      "corlab_ip2 = Ip2_FrictMat_FrictMat_MindlinPhys({}, frictAngle=MatchMaker(matches=[{}]))\n",
+      hook ? "betan=MatchMaker(matches=corlab_betan)" : "en=MatchMaker(matches=corlab_en)",
+      fmt::join(angles, ", "));
   if (spec.rolling > 0.0) {
     double krot = std::numeric_limits<double>::infinity();
     for (const auto& p : pairs) {
@@ -265,14 +320,55 @@ std::string interaction_physics(const ExportSpec& spec, const std::vector<PairCa
     }
     out += fmt::format("corlab_ip2.eta = {:.17g}\ncorlab_ip2.krot = {:.17g}\n", spec.rolling, krot);
   }
+  const auto factor = [hook](std::string_view name) {
+    return hook ? fmt::format("{}={:g}", name, 1.0 + kHookMargin) : std::string();
+  };
   out += fmt::format(
-      "corlab_law2 = Law2_ScGeom_MindlinPhys_Mindlin(includeMoment={})\n"
+      "corlab_law2 = Law2_ScGeom_MindlinPhys_Mindlin(includeMoment={}{})\n"
       "# The functors the walls below need, for O.engines (see docs/user/dem.md):\n"
-      "corlab_bound = [Bo1_Sphere_Aabb(), Bo1_Box_Aabb(), Bo1_Wall_Aabb(), Bo1_Facet_Aabb()]\n"
-      "corlab_ig2 = [Ig2_Sphere_Sphere_ScGeom(), Ig2_Box_Sphere_ScGeom(), "
+      "corlab_bound = [Bo1_Sphere_Aabb({}), Bo1_Box_Aabb(), Bo1_Wall_Aabb(), Bo1_Facet_Aabb()]\n"
+      "corlab_ig2 = [Ig2_Sphere_Sphere_ScGeom({}), Ig2_Box_Sphere_ScGeom({}), "
       "Ig2_Wall_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()]\n",
-      spec.rolling > 0.0 ? "True" : "False");
+      spec.rolling > 0.0 ? "True" : "False", hook ? ", neverErase=True" : "",
+      factor("aabbEnlargeFactor"), factor("interactionDetectionFactor"),
+      factor("interactionDetectionFactor"));
   return out;
+}
+
+// The hook's comment and numbers: corlab_margin [m], corlab_erase_gap [m], corlab_every [steps]
+// (the margin closed at 2 v_max, at most half the shortest contact), then the e(v) tables' start.
+std::string hook_comment(const ExportSpec& spec,
+                         const std::vector<PairCalibration>& pairs,
+                         double dt) {
+  double r_min = std::numeric_limits<double>::infinity();
+  double r_max = 0.0;
+  for (const auto& t : spec.types) {
+    r_min = std::min(r_min, t.radius);
+    r_max = std::max(r_max, t.radius);
+  }
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const auto& p : pairs) shortest = std::min(shortest, p.contact_time_fast);
+  const double margin = kHookMargin * r_min;
+  const double every = std::clamp(std::floor(margin / (2.0 * spec.v_max * dt)), 1.0,
+                                  std::floor(0.5 * shortest / dt));
+  return fmt::format(
+      "# e(v): put corlab_hook (a PyRunner) in O.engines just after the InteractionLoop. Every\n"
+      "# corlab_every steps it gives each contact of a pair below that is not touching yet the\n"
+      "# damping of e(v_n), v_n its normal approach speed then (tables below, linear in v, end\n"
+      "# values outside): per contact, set once before it touches. Sphere-sphere and sphere-Box\n"
+      "# interactions are made at a gap of {0:g} (r_1 + r_2) (interactionDetectionFactor),\n"
+      "# sphere-Wall ones by the hook below corlab_margin = {0:g} r_min; corlab_every is the "
+      "steps\n"
+      "# in which 2 v_max closes corlab_margin, at most half the shortest contact: a contact\n"
+      "# approaching at up to 2 v_max is set before it touches and none starts and ends unseen.\n"
+      "# One that touches unset (faster, or inserted within the margin) keeps e(v_max) and adds 1\n"
+      "# to corlab_missed. Facets (oblique planes, the cylinder) make contacts only on touching:\n"
+      "# there the hook sets the wall material pair's betan from its facet contact closest to\n"
+      "# touching (one e per pair and visit). Interactions stay after separation (neverErase)\n"
+      "# until corlab_erase_gap apart; one touching again before the next visit keeps its e.\n"
+      "corlab_margin = {1:.17g}\ncorlab_erase_gap = {2:.17g}\ncorlab_every = {3:.0f}\n"
+      "corlab_ev = {{\n",
+      kHookMargin, margin, 2.0 * kHookMargin * r_max, every);
 }
 
 }  // namespace
@@ -286,17 +382,22 @@ std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration
       "# (0.96 -> 0.9568, 0.99 -> 0.9790, 0.999 -> 0.9841; en = 1: elastic): the stated max |de|\n"
       "# includes that. Use corlab_ip2 and corlab_law2 in the InteractionLoop; en is per\n"
       "# material pair (MatchMaker).\n";
-  out += tangential_comment(spec);
   const bool hook =
       std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
+  if (hook) {
+    out +=
+        "# e(v): corlab_ip2 takes YADE's damping ratio betan of each en (the same dashpot),\n"
+        "# and corlab_hook (below) sets each contact's own before it touches.\n";
+  }
+  out += tangential_comment(spec);
   out += "# Type pairs and the target:\n";
   for (const auto& p : pairs) {
     out += fmt::format("# {}: {}; {}, max |de| {:.1e}\n", p.name(), p.target,
                        p.constant ? "en" : "the hook (table interpolation)",
                        yade_delivery(spec, p).max_abs_error);
   }
-  out += materials(spec);
-  out += interaction_physics(spec, pairs);
+  out += materials(spec, hook);
+  out += interaction_physics(spec, pairs, hook);
   out +=
       "# The walls (fixed bodies of the wall materials); their ids in corlab_walls.\ncorlab_walls "
       "= []\n";
@@ -306,15 +407,10 @@ std::string write_yade(const ExportSpec& spec, const std::vector<PairCalibration
   }
   const auto law = [](const PairCalibration&) { return CodeLaw::yade_mindlin; };
   out += detail::time_step_comment(spec, pairs, law);
-  out += fmt::format("O.dt = {:.4g}\n", detail::recommended_step(pairs, law));
+  const double dt = detail::recommended_step(pairs, law);
+  out += fmt::format("O.dt = {:.4g}\n", dt);
   if (!hook) return out;
-  out +=
-      "# e(v): add PyRunner(command='corlab_set_en()', iterPeriod=1) to O.engines just before\n"
-      "# the InteractionLoop. For each material pair it sets en from the NORMAL approach speed of\n"
-      "# the contact of that pair closest to touching (e(v) tables below, linear in v, end values\n"
-      "# outside): exact unless two contacts of the same material pair form in one step at\n"
-      "# different speeds (then the first to touch sets both). Shapes: Sphere, Box (not rotated),\n"
-      "# Wall; other shapes keep the last en of their pair.\ncorlab_ev = {\n";
+  out += hook_comment(spec, pairs, dt);
   for (const auto& p : pairs) {
     std::vector<std::string> vs;
     std::vector<std::string> es;

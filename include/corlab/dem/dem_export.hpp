@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "corlab/dem/calibration.hpp"
@@ -200,6 +201,11 @@ std::vector<PairCalibration> calibrate_export(const ExportSpec& spec);
 std::string wall_label(const ExportSpec& spec, int k);
 /// The walls of the export: spec.walls, or with a wall material and none given the floor z = 0.
 std::vector<Wall> export_walls(const ExportSpec& spec);
+
+/// The mesh files an export's LIGGGHTS fragment reads: (file name, wall_stl) per oblique plane,
+/// corlab_wallK.stl for wall K (1-based, export_walls order). What `corlab dem` writes to --out
+/// and corlab.dem.export returns.
+std::vector<std::pair<std::string, std::string>> wall_meshes(const ExportSpec& spec);
 /// Adds the wall "[LABEL=]MATERIAL[@SHAPE]" (dem_walls.hpp) to the spec: a new label is a new
 /// wall material, a label seen before names the same one (its material must then be the same).
 void add_wall(ExportSpec& spec, std::string_view text);

@@ -108,9 +108,43 @@ TEST(DemExport, ModelCurveFitsAndJson) {
   EXPECT_LT(lammps_delivery(spec, pairs[0], true).max_abs_error, 1e-3);
   EXPECT_EQ(lammps_delivery(spec, pairs[0], false).max_abs_error,
             std::min(pairs[0].viscoelastic->max_abs_error, pairs[0].best_constant->max_abs_error));
-  // YADE's hook takes the normal approach speed.
-  EXPECT_NE(write_yade(spec, pairs).find("speed = (b1.state.vel - b2.state.vel).dot(n)"),
+  // YADE's hook takes each contact's normal approach speed and sets that contact's damping, every
+  // corlab_every steps; YADE's own en -> betan (Thornton et al. 2013) on the material pairs.
+  const std::string yade = write_yade(spec, pairs);
+  EXPECT_NE(yade.find("(b1.state.vel - b2.state.vel).dot(i.geom.normal)"), std::string::npos);
+  EXPECT_NE(yade.find("p.betan = p.betas = corlab_beta("), std::string::npos);
+  EXPECT_NE(yade.find("Ip2_FrictMat_FrictMat_MindlinPhys(betan=MatchMaker("), std::string::npos);
+  EXPECT_NE(yade.find("neverErase=True"), std::string::npos);
+  EXPECT_NE(yade.find("PyRunner(command='corlab_visit()', iterPeriod=corlab_every, initRun=True)"),
             std::string::npos);
+  // A constant-e export keeps en and no hook.
+  ExportSpec plain = spec;
+  plain.model.clear();
+  plain.restitution = 0.5;
+  const std::string constant = write_yade(plain, calibrate_pairs(plain));
+  EXPECT_NE(constant.find("(en=MatchMaker(matches=corlab_en)"), std::string::npos);
+  EXPECT_EQ(constant.find("corlab_hook"), std::string::npos);
+  EXPECT_EQ(constant.find("neverErase"), std::string::npos);
+}
+
+// corlab_every: the steps in which 2 v_max closes the margin 0.1 r_min, at most half the shortest
+// contact time (so no contact starts and ends between two visits).
+TEST(DemExport, YadeHookVisitsBeforeAContactCanCloseTheMargin) {
+  ExportSpec spec;
+  spec.types = {{material("alumina_ma2023"), 0.005, ""}};
+  spec.wall = material("aluminium_ma2023");
+  spec.model = "thornton1997";
+  spec.v_min = 0.3;
+  spec.v_max = 3.0;
+  spec.wall_only = true;
+  const auto pairs = calibrate_pairs(spec);
+  const double dt = yade_time_step(pairs);
+  const double every = std::min(std::floor(0.1 * 0.005 / (2 * 3.0 * dt)),
+                                std::floor(0.5 * pairs[0].contact_time_fast / dt));
+  EXPECT_GE(every, 1.0);
+  const std::string yade = write_yade(spec, pairs);
+  EXPECT_NE(yade.find(fmt::format("\ncorlab_every = {:.0f}\n", every)), std::string::npos);
+  EXPECT_NE(yade.find(fmt::format("\ncorlab_margin = {:.17g}\n", 0.1 * 0.005)), std::string::npos);
 }
 
 // A model is written for a sphere of density rho on a flat; two identical spheres (R* = R/2,

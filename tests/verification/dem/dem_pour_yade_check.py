@@ -6,7 +6,10 @@ bodies), the spheres of each type added at run time by a PyRunner (type 1 at the
 type 2 a few steps later, at random non-overlapping places of its insertion region, vx towards
 the side wall), gravity, the fragment's functors. A second PyRunner writes every sample interval
 each sphere's id, type, x, vx, z and number of sphere contacts, and the totals. Checks: those of
-dem_pour_common.check.
+dem_pour_common.check. Then the same pour from an e(v) export (corlab's FE e(v) of alumina on
+aluminium for every pair, --v-max 2) with the fragment's corlab_hook: each first side-wall
+contact's e within the stated bound of e(v_in), and corlab_missed (contacts the hook did not set
+before they touched) zero.
 usage: dem_pour_yade_check.py CORLAB_BIN YADE_BIN WORK_DIR [--report FILE]
 """
 # SPDX-License-Identifier: BSD-3-Clause
@@ -14,9 +17,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dem_check_common import run  # noqa: E402
+from dem_check_common import FE_TABLE, export, run  # noqa: E402
 from dem_pour_common import (  # noqa: E402
-    G, PER_TYPE, VX, check, insertion_box, pour_export, steps, work_file)
+    G, PER_TYPE, TYPES, VX, WALLS, check, insertion_box, pour_export, steps, work_file)
 
 SCRIPT = """
 import random
@@ -54,9 +57,9 @@ def sample():
     ke, vmax = 0.0, 0.0
     for b in spheres:
         s = b.state
-        contacts = sum(1 for i in O.interactions.withBody(b.id)
-                       if i.isReal and isinstance(O.bodies[i.id1 if i.id2 == b.id else i.id2].shape,
-                                                  Sphere))
+        contacts = sum(1 for i in O.interactions.withBody(b.id)  # touching (the hook keeps more)
+                       if i.isReal and i.geom.penetrationDepth > 0
+                       and isinstance(O.bodies[i.id1 if i.id2 == b.id else i.id2].shape, Sphere))
         out.write('S %%d %%d %%d %%.10g %%.10g %%.10g %%d\\n' %% (
             O.iter, b.id, corlab_type_of_material[b.material.id], s.pos[0], s.vel[0], s.pos[2],
             contacts))
@@ -69,10 +72,13 @@ def sample():
 
 O.engines = [ForceResetter(), InsertionSortCollider(corlab_bound),
              PyRunner(command='pour()', iterPeriod=1),
-             InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2]),
-             NewtonIntegrator(damping=0.0, gravity=(0, 0, -%(g).17g)),
-             PyRunner(command='sample()', iterPeriod=%(every)d)]
+             InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2])]
+if 'corlab_hook' in globals():  # an e(v) export
+    O.engines = O.engines + [corlab_hook]
+O.engines = O.engines + [NewtonIntegrator(damping=0.0, gravity=(0, 0, -%(g).17g)),
+                         PyRunner(command='sample()', iterPeriod=%(every)d)]
 O.run(%(steps)d, True)
+out.write('M %%d\\n' %% globals().get('corlab_missed', 0))
 out.close()
 print('CORLAB_DONE')
 """
@@ -80,12 +86,15 @@ TOTALS = ("step", "atoms", "ke", "vmax", "xlo", "xhi", "ylo", "yhi", "zlo")
 
 
 def read_samples(path):
-    """(totals, samples) of pour_samples.txt: samples[k] = {id: (type, x, vx, z, contacts)}."""
-    totals, samples, by_step = [], [], {}
+    """(totals, samples, missed) of pour_samples.txt: samples[k] = {id: (type, x, vx, z,
+    contacts)}, missed the hook's corlab_missed (contacts it did not set before they touched)."""
+    totals, samples, by_step, missed = [], [], {}, None
     with open(path) as f:
         for line in f:
             w = line.split()
-            if w[0] == "T":
+            if w[0] == "M":
+                missed = int(w[1])
+            elif w[0] == "T":
                 totals.append(dict(zip(TOTALS, map(float, w[1:]))))
             elif w[0] == "S":
                 snap = by_step.get(w[1])
@@ -93,13 +102,11 @@ def read_samples(path):
                     snap = by_step[w[1]] = {}
                     samples.append(snap)
                 snap[int(w[2])] = (int(w[3]), float(w[4]), float(w[5]), float(w[6]), int(w[7]))
-    return totals, samples
+    return totals, samples, missed
 
 
-def main():
-    corlab, yade, work = sys.argv[1:4]
-    report = sys.argv[sys.argv.index("--report") + 1] if "--report" in sys.argv else None
-    data = pour_export(corlab, work)
+def pour(yade, work, data):
+    """Runs the pour of export `data` (in `work`); (totals, samples, missed)."""
     _, n, every = steps(data, "yade")
     types = [(t["radius_m"], insertion_box(k)) for k, t in enumerate(data["types"])]
     path = work_file(work, "pour.py")
@@ -107,8 +114,43 @@ def main():
         f.write(SCRIPT % {"fragment": os.path.join(work, "yade_fragment.py"), "types": types,
                           "per_type": PER_TYPE, "vx": VX, "every": every, "g": G, "steps": n})
     run([yade, "-n", "-x", path], cwd=work)
-    totals, samples = read_samples(os.path.join(work, "pour_samples.txt"))
+    return read_samples(os.path.join(work, "pour_samples.txt"))
+
+
+def ev_target(data):
+    """e(type, v_in) of the side wall's pairs: their e(v) table, linear in v."""
+    tables = {p["type_i"]: p["table"] for p in data["pairs"]
+              if p["type_j"] == 0 and "side" in p["label"]}
+
+    def target(t, v):
+        rows = tables[t]
+        vs, es = [r["v"] for r in rows], [r["e"] for r in rows]
+        if v <= vs[0] or v >= vs[-1]:
+            return es[0] if v <= vs[0] else es[-1]
+        k = next(k for k in range(1, len(vs)) if vs[k] >= v)
+        return es[k - 1] + (v - vs[k - 1]) * (es[k] - es[k - 1]) / (vs[k] - vs[k - 1])
+    return target
+
+
+def main():
+    corlab, yade, work = sys.argv[1:4]
+    report = sys.argv[sys.argv.index("--report") + 1] if "--report" in sys.argv else None
+    data = pour_export(corlab, work)
+    totals, samples, _ = pour(yade, work, data)
     failures = check("dem_pour_yade_check", "yade", data, totals, samples, report)
+    # The same pour with an e(v) export (corlab's FE e(v) of alumina on aluminium for every
+    # pair): the hook's e of each first side-wall contact, and no contact it did not set.
+    ev_work = os.path.join(work, "ev")
+    ev = export(corlab, ev_work, ["--table", FE_TABLE, "--v-min", "0.3", "--v-max", "2",
+                                  "--friction", "0.3"]
+                + sum((["--wall", w] for w in WALLS), []) + sum((["--type", t] for t in TYPES), []))
+    totals, samples, missed = pour(yade, ev_work, ev)
+    ev_report = report and report.replace(".txt", "_ev.txt")
+    failures += check("dem_pour_yade_check (e(v))", "yade", ev, totals, samples, ev_report,
+                      ev_target(ev))
+    print("contacts the hook did not set before they touched (corlab_missed): %s (== 0) %s"
+          % (missed, "ok" if missed == 0 else "FAIL"))
+    failures += missed != 0
     return 1 if failures else 0
 
 

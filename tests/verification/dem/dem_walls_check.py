@@ -10,6 +10,8 @@ over before) must be within the export's stated max |de| + its time-step error o
 constant e the damping sets e whatever the stiffness, so the cylinder's curvature does not move
 it). YADE's cylinder is printed, not checked: its facets (48 sides, 3.9 mm wide here) are
 narrower than the particle, which meets two at once and gets each one's damping (e 0.395).
+YADE's e(v) hook on facets: the oblique-plane drop once more from an e(v) export, e within the
+stated bound of e(1 m/s).
 usage: dem_walls_check.py CORLAB_BIN LMP_BIN LIGGGHTS_BIN YADE_BIN WORK_DIR
 """
 # SPDX-License-Identifier: BSD-3-Clause
@@ -17,8 +19,10 @@ import math
 import os
 import sys
 
+import numpy
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dem_check_common import export, parse_e, run  # noqa: E402
+from dem_check_common import FE_TABLE, export, parse_e, run  # noqa: E402
 
 R = 0.004  # m
 RHO = 1000.0  # kg/m^3
@@ -68,18 +72,43 @@ YADE = """exec(open(%(fragment)r).read())
 a = O.bodies.append(sphere(%(start)r, %(r).17g, material=corlab_mat1))
 O.bodies[a].state.vel = Vector3%(vel)r
 O.engines = [ForceResetter(), InsertionSortCollider(corlab_bound),
-             InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2]),
-             NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]
+             InteractionLoop(corlab_ig2, [corlab_ip2], [corlab_law2])]
+if 'corlab_hook' in globals():  # an e(v) export
+    O.engines = O.engines + [corlab_hook]
+O.engines = O.engines + [NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]
 O.run(%(steps)d, True)
 print('CORLAB_E', O.bodies[a].state.vel.dot(Vector3%(normal)r) / %(v).17g)
 """
+
+
+def yade_ev(corlab, yade, work):
+    """YADE's hook on facets: the oblique-plane drop from an e(v) export (corlab's FE e(v) of
+    alumina on aluminium for both walls): e within the stated bound of e(V)."""
+    out = os.path.join(work, "export_ev")
+    args = [a for a in ARGS if a not in ("--restitution", "0.5")]
+    data = export(corlab, out, args + ["--table", FE_TABLE, "--v-min", "0.3"])
+    dt = data["time_step_s"]["yade"]
+    pair = next(p for p in data["pairs"] if "tilted" in p["label"])
+    rows = pair["table"]
+    target = float(numpy.interp(V, [r["v"] for r in rows], [r["e"] for r in rows]))
+    bound = pair["delivered"]["yade"]["max_abs_error"] + data["time_step_error"]
+    name, start, vel, normal = cases(dt)[0]
+    path = os.path.join(out, "yade_oblique_ev.py")
+    with open(path, "w") as f:
+        f.write(YADE % {"fragment": os.path.join(out, "yade_fragment.py"), "start": start,
+                        "r": R, "vel": vel, "steps": steps(data, dt), "normal": normal, "v": V})
+    e = parse_e(run([yade, "-n", "-x", path], cwd=out).stdout)
+    ok = abs(e - target) <= bound
+    print("%-8s %-14s e = %.6f |e - e(%g) = %.4f| = %.1e (<= %.1e) %s"
+          % ("yade", name + " e(v)", e, V, target, abs(e - target), bound, "ok" if ok else "FAIL"))
+    return not ok
 
 
 def main():
     corlab, lmp, liggghts, yade, work = sys.argv[1:6]
     out = os.path.join(work, "export")
     data = export(corlab, out, ARGS)
-    failures = 0
+    failures = yade_ev(corlab, yade, work)
     for code, binary in (("lammps", lmp), ("liggghts", liggghts), ("yade", yade)):
         dt = data["time_step_s"][code]
         stated = max(p["delivered"][code]["max_abs_error"] for p in data["pairs"])
