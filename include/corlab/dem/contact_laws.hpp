@@ -50,6 +50,14 @@ struct HysteresisLaw {
     if (overlap <= 0.0) return 0.0;
     return stiffness * std::pow(overlap, exponent) * (1.0 + chi * overlap_rate / impact_velocity);
   }
+  /// The damping part K delta^n chi delta_dot / v_in [N] alone (force() less elastic Hertz): what
+  /// a DEM code running elastic Hertz adds per contact (ev_damping.hpp).
+  double damping(double overlap, double overlap_rate) const {
+    if (overlap <= 0.0) return 0.0;
+    const double power =
+        exponent == 1.5 ? overlap * std::sqrt(overlap) : std::pow(overlap, exponent);
+    return stiffness * power * chi * overlap_rate / impact_velocity;
+  }
 };
 
 /// Viscoelastic Hertz with Tsuji et al. (1992) damping, as LAMMPS `damping tsuji` evaluates it:
