@@ -13,6 +13,7 @@
 #include "error.h"
 #include "force.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "pair.h"
 #include "update.h"
 
@@ -141,27 +142,53 @@ void FixCorlabEv::init() {
 void FixCorlabEv::setup_pre_reverse(int eflag, int vflag) { pre_reverse(eflag, vflag); }
 
 void FixCorlabEv::pre_reverse(int /*eflag*/, int /*vflag*/) {
-  add_pair_forces();
-  add_wall_forces();
-}
-
-const HysteresisLaw& FixCorlabEv::law_of(Memory& now,
-                                         const Memory& before,
-                                         std::uint64_t key,
-                                         const UniformTable& chi,
-                                         double rate,
-                                         double estar,
-                                         double radius) {
-  const auto old = before.find(key);
-  const HysteresisLaw law =
-      old != before.end() ? old->second : corlab::dem::onset_law(chi, rate, estar, radius);
-  return now.insert_or_assign(key, law).first->second;
-}
-
-void FixCorlabEv::add_pair_forces() {
-  pairs_now_.clear();
   const LAMMPS_NS::NeighList* list = force->pair->list;
   if (list == nullptr) fail("pair_style granular has no neighbour list");
+  // Atoms are reordered and exchanged only when the lists are rebuilt.
+  const bool rebuilt = neighbor->ncalls != ncalls_ || list != list_;
+  ncalls_ = neighbor->ncalls;
+  list_ = list;
+  add_pair_forces(rebuilt);
+  add_wall_forces(rebuilt);
+}
+
+void FixCorlabEv::Slots::rebuild(std::size_t n) {
+  carried_.clear();
+  for (std::size_t k = 0; k < active_.size(); ++k) {
+    if (active_[k] != 0) carried_.emplace(slots_[k].key, slots_[k]);
+  }
+  active_.assign(n, 0);
+  slots_.resize(n);
+}
+
+template <class Onset>
+double FixCorlabEv::Slots::damping(
+    std::size_t k, std::uint64_t key, double overlap, double rate, const Onset& onset) {
+  if (active_[k] == 0) {
+    const auto old = carried_.find(key);  // empty but at a rebuild
+    if (old != carried_.end()) {
+      slots_[k] = old->second;
+    } else {
+      const HysteresisLaw law = onset();
+      slots_[k] = {law, law.damping_coefficient(), key};
+    }
+    active_[k] = 1;
+  }
+  const Slot& s = slots_[k];
+  return s.law.damping(overlap, rate, s.coefficient);
+}
+
+void FixCorlabEv::add_pair_forces(bool rebuilt) {
+  const LAMMPS_NS::NeighList* list = force->pair->list;
+  if (rebuilt) {
+    pair_offset_.resize(static_cast<std::size_t>(list->inum));
+    std::size_t total = 0;
+    for (int ii = 0; ii < list->inum; ++ii) {
+      pair_offset_[static_cast<std::size_t>(ii)] = total;
+      total += static_cast<std::size_t>(list->numneigh[list->ilist[ii]]);
+    }
+    pair_slots_.rebuild(total);
+  }
   double** x = atom->x;
   double** v = atom->v;
   double** f = atom->f;
@@ -176,6 +203,7 @@ void FixCorlabEv::add_pair_forces() {
     const int i = list->ilist[ii];
     if ((mask[i] & groupbit) == 0) continue;
     const int* jlist = list->firstneigh[i];
+    const std::size_t first = pair_offset_[static_cast<std::size_t>(ii)];
     for (int jj = 0; jj < list->numneigh[i]; ++jj) {
       const int j = jlist[jj] & NEIGHMASK;
       const std::size_t cell =
@@ -185,53 +213,73 @@ void FixCorlabEv::add_pair_forces() {
       const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
       const double radsum = radius[i] + radius[j];
-      if (rsq >= radsum * radsum || rsq == 0.0) continue;
+      const std::size_t k = first + static_cast<std::size_t>(jj);
+      if (rsq >= radsum * radsum || rsq == 0.0) {
+        pair_slots_.release(k);
+        continue;
+      }
       const double dist = std::sqrt(rsq);
-      const double n[3] = {d[0] / dist, d[1] / dist, d[2] / dist};
+      const double inv = 1.0 / dist;
+      const double n[3] = {d[0] * inv, d[1] * inv, d[2] * inv};
       const double rate =
           (v[i][0] - v[j][0]) * n[0] + (v[i][1] - v[j][1]) * n[1] + (v[i][2] - v[j][2]) * n[2];
       const auto lo = static_cast<std::uint64_t>(std::min(tag[i], tag[j]));
       const auto hi = static_cast<std::uint64_t>(std::max(tag[i], tag[j]));
-      const HysteresisLaw& law = law_of(pairs_now_, pairs_before_, (lo << 32U) | hi,
-                                        tables_[static_cast<std::size_t>(row)], rate,
-                                        pair_estar_[cell], radius[i] * radius[j] / radsum);
-      const double force_n = law.damping(radsum - dist, rate);  // [N], pushes j away from i
+      // [N], pushes j away from i
+      const double force_n = pair_slots_.damping(k, (lo << 32U) | hi, radsum - dist, rate, [&] {
+        return corlab::dem::onset_law(tables_[static_cast<std::size_t>(row)], rate,
+                                      pair_estar_[cell], radius[i] * radius[j] / radsum);
+      });
       for (int a = 0; a < 3; ++a) {
         f[i][a] -= force_n * n[a];
         if (newton || j < nlocal) f[j][a] += force_n * n[a];
       }
     }
   }
-  std::swap(pairs_now_, pairs_before_);
+  if (rebuilt) pair_slots_.settle();
 }
 
-void FixCorlabEv::add_wall_forces() {
-  walls_now_.clear();
+void FixCorlabEv::add_wall_forces(bool rebuilt) {
+  const auto nlocal = static_cast<std::size_t>(atom->nlocal);
+  if (rebuilt || wall_slots_.size() != nlocal * walls_.size()) {
+    wall_slots_.rebuild(nlocal * walls_.size());
+    rebuilt = true;
+  }
   double** x = atom->x;
   double** v = atom->v;
   double** f = atom->f;
   const double* radius = atom->radius;
-  const auto nwalls = static_cast<std::uint64_t>(walls_.size());
-  for (int i = 0; i < atom->nlocal; ++i) {
-    if ((atom->mask[i] & groupbit) == 0) continue;
-    const auto t = static_cast<std::size_t>(atom->type[i]);
-    for (std::size_t w = 0; w < walls_.size(); ++w) {
-      const WallRows& wall = walls_[w];
-      if (wall.row[t] < 0) continue;
-      const auto contact =
-          corlab::dem::wall_contact(wall.wall, {x[i][0], x[i][1], x[i][2]}, radius[i]);
-      if (!contact) continue;
+  const int* type = atom->type;
+  const int* mask = atom->mask;
+  // Wall by wall (slot w * nlocal + i): most atoms touch no wall, and a plane's test is one dot
+  // product.
+  for (std::size_t w = 0; w < walls_.size(); ++w) {
+    const WallRows& wall = walls_[w];
+    const bool plane = wall.wall.shape == corlab::dem::WallShape::plane;
+    for (std::size_t i = 0; i < nlocal; ++i) {
+      const std::size_t k = w * nlocal + i;
+      const std::array<double, 3> xi{x[i][0], x[i][1], x[i][2]};
+      if (plane && !(radius[i] > corlab::dem::plane_gap(wall.wall, xi))) {
+        wall_slots_.release(k);
+        continue;
+      }
+      const int row = wall.row[static_cast<std::size_t>(type[i])];
+      const auto contact = corlab::dem::wall_contact(wall.wall, xi, radius[i]);
+      if (!contact || row < 0 || (mask[i] & groupbit) == 0) {
+        wall_slots_.release(k);
+        continue;
+      }
       const auto& n = contact->normal;
       const double rate = -(v[i][0] * n[0] + v[i][1] * n[1] + v[i][2] * n[2]);
-      const auto key = static_cast<std::uint64_t>(atom->tag[i]) * nwalls + w;
-      const HysteresisLaw& law =
-          law_of(walls_now_, walls_before_, key, tables_[static_cast<std::size_t>(wall.row[t])],
-                 rate, wall.estar[t], radius[i]);
-      const double force_n = law.damping(contact->overlap, rate);
-      for (int a = 0; a < 3; ++a) f[i][a] += force_n * n[static_cast<std::size_t>(a)];
+      const auto key = static_cast<std::uint64_t>(atom->tag[i]) * walls_.size() + w;
+      const double force_n = wall_slots_.damping(k, key, contact->overlap, rate, [&] {
+        return corlab::dem::onset_law(tables_[static_cast<std::size_t>(row)], rate,
+                                      wall.estar[static_cast<std::size_t>(type[i])], radius[i]);
+      });
+      for (std::size_t a = 0; a < 3; ++a) f[i][a] += force_n * n[a];
     }
   }
-  std::swap(walls_now_, walls_before_);
+  if (rebuilt) wall_slots_.settle();
 }
 
 }  // namespace corlab::lammps

@@ -12,7 +12,9 @@
 ///       inside) type T E* e_1 .. e_N ...                         (the last wall's contact with
 ///       type T)
 /// The speeds are V_MIN + k (V_MAX - V_MIN)/(N - 1) [m/s]. A contact's v_in is its normal approach
-/// speed at its first step, kept per contact (atom IDs) on its MPI rank. Forces are added in
+/// speed at its first step, kept per contact on its MPI rank: in a slot per neighbour-list entry
+/// (and per local atom and wall), carried by atom IDs to the new slots when LAMMPS rebuilds its
+/// neighbour list, so that no step but a rebuild looks anything up. Forces are added in
 /// pre_reverse: onto ghost atoms too when newton_pair is on (LAMMPS sums them into their owners),
 /// as pair_style granular adds its own. Not counted in the virial (pressure).
 
@@ -45,21 +47,39 @@ class FixCorlabEv : public LAMMPS_NS::Fix {
     std::vector<int> row;
     std::vector<double> estar;
   };
-  using Memory = std::unordered_map<std::uint64_t, corlab::dem::HysteresisLaw>;
+  /// Per-contact memory laid out like the neighbour list (or local atoms x walls), indexed
+  /// directly between rebuilds; at a rebuild the touching contacts carry over by key.
+  class Slots {
+   public:
+    /// New layout of n slots; the contacts touching before move to `carried_`.
+    void rebuild(std::size_t n);
+    /// The damping [N] of the contact in slot k, touching now at `overlap` [m] and `rate`
+    /// [m/s]: its law kept, carried over a rebuild, or onset() (a contact's first step).
+    template <class Onset>
+    double damping(
+        std::size_t k, std::uint64_t key, double overlap, double rate, const Onset& onset);
+    /// Slot k does not touch: its next touch starts a new contact.
+    void release(std::size_t k) { active_[k] = 0; }
+    /// After the first step of a layout: what did not carry over is gone.
+    void settle() { carried_.clear(); }
+    std::size_t size() const { return active_.size(); }
+
+   private:
+    struct Slot {
+      corlab::dem::HysteresisLaw law;
+      double coefficient = 0.0;  // law.damping_coefficient()
+      std::uint64_t key = 0;
+    };
+    std::vector<std::uint8_t> active_;  // apart from the laws: every step reads each flag
+    std::vector<Slot> slots_;
+    std::unordered_map<std::uint64_t, Slot> carried_;
+  };
 
   [[noreturn]] void fail(const std::string& message);
   double number(int narg, char** arg, int index, const char* what);
   int parse_table(int narg, char** arg, int index, int n, std::vector<double>& row);
-  void add_pair_forces();
-  void add_wall_forces();
-  // The contact's law: kept from its first step (in `before`) or taken now.
-  static const corlab::dem::HysteresisLaw& law_of(Memory& now,
-                                                  const Memory& before,
-                                                  std::uint64_t key,
-                                                  const corlab::dem::UniformTable& chi,
-                                                  double rate,
-                                                  double estar,
-                                                  double radius);
+  void add_pair_forces(bool rebuilt);
+  void add_wall_forces(bool rebuilt);
 
   double v_min_ = 0.0;
   double v_max_ = 0.0;
@@ -68,7 +88,11 @@ class FixCorlabEv : public LAMMPS_NS::Fix {
   std::vector<int> pair_row_;       // [(ntypes + 1) * ti + tj] -> tables_ index or -1
   std::vector<double> pair_estar_;  // E* [Pa] of each type pair
   std::vector<WallRows> walls_;
-  Memory pairs_now_, pairs_before_, walls_now_, walls_before_;
+  Slots pair_slots_;
+  Slots wall_slots_;
+  std::vector<std::size_t> pair_offset_;  // first slot of each ilist entry
+  const void* list_ = nullptr;            // the neighbour list the slots follow
+  LAMMPS_NS::bigint ncalls_ = -1;         // its builds so far (Neighbor::ncalls)
 };
 
 }  // namespace corlab::lammps
