@@ -36,7 +36,7 @@ FixCorlabEv::FixCorlabEv(LAMMPS_NS::LAMMPS* instance, int narg, char** arg)
     fail("N = " + std::string(arg[6]) + " must be an integer >= 2");
   }
   const int n = static_cast<int>(rows);
-  const auto size = static_cast<std::size_t>(ntypes_ + 1);
+  const auto size = static_cast<std::size_t>(ntypes_) + 1;
   pair_row_.assign(size * size, -1);
   pair_estar_.assign(size * size, 0.0);
   const auto type_of = [&](int index) {
@@ -198,7 +198,7 @@ void FixCorlabEv::add_pair_forces(bool rebuilt) {
   const int* mask = atom->mask;
   const int nlocal = atom->nlocal;
   const bool newton = force->newton_pair != 0;
-  const auto size = static_cast<std::size_t>(ntypes_ + 1);
+  const auto size = static_cast<std::size_t>(ntypes_) + 1;
   for (int ii = 0; ii < list->inum; ++ii) {
     const int i = list->ilist[ii];
     if ((mask[i] & groupbit) == 0) continue;

@@ -227,6 +227,7 @@ std::string lammps_compiled_fix(const ExportSpec& spec, const std::vector<PairCa
   const auto speeds = table_speeds(spec, kHookTableRows);
   const auto table = [&](const PairCalibration& p) {
     std::vector<std::string> e;
+    e.reserve(speeds.size());
     for (const double v : speeds) e.push_back(fmt::format("{:.10g}", std::min(p.curve(v), 1.0)));
     return fmt::format("{:.10g} {}", p.effective_modulus, fmt::join(e, " "));
   };

@@ -216,6 +216,41 @@ namespace {
 // the compiled fix corlab/ev (lammps_compiled.in, run by corlab-lammps).
 enum class Hook { none, python, compiled };
 
+// The header's paragraph on how the fragment delivers e(v) (none: every pair constant).
+std::string ev_comment(Hook kind, bool any_curve) {
+  if (any_curve && kind == Hook::compiled) {
+    return "# Run: `corlab-lammps -in in.file` (built with corlab where Debian's liblammps-dev is\n"
+           "# installed; plain lmp stops at `fix corlab/ev`: Unrecognized fix style). e(v): "
+           "elastic\n"
+           "# Hertz plus fix corlab/ev, the damping K delta^1.5 chi delta_dot / v_in with the "
+           "exact\n"
+           "# chi(e(v_in)) of each contact's normal approach speed v_in, in C++ (lammps.in's "
+           "Python\n"
+           "# hook, the same law and table, at native speed): pairs of pair_style granular's\n"
+           "# neighbour list and the walls named in its line (edit both). Its virial is not "
+           "counted\n"
+           "# (pressure); contact memory is per MPI rank (a contact that moves to another rank\n"
+           "# restarts its v_in); newton on or off; no run_style respa.\n";
+  }
+  if (any_curve && kind == Hook::python) {
+    return "# e(v): elastic Hertz plus a per-contact hook (fix python/invoke, post_force; needs\n"
+           "# Debian's python3-lammps and python3-scipy) adding the hysteresis damping\n"
+           "# K delta^1.5 chi delta_dot / v_in with the exact chi(e(v_in)) of each contact's "
+           "normal\n"
+           "# approach speed v_in (tables below, linear in v, end values outside). Its virial is "
+           "not\n"
+           "# counted (pressure); contact memory is per MPI rank (a contact that moves to another\n"
+           "# rank restarts its v_in). No Python: `corlab dem` also writes lammps_nopython.in.\n";
+  }
+  if (any_curve) {
+    return "# e(v) without Python: per pair the better of `damping viscoelastic` (F_d = eta a m*\n"
+           "# delta_dot, a = sqrt(R* delta); its e falls as 1 - c v^(1/5)) with eta fitted to the\n"
+           "# target, and the constant e closest to it (misfits below). lammps.in delivers e(v)\n"
+           "# itself (fix python/invoke), lammps_compiled.in at native speed (corlab-lammps).\n";
+  }
+  return "";
+}
+
 std::string write_fragment(const ExportSpec& spec,
                            const std::vector<PairCalibration>& pairs,
                            Hook kind) {
@@ -240,31 +275,7 @@ std::string write_fragment(const ExportSpec& spec,
       "# Constant e: `damping tsuji` maps e_in to alpha with a polynomial that is not exact for\n"
       "# this law (asked 0.3 it delivers 0.440), so e_in is pre-compensated: alpha(e_in) = the\n"
       "# exact alpha(e) (corlab ODE); e = 1: no damping.\n";
-  if (hook && kind == Hook::compiled) {
-    out +=
-        "# Run: `corlab-lammps -in in.file` (built with corlab where Debian's liblammps-dev is\n"
-        "# installed; plain lmp stops at `fix corlab/ev`: Unrecognized fix style). e(v): elastic\n"
-        "# Hertz plus fix corlab/ev, the damping K delta^1.5 chi delta_dot / v_in with the exact\n"
-        "# chi(e(v_in)) of each contact's normal approach speed v_in, in C++ (lammps.in's Python\n"
-        "# hook, the same law and table, at native speed): pairs of pair_style granular's\n"
-        "# neighbour list and the walls named in its line (edit both). Its virial is not counted\n"
-        "# (pressure); contact memory is per MPI rank (a contact that moves to another rank\n"
-        "# restarts its v_in); newton on or off; no run_style respa.\n";
-  } else if (hook) {
-    out +=
-        "# e(v): elastic Hertz plus a per-contact hook (fix python/invoke, post_force; needs\n"
-        "# Debian's python3-lammps and python3-scipy) adding the hysteresis damping\n"
-        "# K delta^1.5 chi delta_dot / v_in with the exact chi(e(v_in)) of each contact's normal\n"
-        "# approach speed v_in (tables below, linear in v, end values outside). Its virial is not\n"
-        "# counted (pressure); contact memory is per MPI rank (a contact that moves to another\n"
-        "# rank restarts its v_in). No Python: `corlab dem` also writes lammps_nopython.in.\n";
-  } else if (any_curve) {
-    out +=
-        "# e(v) without Python: per pair the better of `damping viscoelastic` (F_d = eta a m*\n"
-        "# delta_dot, a = sqrt(R* delta); its e falls as 1 - c v^(1/5)) with eta fitted to the\n"
-        "# target, and the constant e closest to it (misfits below). lammps.in delivers e(v)\n"
-        "# itself (fix python/invoke), lammps_compiled.in at native speed (corlab-lammps).\n";
-  }
+  out += ev_comment(kind, any_curve);
   out += "# Type pairs, the target and how this fragment delivers it:\n";
   for (const auto& p : pairs) out += route_comment(spec, p, route_of(p, python_hook));
   const auto [smallest, largest] =
