@@ -22,10 +22,12 @@ EXPLORER_DEBIAN_PACKAGES := emscripten python3-plotly libfmt-dev libtomlplusplus
   nlohmann-json3-dev dpkg-dev cmake ninja-build
 # Only the tests need these: the DEM codes the DEM exports are checked with (issue 11; apt install
 # time measured on the dev machine: lammps 5 s (13.6 MB), liggghts 6 s, yade 42 s (118 MB, 868 MB
-# disk)), python3-lammps and python3-scipy (the LAMMPS export's fix python/invoke hook), headless
+# disk)), python3-lammps and python3-scipy (the LAMMPS export's fix python/invoke hook),
+# liblammps-dev (LAMMPS's headers and CMake package: corlab-lammps, the compiled e(v) route of
+# lammps_compiled.in, is built when configure finds it), headless
 # chromium driven by selenium (the explorer's and the report's browser tests), lintian (the .deb).
 # `make test` installs them, `make run` does not.
-TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy \
+TEST_DEBIAN_PACKAGES := lammps liggghts yade python3-lammps python3-scipy liblammps-dev \
   chromium chromium-driver python3-selenium lintian $(EXPLORER_DEBIAN_PACKAGES)
 
 .PHONY: deps deps-test configure build run test test-cpp test-python test-asan lint lint-cpp lint-python \

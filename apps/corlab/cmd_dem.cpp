@@ -166,6 +166,7 @@ int run_dem(const DemArgs& args) {
   ensure_output_directory(dir, "--out");
   write_file(dir / "lammps.in", dem::write_lammps(spec, pairs));
   write_file(dir / "lammps_nopython.in", dem::write_lammps(spec, pairs, false));
+  write_file(dir / "lammps_compiled.in", dem::write_lammps_compiled(spec, pairs));
   write_file(dir / "liggghts.in", dem::write_liggghts(spec, pairs));
   write_file(dir / "yade_fragment.py", dem::write_yade(spec, pairs));
   write_file(dir / "restitution_table.csv", dem::write_table_csv(spec, pairs, args.table_points));
@@ -192,8 +193,8 @@ int run_dem(const DemArgs& args) {
       dem::lammps_time_step(pairs, true), dem::lammps_time_step(pairs, false),
       dem::liggghts_time_step(pairs), dem::yade_time_step(pairs), dem::kTimeStepError);
   fmt::print(
-      "wrote {}/{{lammps.in, lammps_nopython.in, liggghts.in, yade_fragment.py, "
-      "restitution_table.csv, dem_export.json}}\n",
+      "wrote {}/{{lammps.in, lammps_nopython.in, lammps_compiled.in, liggghts.in, "
+      "yade_fragment.py, restitution_table.csv, dem_export.json}}\n",
       dir.string());
   return 0;
 }

@@ -12,6 +12,7 @@
 #include "corlab/dem/tangential.hpp"
 #include "dem/detail/export_spec.hpp"
 #include "dem/detail/export_text.hpp"
+#include "dem/detail/lammps_hook.hpp"
 
 namespace corlab::dem {
 namespace {
@@ -125,211 +126,6 @@ std::string route_comment(const ExportSpec& spec, const PairCalibration& p, Rout
   }
 }
 
-// The hook's functions (Python, inside LAMMPS's `python ... here """..."""`): per-contact memory of
-// v_in, the damping, and the post_force callback over wall contacts and particle pairs.
-constexpr std::string_view kHookFunctions =
-    R"(corlab_memory = {}
-corlab_lmp = []
-corlab_dv = corlab_v[1] - corlab_v[0]
-corlab_planes = [w for w, wall in enumerate(corlab_walls) if wall[0] == "plane"]
-corlab_plane_n = np.array([corlab_walls[w][2] for w in corlab_planes], float).reshape(-1, 3)
-corlab_plane_d = (np.array([corlab_walls[w][1] for w in corlab_planes], float).reshape(-1, 3)
-                  * corlab_plane_n).sum(axis=1)
-corlab_wall_rows = np.array(corlab_wall_row, np.int64).reshape(len(corlab_walls), len(corlab_row))
-corlab_wall_estars = np.array(corlab_wall_estar, float).reshape(len(corlab_walls), len(corlab_row))
-
-def corlab_factor(name, keys, rows, rate):
-    # chi(e(v_in)) / v_in of each contact [s/m]: taken at its first step (v_in = the approach
-    # speed then, chi from the pair's table, linear in v, end values outside) and kept.
-    old_keys, old_f = corlab_memory.get(name, (np.zeros(0, np.int64), np.zeros(0)))
-    pos = np.clip((rate - corlab_v[0]) / corlab_dv, 0.0, corlab_v.size - 1.0)
-    k = np.minimum(pos.astype(np.int64), corlab_v.size - 2)
-    w = pos - k
-    chi = corlab_chi[rows, k] * (1.0 - w) + corlab_chi[rows, k + 1] * w
-    factor = np.where(rate > 0, chi / np.maximum(rate, 1e-300), 0.0)
-    if old_keys.size and keys.size:
-        j = np.minimum(np.searchsorted(old_keys, keys), old_keys.size - 1)
-        found = old_keys[j] == keys
-        factor[found] = old_f[j[found]]
-    order = np.argsort(keys)
-    corlab_memory[name] = (keys[order], factor[order])
-    return factor
-
-def corlab_damping(factor, rate, estar, radius, overlap):
-    # Hysteresis damping K delta^1.5 chi rate / v_in [N], K = 4/3 E* sqrt(R*).
-    return 4.0 / 3.0 * estar * np.sqrt(radius) * overlap ** 1.5 * factor * rate
-
-corlab_plane_rows = corlab_wall_rows[corlab_planes]
-corlab_near = {}
-
-def corlab_candidates(x, r, tag):
-    # Atom pairs and (atom, plane) that may touch before some atom moves skin/2 = r_min/2: kept
-    # from the step they were found (cKDTree) until an atom moves that far or LAMMPS reorders.
-    c = corlab_near
-    if ("tag" not in c or c["tag"].shape != tag.shape or not np.array_equal(c["tag"], tag)
-            or ((x - c["x"]) ** 2).sum(axis=1).max() > 0.25 * c["skin"] ** 2):
-        c["tag"], c["x"], c["skin"] = tag.copy(), x.copy(), r.min()
-        tree = cKDTree(x, balanced_tree=False, compact_nodes=False)
-        c["pairs"] = tree.query_pairs(2.0 * r.max() + c["skin"], output_type="ndarray")
-        gap = x @ corlab_plane_n.T - corlab_plane_d
-        c["plane"] = np.nonzero(gap < (r + c["skin"])[:, None])
-    return c["pairs"], c["plane"]
-
-def corlab_wall_contacts(x, r, t, near):
-    # Every (atom, wall) in contact: atom, wall, overlap [m], unit normal into the particles.
-    i, k = near
-    gap = (x[i] * corlab_plane_n[k]).sum(axis=1) - corlab_plane_d[k]
-    m = (r[i] > gap) & (corlab_plane_rows[k, t[i]] >= 0)
-    i, k = i[m], k[m]
-    atoms, walls = [i], [np.array(corlab_planes, np.int64)[k]]
-    overlaps, normals = [r[i] - gap[m]], [corlab_plane_n[k]]
-    for w, wall in enumerate(corlab_walls):
-        if wall[0] != "cylinder":
-            continue
-        axis, c1, c2, radius, lo, hi = wall[1:]
-        o = [a for a in range(3) if a != axis]
-        d = x[:, o] - np.array([c1, c2])
-        rho = np.sqrt((d * d).sum(axis=1))
-        i = np.nonzero((r > radius - rho) & (corlab_wall_rows[w][t] >= 0) & (x[:, axis] >= lo)
-                       & (x[:, axis] <= hi))[0]
-        n = np.zeros((i.size, 3))
-        n[:, o] = -d[i] / np.maximum(rho[i], 1e-300)[:, None]
-        atoms.append(i)
-        walls.append(np.full(i.size, w, np.int64))
-        overlaps.append(r[i] - (radius - rho[i]))
-        normals.append(n)
-    return (np.concatenate(atoms), np.concatenate(walls), np.concatenate(overlaps),
-            np.concatenate(normals))
-
-def corlab_ev_force(lmpptr, vflag):
-    if not corlab_lmp:
-        corlab_lmp.append(lammps(ptr=lmpptr))
-    lmp = corlab_lmp[0]
-    nlocal = lmp.extract_global("nlocal")
-    nall = nlocal + lmp.extract_global("nghost")
-    x = lmp.numpy.extract_atom("x", nelem=nall)
-    v = lmp.numpy.extract_atom("v", nelem=nall)
-    r = lmp.numpy.extract_atom("radius", nelem=nall)
-    t = lmp.numpy.extract_atom("type", nelem=nall)
-    tag = lmp.numpy.extract_atom("id", nelem=nall).astype(np.int64)
-    f = lmp.numpy.extract_atom("f", nelem=nlocal)
-    pairs, plane = corlab_candidates(x[:nall], r[:nall], tag[:nall])
-    if corlab_walls:
-        near = plane[0] < nlocal
-        i, w, overlap, n = corlab_wall_contacts(x[:nlocal], r[:nlocal], t[:nlocal],
-                                                (plane[0][near], plane[1][near]))
-        rate = -(v[i] * n).sum(axis=1)
-        factor = corlab_factor("wall", tag[i] * len(corlab_walls) + w,
-                               corlab_wall_rows[w, t[i]], rate)
-        force = corlab_damping(factor, rate, corlab_wall_estars[w, t[i]], r[i], overlap)
-        for a in range(3):
-            f[:, a] += np.bincount(i, force * n[:, a], minlength=nlocal)
-    if nall < 2 or corlab_row.max() < 0:
-        return
-    if pairs.size == 0:
-        corlab_factor("pair", np.zeros(0, np.int64), np.zeros(0, np.int64), np.zeros(0))
-        return
-    i, j = pairs[:, 0], pairs[:, 1]
-    d = x[j] - x[i]
-    dist = np.sqrt((d * d).sum(axis=1))
-    overlap = r[i] + r[j] - dist
-    m = (overlap > 0) & (corlab_row[t[i], t[j]] >= 0) & ((i < nlocal) | (j < nlocal))
-    i, j, d, dist, overlap = i[m], j[m], d[m], dist[m], overlap[m]
-    n = d / dist[:, None]
-    rate = ((v[i] - v[j]) * n).sum(axis=1)
-    keys = np.minimum(tag[i], tag[j]) * 2 ** 31 + np.maximum(tag[i], tag[j])
-    factor = corlab_factor("pair", keys, corlab_row[t[i], t[j]], rate)
-    force = corlab_damping(factor, rate, corlab_estar[t[i], t[j]], r[i] * r[j] / (r[i] + r[j]),
-                           overlap)
-    li, lj = i < nlocal, j < nlocal
-    for a in range(3):
-        f[:, a] += (np.bincount(j[lj], force[lj] * n[lj, a], minlength=nlocal)
-                    - np.bincount(i[li], force[li] * n[li, a], minlength=nlocal))
-)";
-
-// The pair of type `t` with wall material `m` (nullptr: none, e.g. no wall material).
-const PairCalibration* wall_pair(const std::vector<PairCalibration>& pairs, int t, int m) {
-  for (const auto& p : pairs) {
-    if (p.type_j == 0 && p.type_i == t && p.wall == m) return &p;
-  }
-  return nullptr;
-}
-
-// One wall as the hook's Python tuple: ("plane", point, normal) or ("cylinder", axis, c1, c2,
-// radius, lo, hi) [m].
-std::string hook_wall(const Wall& w) {
-  if (w.shape == WallShape::plane) {
-    return fmt::format("(\"plane\", ({:.17g}, {:.17g}, {:.17g}), ({:.17g}, {:.17g}, {:.17g}))",
-                       w.point[0], w.point[1], w.point[2], w.normal[0], w.normal[1], w.normal[2]);
-  }
-  return fmt::format("(\"cylinder\", {}, {:.17g}, {:.17g}, {:.17g}, {:.17g}, {:.17g})", w.axis,
-                     w.centre[0], w.centre[1], w.radius, w.lo, w.hi);
-}
-
-// The Python of the hook (LAMMPS `python ... here`): tables, then the post_force function.
-std::string hook_python(const ExportSpec& spec, const std::vector<PairCalibration>& pairs) {
-  const std::size_t n = spec.types.size();
-  std::vector<std::vector<int>> row(n + 1, std::vector<int>(n + 1, -1));
-  std::vector<std::vector<double>> estar(n + 1, std::vector<double>(n + 1, 0.0));
-  std::string chi;
-  int rows = 0;
-  std::vector<int> row_of(pairs.size(), -1);
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto& p = pairs[k];
-    if (p.constant) continue;
-    row_of[k] = rows++;
-    if (p.type_j != 0) {
-      const auto i = static_cast<std::size_t>(p.type_i);
-      const auto j = static_cast<std::size_t>(p.type_j);
-      row[i][j] = row[j][i] = row_of[k];
-      estar[i][j] = estar[j][i] = p.effective_modulus;
-    }
-    std::vector<std::string> c;
-    for (const double v : detail::table_speeds(spec, detail::kHookTableRows)) {
-      c.push_back(fmt::format("{:.8g}", exact_chi(std::min(p.curve(v), 1.0))));
-    }
-    chi += fmt::format("    [{}],  # {}\n", fmt::join(c, ", "), p.name());
-  }
-  std::string out = "python corlab_ev_force here \"\"\"\n";
-  out += "import numpy as np\nfrom lammps import lammps\nfrom scipy.spatial import cKDTree\n";
-  out += "# row of each particle type pair [type i][type j] in corlab_chi, -1: not the hook's\n";
-  out += "corlab_row = np.array([";
-  for (const auto& r : row) out += fmt::format("[{}], ", fmt::join(r, ", "));
-  out += "])\ncorlab_estar = np.array([";  // E* [Pa] of each type pair
-  for (const auto& r : estar) out += fmt::format("[{}], ", fmt::join(r, ", "));
-  std::vector<std::string> vs;
-  for (const double v : detail::table_speeds(spec, detail::kHookTableRows)) {
-    vs.push_back(fmt::format("{:.8g}", v));
-  }
-  out += fmt::format("])\ncorlab_v = np.array([{}])  # m/s\ncorlab_chi = np.array([\n{}])\n",
-                     fmt::join(vs, ", "), chi);
-  out +=
-      "# The walls of the fix wall/gran/region fixes below (edit both), [m]; per wall and type\n"
-      "# the row in corlab_chi (-1: not the hook's) and E* [Pa]\ncorlab_walls = [";
-  std::vector<std::string> walls;
-  std::vector<std::string> wall_rows;
-  std::vector<std::string> wall_estar;
-  for (const Wall& w : export_walls(spec)) {
-    walls.push_back(hook_wall(w));
-    std::vector<int> r(n + 1, -1);
-    std::vector<double> e(n + 1, 0.0);
-    for (int t = 1; t <= static_cast<int>(n); ++t) {
-      const PairCalibration* p = wall_pair(pairs, t, w.material);
-      if (p == nullptr) continue;
-      r[static_cast<std::size_t>(t)] = row_of[static_cast<std::size_t>(p - pairs.data())];
-      e[static_cast<std::size_t>(t)] = p->effective_modulus;
-    }
-    wall_rows.push_back(fmt::format("np.array([{}])", fmt::join(r, ", ")));
-    wall_estar.push_back(fmt::format("np.array([{}])", fmt::join(e, ", ")));
-  }
-  out +=
-      fmt::format("{}]\ncorlab_wall_row = [{}]\ncorlab_wall_estar = [{}]\n", fmt::join(walls, ", "),
-                  fmt::join(wall_rows, ", "), fmt::join(wall_estar, ", "));
-  out += kHookFunctions;
-  out += "\"\"\"\nfix corlab_ev all python/invoke 1 post_force corlab_ev_force\n";
-  return out;
-}
-
 // The LAMMPS region of wall `w` (1-based id): the particles' side is its inside.
 std::string wall_region(const Wall& wall, int w) {
   if (wall.shape == WallShape::plane) {
@@ -371,7 +167,7 @@ std::string wall_fixes(const ExportSpec& spec,
     out += fmt::format("# wall {}: {}\n", w, wall_label(spec, walls[k].material));
     out += wall_region(walls[k], w);
     for (int t = 1; t <= static_cast<int>(spec.types.size()); ++t) {
-      const PairCalibration* p = wall_pair(pairs, t, walls[k].material);
+      const PairCalibration* p = detail::wall_pair(pairs, t, walls[k].material);
       if (p == nullptr) continue;
       out += fmt::format(
           "fix corlab_wall{0}_t{1} corlab_type{1} wall/gran/region granular {2} region "
@@ -414,14 +210,59 @@ double lammps_time_step(const std::vector<PairCalibration>& pairs, bool python_h
       pairs, [python_hook](const PairCalibration& p) { return pair_law(p, python_hook); });
 }
 
-std::string write_lammps(const ExportSpec& spec,
-                         const std::vector<PairCalibration>& pairs,
-                         bool python_hook) {
+namespace {
+
+// Which e(v) hook a fragment carries: none (lammps_nopython.in), the Python one (lammps.in) or
+// the compiled fix corlab/ev (lammps_compiled.in, run by corlab-lammps).
+enum class Hook { none, python, compiled };
+
+// The header's paragraph on how the fragment delivers e(v) (none: every pair constant).
+std::string ev_comment(Hook kind, bool any_curve) {
+  if (any_curve && kind == Hook::compiled) {
+    return "# Run: `corlab-lammps -in in.file` (built with corlab where Debian's liblammps-dev is\n"
+           "# installed; plain lmp stops at `fix corlab/ev`: Unrecognized fix style). e(v): "
+           "elastic\n"
+           "# Hertz plus fix corlab/ev, the damping K delta^1.5 chi delta_dot / v_in with the "
+           "exact\n"
+           "# chi(e(v_in)) of each contact's normal approach speed v_in, in C++ (lammps.in's "
+           "Python\n"
+           "# hook, the same law and table, at native speed): pairs of pair_style granular's\n"
+           "# neighbour list and the walls named in its line (edit both). Its virial is not "
+           "counted\n"
+           "# (pressure); contact memory is per MPI rank (a contact that moves to another rank\n"
+           "# restarts its v_in); newton on or off; no run_style respa.\n";
+  }
+  if (any_curve && kind == Hook::python) {
+    return "# e(v): elastic Hertz plus a per-contact hook (fix python/invoke, post_force; needs\n"
+           "# Debian's python3-lammps and python3-scipy) adding the hysteresis damping\n"
+           "# K delta^1.5 chi delta_dot / v_in with the exact chi(e(v_in)) of each contact's "
+           "normal\n"
+           "# approach speed v_in (tables below, linear in v, end values outside). Its virial is "
+           "not\n"
+           "# counted (pressure); contact memory is per MPI rank (a contact that moves to another\n"
+           "# rank restarts its v_in). No Python: `corlab dem` also writes lammps_nopython.in.\n";
+  }
+  if (any_curve) {
+    return "# e(v) without Python: per pair the better of `damping viscoelastic` (F_d = eta a m*\n"
+           "# delta_dot, a = sqrt(R* delta); its e falls as 1 - c v^(1/5)) with eta fitted to the\n"
+           "# target, and the constant e closest to it (misfits below). lammps.in delivers e(v)\n"
+           "# itself (fix python/invoke), lammps_compiled.in at native speed (corlab-lammps).\n";
+  }
+  return "";
+}
+
+std::string write_fragment(const ExportSpec& spec,
+                           const std::vector<PairCalibration>& pairs,
+                           Hook kind) {
+  const bool python_hook = kind != Hook::none;  // the e(v) routes: the same law either way
   const bool any_curve =
       std::any_of(pairs.begin(), pairs.end(), [](const auto& p) { return !p.constant; });
   const bool hook = python_hook && any_curve;
   std::string out = detail::export_header(
-      spec, "LAMMPS (pair_style granular, tested with Debian 12's 29Sep2021 update 2)");
+      spec, kind == Hook::compiled
+                ? "corlab-lammps (Debian 12's LAMMPS 29Sep2021 update 2 with corlab's fix "
+                  "corlab/ev)"
+                : "LAMMPS (pair_style granular, tested with Debian 12's 29Sep2021 update 2)");
   out +=
       "# Needs: units si, atom_style sphere, comm_modify vel yes, fix nve/sphere; include it "
       "after\n"
@@ -434,21 +275,7 @@ std::string write_lammps(const ExportSpec& spec,
       "# Constant e: `damping tsuji` maps e_in to alpha with a polynomial that is not exact for\n"
       "# this law (asked 0.3 it delivers 0.440), so e_in is pre-compensated: alpha(e_in) = the\n"
       "# exact alpha(e) (corlab ODE); e = 1: no damping.\n";
-  if (hook) {
-    out +=
-        "# e(v): elastic Hertz plus a per-contact hook (fix python/invoke, post_force; needs\n"
-        "# Debian's python3-lammps and python3-scipy) adding the hysteresis damping\n"
-        "# K delta^1.5 chi delta_dot / v_in with the exact chi(e(v_in)) of each contact's normal\n"
-        "# approach speed v_in (tables below, linear in v, end values outside). Its virial is not\n"
-        "# counted (pressure); contact memory is per MPI rank (a contact that moves to another\n"
-        "# rank restarts its v_in). No Python: `corlab dem` also writes lammps_nopython.in.\n";
-  } else if (any_curve) {
-    out +=
-        "# e(v) without Python: per pair the better of `damping viscoelastic` (F_d = eta a m*\n"
-        "# delta_dot, a = sqrt(R* delta); its e falls as 1 - c v^(1/5)) with eta fitted to the\n"
-        "# target, and the constant e closest to it (misfits below). lammps.in delivers e(v)\n"
-        "# itself (fix python/invoke).\n";
-  }
+  out += ev_comment(kind, any_curve);
   out += "# Type pairs, the target and how this fragment delivers it:\n";
   for (const auto& p : pairs) out += route_comment(spec, p, route_of(p, python_hook));
   const auto [smallest, largest] =
@@ -487,11 +314,27 @@ std::string write_lammps(const ExportSpec& spec,
                        normal_model(spec, p, route_of(p, python_hook)));
   }
   out += wall_fixes(spec, pairs, python_hook);
-  if (hook) out += hook_python(spec, pairs);
+  if (hook) {
+    out += kind == Hook::compiled ? detail::lammps_compiled_fix(spec, pairs)
+                                  : detail::lammps_python_hook(spec, pairs);
+  }
   const auto law = [python_hook](const PairCalibration& p) { return pair_law(p, python_hook); };
   out += detail::time_step_comment(spec, pairs, law);
   out += fmt::format("timestep {:.4g}\n", detail::recommended_step(pairs, law));
   return out;
+}
+
+}  // namespace
+
+std::string write_lammps(const ExportSpec& spec,
+                         const std::vector<PairCalibration>& pairs,
+                         bool python_hook) {
+  return write_fragment(spec, pairs, python_hook ? Hook::python : Hook::none);
+}
+
+std::string write_lammps_compiled(const ExportSpec& spec,
+                                  const std::vector<PairCalibration>& pairs) {
+  return write_fragment(spec, pairs, Hook::compiled);
 }
 
 }  // namespace corlab::dem

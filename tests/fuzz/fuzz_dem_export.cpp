@@ -48,13 +48,14 @@ ExportSpec spec_with(const std::vector<std::string>& text) {
   return spec;
 }
 
-// The lines of the four scripts that are not comments.
+// The lines of the five scripts that are not comments.
 std::string commands(const ExportSpec& spec) {
   const auto pairs = corlab::dem::calibrate_pairs(spec);
   std::string out;
   for (const auto& script :
        {corlab::dem::write_lammps(spec, pairs), corlab::dem::write_lammps(spec, pairs, false),
-        corlab::dem::write_liggghts(spec, pairs), corlab::dem::write_yade(spec, pairs)}) {
+        corlab::dem::write_lammps_compiled(spec, pairs), corlab::dem::write_liggghts(spec, pairs),
+        corlab::dem::write_yade(spec, pairs)}) {
     std::istringstream in(script);
     for (std::string line; std::getline(in, line);) {
       if (line.rfind('#', 0) != 0) out += line + "\n";

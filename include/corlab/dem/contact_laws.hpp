@@ -50,6 +50,20 @@ struct HysteresisLaw {
     if (overlap <= 0.0) return 0.0;
     return stiffness * std::pow(overlap, exponent) * (1.0 + chi * overlap_rate / impact_velocity);
   }
+  /// K chi / v_in [N s / m^(n+1)], fixed for the contact: damping() = it x delta^n x delta_dot.
+  double damping_coefficient() const { return stiffness * chi / impact_velocity; }
+  /// The damping part K delta^n chi delta_dot / v_in [N] alone (force() less elastic Hertz): what
+  /// a DEM code running elastic Hertz adds per contact (ev_damping.hpp), given
+  /// damping_coefficient() (kept per contact: no division per step).
+  double damping(double overlap, double overlap_rate, double coefficient) const {
+    if (overlap <= 0.0) return 0.0;
+    const double power =
+        exponent == 1.5 ? overlap * std::sqrt(overlap) : std::pow(overlap, exponent);
+    return coefficient * power * overlap_rate;
+  }
+  double damping(double overlap, double overlap_rate) const {
+    return damping(overlap, overlap_rate, damping_coefficient());
+  }
 };
 
 /// Viscoelastic Hertz with Tsuji et al. (1992) damping, as LAMMPS `damping tsuji` evaluates it:

@@ -248,6 +248,11 @@ double yade_time_step(const std::vector<PairCalibration>& pairs);
 std::string write_lammps(const ExportSpec& spec,
                          const std::vector<PairCalibration>& pairs,
                          bool python_hook = true);
+/// The same fragment with the e(v) damping in C++: `fix corlab/ev` (corlab-lammps, built where
+/// Debian's liblammps-dev is installed; apps/corlab-lammps) instead of the Python hook; the same
+/// law, table, delivery (lammps_delivery(.., true)) and time step.
+std::string write_lammps_compiled(const ExportSpec& spec,
+                                  const std::vector<PairCalibration>& pairs);
 /// LIGGGHTS 3.8 fragment (model hertz: constant e per type pair, exact; or thornton_ning).
 std::string write_liggghts(const ExportSpec& spec, const std::vector<PairCalibration>& pairs);
 /// YADE fragment (Python): materials, en per material pair, the e(v) hook, O.dt.

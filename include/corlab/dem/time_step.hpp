@@ -13,7 +13,7 @@ namespace corlab::dem {
 /// A normal contact law as one DEM code runs it.
 enum class CodeLaw {
   lammps_tsuji,            ///< LAMMPS pair granular hertz + damping tsuji (constant e)
-  lammps_hook,             ///< LAMMPS hertz + corlab's fix python/invoke hysteresis hook (e(v))
+  lammps_hook,             ///< LAMMPS hertz + corlab's e(v) hook (fix python/invoke or corlab/ev)
   lammps_viscoelastic,     ///< LAMMPS hertz + damping viscoelastic (no-Python e(v) fallback)
   liggghts_hertz,          ///< LIGGGHTS model hertz with coefficientRestitution
   liggghts_thornton_ning,  ///< LIGGGHTS model thornton_ning (yield ratio)

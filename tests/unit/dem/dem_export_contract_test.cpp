@@ -74,8 +74,8 @@ ExportSpec table_spec(const std::string& source, const std::string& pair_source)
 
 std::vector<std::string> scripts(const ExportSpec& spec) {
   const auto pairs = calibrate_pairs(spec);
-  return {write_lammps(spec, pairs), write_lammps(spec, pairs, false), write_liggghts(spec, pairs),
-          write_yade(spec, pairs)};
+  return {write_lammps(spec, pairs), write_lammps(spec, pairs, false),
+          write_lammps_compiled(spec, pairs), write_liggghts(spec, pairs), write_yade(spec, pairs)};
 }
 
 TEST(DemScriptText, EscapesEverythingACodeReadsInAComment) {

@@ -45,9 +45,11 @@ V_IN_MIN = 0.1
 MARGIN = 0.006  # m: the insertion region keeps this far from the walls
 
 
-def pour_export(corlab, work, extra=()):
-    """The pour's export (dem_export.json as a dict) in `work`."""
-    args = ["--restitution", str(RESTITUTION), "--friction", "0.3", "--v-max", "2"]
+def pour_export(corlab, work, extra=(), target=None):
+    """The pour's export (dem_export.json as a dict) in `work`; `target`: the arguments giving
+    e (default: --restitution RESTITUTION --v-max 2)."""
+    target = target or ["--restitution", str(RESTITUTION), "--v-max", "2"]
+    args = target + ["--friction", "0.3"]
     for w in WALLS:
         args += ["--wall", w]
     for t in TYPES:
@@ -64,7 +66,9 @@ def steps(data, code):
 
 def first_wall_contacts(samples, radius):
     """e of each atom's first undisturbed contact with the wall x = +W: `samples` is a list of
-    per-sample dicts {id: (type, x, vx, z, contacts)}; `radius` maps type to r [m]."""
+    per-sample dicts {id: (type, x, vx, z, contacts[, y])}; `radius` maps type to r [m]. A
+    particle in a corner also touches a wall y = +-W, whose friction changes vx: LAMMPS's and
+    LIGGGHTS's samples carry y to leave it out (measured: e 2.5e-3 off in the e(v) pour)."""
     history = {}
     for snap in samples:
         for atom, row in snap.items():
@@ -79,18 +83,50 @@ def first_wall_contacts(samples, radius):
         post = next((k for k in range(touch[0], len(rows)) if rows[k][1] + r <= W), None)
         if post is None:
             continue
+        # no particle, floor, wall x = -W or (where the sample has y) wall y = +-W in contact
         clear = all(rows[k][4] == 0 and rows[k][3] - r > 0 and rows[k][1] - r > -W
+                    and (len(rows[k]) < 6 or abs(rows[k][5]) + r <= W)
                     for k in range(pre, post + 1))
         if clear and rows[pre][2] >= V_IN_MIN:
             out.append((atom, rows[0][0], rows[pre][2], -rows[post][2] / rows[pre][2]))
     return out
 
 
-def check(name, code, data, totals, samples, report=None, target=None):
+def table_e(pair, v):
+    """The pair's target e at speed v [m/s]: its dem_export.json table, linear, end values
+    outside."""
+    table = pair["table"]
+    if v <= table[0]["v"]:
+        return table[0]["e"]
+    for a, b in zip(table, table[1:]):
+        if v <= b["v"]:
+            return a["e"] + (b["e"] - a["e"]) * (v - a["v"]) / (b["v"] - a["v"])
+    return table[-1]["e"]
+
+
+def energy_ratio(data, totals, samples):
+    """Largest (kinetic + gravitational energy) over its value once every atom is in: `totals`
+    (thermo, from step 0) and `samples` (dump) at the same steps. The elastic energy held in
+    contacts is not counted (a few 1e-3 of it)."""
+    mass = {k + 1: 4.0 / 3.0 * math.pi * t["radius_m"] ** 3 * t["density_kg_per_m3"]
+            for k, t in enumerate(data["types"])}
+    energy = [t["ke"] + sum(mass[row[0]] * G * row[3] for row in snap.values())
+              for t, snap in zip(totals, samples)
+              if t["atoms"] == 2 * PER_TYPE and len(snap) == 2 * PER_TYPE]
+    return max(energy) / energy[0] if energy else math.inf
+
+
+def check(name, code, data, totals, samples, report=None, energy=False):
     """Prints and returns the failures of the pour's checks. `totals`: per-sample dicts with
-    atoms, ke [J], vmax [m/s], xlo, xhi, ylo, yhi, zlo (extreme centres [m]); `target(type,
-    v_in)` the e a first side-wall contact must deliver (default: RESTITUTION)."""
-    target = target or (lambda t, v: RESTITUTION)
+    atoms, ke [J], vmax [m/s], xlo, xhi, ylo, yhi, zlo (extreme centres [m]). The side wall's
+    target: its pair's e (dem_export.json table) at each contact's v_in. `energy`: the energy
+    bound is energy_ratio <= 1.01 instead of the largest speed below 1.1 x a fall from Z_TOP
+    with VX (which an e near 1 may pass: a light particle struck by a heavy one leaves faster;
+    2.50 m/s against 2.02 in the pour with e(v) of dem_pour_lammps_compiled_check.py, the energy
+    never above its start)."""
+    ratio = energy_ratio(data, totals, samples) if energy else None
+    energy_row = energy and ("max energy / energy with every atom in", ratio, "<= 1.01",
+                             ratio <= 1.01)
     radius = {t + 1: d["radius_m"] for t, d in enumerate(data["types"])}
     r_min = min(radius.values())
     totals = [t for t in totals if t["atoms"] > 0]
@@ -98,6 +134,10 @@ def check(name, code, data, totals, samples, report=None, target=None):
     side = {p["type_i"]: p for p in data["pairs"] if p["type_j"] == 0 and "side" in p["label"]}
     bound = {t: p["delivered"][code]["max_abs_error"] + data["time_step_error"]
              for t, p in side.items()}
+
+    def target(t, v):
+        return table_e(side[t], v)
+
     worst = max((abs(e - target(t, v)) - bound[t] for _, t, v, e in contacts), default=1.0)
     v_bound = 1.1 * math.sqrt(VX * VX + 2.0 * G * Z_TOP)
     peak = max((t["ke"] for t in totals), default=0.0)
@@ -105,6 +145,7 @@ def check(name, code, data, totals, samples, report=None, target=None):
     rows = [
         ("atoms at the end", totals[-1]["atoms"] if totals else 0, "== %d" % (2 * PER_TYPE),
          bool(totals) and totals[-1]["atoms"] == 2 * PER_TYPE),
+        energy_row or
         ("max speed [m/s]", max((t["vmax"] for t in totals), default=0.0), "< %.4g" % v_bound,
          bool(totals) and max(t["vmax"] for t in totals) < v_bound),
         ("lowest centre z [m]", min((t["zlo"] for t in totals), default=-1.0),
@@ -122,7 +163,8 @@ def check(name, code, data, totals, samples, report=None, target=None):
     ]
     lines = ["%-32s %-12.6g %-10s %s" % (n, v, rule, "ok" if ok else "FAIL")
              for n, v, rule, ok in rows]
-    lines += ["  atom %d (type %d): v_in %.4f m/s, e %.5f" % c for c in contacts[:5]]
+    lines += ["  atom %d (type %d): v_in %.4f m/s, e %.5f, target %.5f"
+              % (c + (target(c[1], c[2]),)) for c in contacts[:5]]
     failures = sum(not ok for *_, ok in rows)
     text = "\n".join(lines) + "\n%s: %d failure(s)\n" % (name, failures)
     print(text, end="")
@@ -145,7 +187,7 @@ def monitor_and_run(every, n):
             "compute vmax all reduce max v_speed", "compute xyz all reduce min x y z",
             "compute xy all reduce max x y", "compute cn all contact/atom",
             THERMO, "thermo_modify lost ignore norm no", "thermo %d" % every,
-            "dump d all custom %d dump.pour id type x vx z c_cn" % every,
+            "dump d all custom %d dump.pour id type x vx z c_cn y" % every,
             "dump_modify d sort id", "run %d" % n]
 
 
@@ -166,7 +208,7 @@ def thermo_rows(out):
 
 
 def dump_samples(path):
-    """Per dump: {id: (type, x, vx, z, contacts)}."""
+    """Per dump: {id: (type, x, vx, z, contacts, y)}."""
     samples, snap, mode = [], None, None
     with open(path) as f:
         for line in f:
@@ -178,7 +220,7 @@ def dump_samples(path):
                 continue
             if mode == "ATOMS":
                 w = line.split()
-                snap[int(w[0])] = (int(w[1]), float(w[2]), float(w[3]), float(w[4]), float(w[5]))
+                snap[int(w[0])] = (int(w[1]),) + tuple(map(float, w[2:7]))
     return samples
 
 
