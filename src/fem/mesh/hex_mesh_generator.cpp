@@ -74,15 +74,19 @@ class SphereBuilder {
         mesh_(mesh) {}
 
   // Node at cube coordinates (X, Y, Z) and shell parameter t (merged by position).
+  // The core's own nodes (t = 0) skip the surface point, undefined at the centre (0/0): a NaN
+  // there merged the centre with an arbitrary node of the map.
   int node(double cx, double cy, double cz, double t) {
-    const double ex = equiangular(cx);
-    const double ey = equiangular(cy);
-    const double ez = equiangular(cz);
-    const double inv = radius_ / std::sqrt(ex * ex + ey * ey + ez * ez);
     const Point core{core_ * cx, core_ * cy, core_ * cz};
-    const Point surface{ex * inv, ey * inv, ez * inv};
-    const Point p{core[0] + t * (surface[0] - core[0]), core[1] + t * (surface[1] - core[1]),
-                  core[2] + t * (surface[2] - core[2])};
+    Point p = core;
+    if (t != 0.0) {
+      const double ex = equiangular(cx);
+      const double ey = equiangular(cy);
+      const double ez = equiangular(cz);
+      const double inv = radius_ / std::sqrt(ex * ex + ey * ey + ez * ez);
+      const Point surface{ex * inv, ey * inv, ez * inv};
+      for (std::size_t d = 0; d < 3; ++d) p[d] = core[d] + t * (surface[d] - core[d]);
+    }
     const auto [it, added] = index_.try_emplace(p, mesh_.num_nodes());
     if (added) {
       mesh_.x.push_back(p[0]);

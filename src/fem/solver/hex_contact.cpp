@@ -1,13 +1,12 @@
-// The 3-D solver's contact: node on the rigid plane or on the flat's facets, with the normal
-// penalty law of penalty_contact.hpp and Coulomb friction (hex_model.hpp).
+// The 3-D solver's contact: node on the rigid plane or on the flat's smooth surface
+// (hex_master_surface.cpp), with the normal penalty law of penalty_contact.hpp and Coulomb
+// friction (hex_model.hpp).
 // SPDX-License-Identifier: BSD-3-Clause
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "corlab/fem/kernels/coulomb_friction.hpp"
-#include "corlab/fem/kernels/facet_contact.hpp"
 #include "corlab/fem/kernels/penalty_contact.hpp"
 #include "fem/solver/hex_model.hpp"
 
@@ -32,61 +31,6 @@ std::vector<int> block_top_nodes(const HexMesh& mesh) {
 
 namespace {
 
-// Where one slave meets the target: gap, normal, and the master nodes with their weights (none
-// on the rigid flat).
-struct SlaveContact {
-  double gap = 0.0;
-  double normal[3] = {0.0, 0.0, 1.0};
-  std::array<int, 4> masters{-1, -1, -1, -1};
-  double weight[4] = {0.0, 0.0, 0.0, 0.0};
-};
-
-// Faces searched around the start grid's face under the slave, in each direction, at most [-].
-// The flat's top moves sideways as it yields (about 1 mm at 30 m/s for the paper's pair): one
-// face covers that at h = 1 mm, finer meshes need more.
-constexpr long kMaxSearchRings = 4;
-
-// The slave's projection on the block's top: the face of the start grid under its current
-// position or a neighbour, whichever holds the closest point best; when none of the eight holds
-// it, the next ring of faces around them.
-SlaveContact facet_contact(const HexModel& m, const HexState& s, std::size_t n) {
-  const double p[3] = {s.node[n].x, s.node[n].y, s.node[n].z};
-  SlaveContact c;
-  FacetProjection best;
-  double best_off = std::numeric_limits<double>::infinity();
-  for (long ring = 1; ring <= kMaxSearchRings; ++ring) {
-    for (long dj = -ring; dj <= ring; ++dj)
-      for (long di = -ring; di <= ring; ++di) {
-        if (std::max(std::abs(di), std::abs(dj)) != ring && ring > 1) continue;  // inner: done
-        const auto& face = m.mesh.top_faces[face_under(m.mesh, s.node[n].x, s.node[n].y, di, dj)];
-        double corner[4][3];
-        for (int k = 0; k < 4; ++k) {
-          const auto i = static_cast<std::size_t>(face[static_cast<std::size_t>(k)]);
-          corner[k][0] = s.node[i].x;
-          corner[k][1] = s.node[i].y;
-          corner[k][2] = s.node[i].z;
-        }
-        const FacetProjection f = project_on_facet(p, corner);
-        const double off = std::max(std::abs(f.xi), std::abs(f.eta));
-        if (off < best_off) {
-          best_off = off;
-          best = f;
-          c.masters = face;
-        }
-        if (on_facet(f)) break;  // the rest of this row
-      }
-    if (on_facet(best)) break;
-  }
-  c.gap = best.gap;
-  for (int d = 0; d < 3; ++d) c.normal[d] = best.normal[d];
-  for (int k = 0; k < 4; ++k) c.weight[k] = best.weight[k];
-  return c;
-}
-
-}  // namespace
-
-namespace {
-
 // The highest point of the block's top now [m] (0 on the rigid flat): a yielding flat piles up
 // around the contact, about 0.5 mm for the paper's pair at 30 m/s.
 double top_height(const HexModel& m, const HexState& s) {
@@ -101,25 +45,21 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
   bool penetrating = false;
   double stored = 0.0;
   double normal_force = 0.0;
-  const bool facets = m.contact == solver::ContactKind::kFacets;
-  // Slaves below this height look for the block's facets; higher ones cannot touch it [m].
+  const bool block = m.contact == solver::ContactKind::kBlockSurface;
+  // Slaves below this height look for the block's surface; higher ones cannot touch it [m].
   const double search_below = top_height(m, s) + 0.5 * m.h_contact;
   const auto& slaves = m.mesh.sphere_surface_nodes;
   for (std::size_t k = 0; k < slaves.size(); ++k) {
     const auto n = static_cast<std::size_t>(slaves[k]);
     SlaveContact c;
-    c.gap = project_on_rigid_flat(s.node[n].z).gap;  // no facet below: the plane of the top
-    if (facets && s.node[n].z < search_below) c = facet_contact(m, s, n);
+    c.gap = project_on_rigid_flat(s.node[n].z).gap;  // no block below: the plane of the top
+    if (block && s.node[n].z < search_below) c = surface_contact(m, s, n);
     const double stiffness = m.penalty[k];
     const NormalPenalty normal = normal_penalty(c.gap, stiffness);
     const double fn = normal.force;
-    double v_rel[3] = {s.node[n].vx, s.node[n].vy, s.node[n].vz};
-    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
-      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
-      v_rel[0] -= c.weight[j] * s.node[i].vx;
-      v_rel[1] -= c.weight[j] * s.node[i].vy;
-      v_rel[2] -= c.weight[j] * s.node[i].vz;
-    }
+    const std::array<double, 3> v_master = master_velocity(c, s);
+    const double v_rel[3] = {s.node[n].vx - v_master[0], s.node[n].vy - v_master[1],
+                             s.node[n].vz - v_master[2]};
     const double du[3] = {v_rel[0] * dt, v_rel[1] * dt, v_rel[2] * dt};
     const FrictionUpdate f =
         coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
@@ -133,12 +73,7 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
     s.nodal_force[n].x += force[0];
     s.nodal_force[n].y += force[1];
     s.nodal_force[n].z += force[2];
-    for (int j = 0; j < 4 && c.masters[0] >= 0; ++j) {
-      const auto i = static_cast<std::size_t>(c.masters[static_cast<std::size_t>(j)]);
-      s.nodal_force[i].x -= c.weight[j] * force[0];
-      s.nodal_force[i].y -= c.weight[j] * force[1];
-      s.nodal_force[i].z -= c.weight[j] * force[2];
-    }
+    push_masters(c, force, s);
     normal_force += fn * c.normal[2];
     stored += normal.energy + friction_stored_energy(f.t, stiffness);
   }

@@ -66,7 +66,7 @@ void set_penalties(HexModel& m, double scale, double dt_critical) {
   for (const int s : m.mesh.sphere_surface_nodes) {
     const auto i = static_cast<std::size_t>(s);
     double master = std::numeric_limits<double>::infinity();
-    if (m.contact == solver::ContactKind::kFacets) {
+    if (m.contact == solver::ContactKind::kBlockSurface) {
       const auto& face = m.mesh.top_faces[face_under(m.mesh, m.mesh.x[i], m.mesh.y[i])];
       master = 0.0;
       for (const int n : face) master += 0.25 * m.mass[static_cast<std::size_t>(n)];
@@ -125,7 +125,7 @@ HexModel make_model(const ImpactConfig& config) {
   const HexMeshOptions options = hex_mesh_options_for(config);
   m.h_contact = options.h_contact;
   m.mesh = build_hex_impact_mesh(config);
-  m.contact = options.block ? solver::ContactKind::kFacets : solver::ContactKind::kRigidPlane;
+  m.contact = options.block ? solver::ContactKind::kBlockSurface : solver::ContactKind::kRigidPlane;
   for (const Body b : {Body::kSphere, Body::kSubstrate}) {
     const Material& mat = b == Body::kSphere ? config.sphere.material : config.substrate.material;
     BodyMaterial& body = m.bodies[static_cast<std::size_t>(b)];
@@ -154,6 +154,7 @@ HexModel make_model(const ImpactConfig& config) {
     m.free_x[i] = m.free_y[i] = m.free_z[i] = 0.0;
   }
   m.top_nodes = block_top_nodes(m.mesh);
+  m.surface = make_master_surface(m.mesh);
   set_penalties(m, config.solver.penalty_scale, dt_critical);
   index_elements(m);
   set_time_scales(config, dt_critical, m);

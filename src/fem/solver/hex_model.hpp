@@ -6,9 +6,10 @@
 /// at angle theta from the normal with Coulomb friction mu, modelled as the half (y >= 0) cut by
 /// the plane of the velocity and the normal. One-point hexahedra with Flanagan-Belytschko
 /// hourglass control (hex8.hpp, hourglass.hpp), the J2 material point, the Hughes-Winget rotation
-/// and the bulk viscosity of the axisymmetric solver (the same kernels), node-on-plane or
-/// node-on-facet penalty contact (penalty_contact.hpp's normal law, facet_contact.hpp) with the
-/// Coulomb return map (coulomb_friction.hpp), central differences at the elements' stable step.
+/// and the bulk viscosity of the axisymmetric solver (the same kernels), penalty contact of node
+/// on plane or on the block top's smooth surface (penalty_contact.hpp's normal law,
+/// spline_surface.hpp) with the Coulomb return map (coulomb_friction.hpp), central differences at
+/// the elements' stable step.
 /// x is the tangential direction of the impact (the sphere moves towards +x), z the normal (up).
 ///
 /// The 3-D solver's model (constant) and state (mutable), shared by its steps (hex_step.cpp),
@@ -32,6 +33,7 @@
 #include "corlab/fem/solver/simulate.hpp"
 #include "fem/solver/dashpots.hpp"
 #include "fem/solver/element_loop.hpp"
+#include "fem/solver/hex_master_surface.hpp"
 #include "fem/solver/impact_step.hpp"
 #include "fem/solver/run_state.hpp"
 
@@ -66,10 +68,11 @@ struct HexModel : solver::RunConstants {
   solver::Dashpots<3> dashpots;            // the absorbing far boundary (else none; base free)
   Vec penalty;                             // per slave [N/m]
   std::vector<int> top_nodes;              // the block's top nodes, each once (none: rigid)
+  MasterSurface surface;                   // what the slaves meet on the block (none: rigid)
   std::size_t sphere_nodes = 0;            // nodes [0, n) are the sphere's
   std::size_t sphere_elements = 0;         // elements [0, n) are the sphere's
-  // What the slaves meet: the block's top facets or the rigid flat z = 0.
-  solver::ContactKind contact = solver::ContactKind::kFacets;
+  // What the slaves meet: the block's top surface or the rigid flat z = 0.
+  solver::ContactKind contact = solver::ContactKind::kBlockSurface;
   double sphere_mass = 0.0;  // half sphere [kg]
   double v_tangent = 0.0;    // [m/s] (towards +x)
   double friction = 0.0;     // mu [-]
@@ -104,6 +107,16 @@ std::size_t face_under(const HexMesh& mesh, double x, double y, long di = 0, lon
 
 // The block's top nodes (of mesh.top_faces), each once, sorted.
 std::vector<int> block_top_nodes(const HexMesh& mesh);
+
+/// Where the sphere's slave node n meets the block's top: its projection on the smooth master
+/// surface (hex_master_surface.hpp), from the start grid's parameters under its (x, y).
+SlaveContact surface_contact(const HexModel& m, const HexState& s, std::size_t n);
+
+/// The masters' velocity at the slave's contact point [m/s] (0 on the rigid flat).
+std::array<double, 3> master_velocity(const SlaveContact& c, const HexState& s);
+
+/// Adds the reaction to the slave's contact force [N], shared by the weights, to the masters.
+void push_masters(const SlaveContact& c, const double* force, HexState& s);
 
 /// Penalty contact (the rigid flat z = 0 or the block's top; penalty_contact.hpp's normal law)
 /// and Coulomb friction (coulomb_friction.hpp): adds the contact forces to s.nodal_force, sets the

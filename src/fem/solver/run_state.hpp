@@ -16,9 +16,9 @@ namespace corlab::fem::solver {
 /// What the contact slaves (the sphere's surface) meet, in either model: the one
 /// representation of the target's surface.
 enum class ContactKind : std::uint8_t {
-  kSegments,    ///< the substrate surface's master segments (axisymmetric node-to-segment)
-  kFacets,      ///< the 3-D block's top facets (node-to-facet, facet_contact.hpp)
-  kRigidPlane,  ///< the rigid flat z = 0 (substrate.shape = rigid; no master nodes)
+  kSegments,      ///< the substrate surface's master segments (axisymmetric node-to-segment)
+  kBlockSurface,  ///< the 3-D block's smooth top (node on surface, hex_master_surface.hpp)
+  kRigidPlane,    ///< the rigid flat z = 0 (substrate.shape = rigid; no master nodes)
 };
 
 /// Running energies [J] (work done up to the current time), of the model.
