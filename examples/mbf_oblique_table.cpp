@@ -139,10 +139,10 @@ void chi_dependence() {
 }
 
 // The cases of verification_mbf_hex_impact_test: elastic steel (210 GPa, 0.3, 7850 kg/m^3,
-// R = 35 mm) on the like-material flat, mu = 0.3, v_n = 10 m/s, at psi1 = 1, 1.5, 2 and 3.
+// R = 35 mm) on the like-material flat, mu = 0.3, v_n = 10 m/s, at psi1 = 0.5 to 6.
 void steel_cases() {
   const double kappa = corlab::restitution::mbf_stiffness_ratio(210e9, 0.3, 210e9, 0.3);
-  for (double psi1 : {1.0, 1.5, 2.0, 3.0}) {
+  for (double psi1 : {0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0}) {
     const double theta = std::atan(psi1 * 0.3 / kappa);
     const auto r = corlab::restitution::mbf_rebound({.radius = 35e-3,
                                                      .density = 7850.0,

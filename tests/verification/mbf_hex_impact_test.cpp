@@ -4,8 +4,9 @@
 // mu = 0.3, at psi1 = kappa tan(theta)/mu = 2 (theta = 36.08 deg), where the contact sticks,
 // slips back and leaves with its contact point's velocity reversed (psi2 < 0), which rigid-body
 // theory cannot give (its psi2 is 0: rolling, or psi1 - 4 chi: sliding). Coarse mesh (h = 1.5 mm,
-// a/h = 2.5, 28,924 elements, about 20 CPU-s); the finer-mesh command and the other angles are in
-// oblique_theory.md.
+// a/h = 2.5, 28,924 elements, about 8 CPU-s) on the 70 mm block with the viscous-spring far
+// boundary (a half-space for the waves); the converged quasi-static runs (v_n = 1 m/s, h = 0.6 mm)
+// and their command are in docs/theory/solver3d.md, "The small-angle reference".
 //
 // The rigid flat is not used: a sphere on a rigid flat is a dissimilar pair (Dundurs' beta =
 // (1 - 2 nu)/(2 (1 - nu)) = 0.29 for steel), whose normal load drives radial slip that MBF leave
@@ -40,10 +41,14 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   c.contact.friction = kMu;
   c.mesh.h_min = 1.5e-3;
   c.mesh.contact_elements = 0.0;
+  c.substrate.boundary = SubstrateBoundary::kViscousSpring;
   validate(c);
   const ImpactResult r = simulate(c);
   ASSERT_EQ(r.status, RunStatus::kSeparated);
-  EXPECT_NEAR(r.e_n, 1.0, 5e-3);
+  // The waves carry energy away through the far boundary: Hunter (1957, Johnson 1985 section
+  // 11.4) puts the loss into a half-space at 2.4 % of E0 here, e_n = 0.988; measured 0.9804.
+  EXPECT_LT(r.e_n, 1.0);
+  EXPECT_GT(r.e_n, 0.975);
 
   const restitution::MbfRebound mbf =
       restitution::mbf_rebound({.radius = c.sphere.radius,
@@ -58,24 +63,23 @@ TEST(MbfHexImpact, MicroSlipOnTheElasticFlatFollowsMbf) {
   ASSERT_NEAR(mbf.psi1, kPsi1, 1e-12);
   ASSERT_FALSE(mbf.gross_sliding);
   // The FE's contact point at rebound, normalised with its own rebound normal velocity (e_n
-  // differs from MBF's 1 by 0.3 %: that enters psi2 through v_n' only).
+  // differs from MBF's 1 by 2 %: that enters psi2 through v_n' only).
   const double v_t = c.impact.velocity * std::sin(theta);
   const double slip = r.e_t * v_t - c.sphere.radius * r.omega;
   const double psi2 = kappa * slip / (kMu * r.e_n * kNormalVelocity);
-  // Measured: e_t 0.5704 vs 0.5947, omega 222.3 vs 210.93 rad/s (+5.4 %), psi2 -0.996 vs -0.837.
-  // The mesh does not explain the difference (h = 1 and 0.75 mm: e_t 0.5718 and 0.5721), nor the
-  // penalty or the facet normals; the block does: this one (2R, its base fixed) is no half-space
-  // and reflects the impact's waves into the contact. On a 140 mm block e_t is 0.5807 here;
-  // quasi-static at v_n = 1 m/s (h = 0.6 mm) on a 280 mm block, 0.5869, omega +1.7 %, psi2 -0.888
-  // (docs/theory/solver3d.md, "The small-angle reference", with the command; 149 CPU-s, too long
-  // for this tier).
-  // Bounds: a quarter of the distance to the nearest rigid-body answer (rolling: e_t = 5/7, 0.12
-  // away) for e_t; 7 % in omega; 0.2 in psi2 (rolling's 0 is 0.84 away).
-  EXPECT_NEAR(r.e_t, mbf.tangential_restitution, 0.03);
-  EXPECT_NEAR(r.omega / mbf.spin, 1.0, 0.07);
-  EXPECT_NEAR(psi2, mbf.psi2, 0.2);
-  EXPECT_LT(psi2, -0.5);  // the contact point's velocity has reversed
-  EXPECT_LT(r.energy_balance_error, 5e-3);
+  // Measured (kinematic stick, the default): e_t 0.5863 vs 0.5947, omega R / v_n 0.7491 vs 0.7383
+  // (+1.5 %), psi2 -0.902 vs -0.837, e_n 0.9804 (the waves' energy leaves through the far
+  // boundary). Quasi-static (v_n = 1 m/s, h = 0.6 mm) the same contact gives e_t 0.5940, omega
+  // -0.05 %, psi2 -0.842: this case's distance from MBF is its speed and mesh. The tangential
+  // penalty (contact.friction_enforcement = penalty) gives e_t 0.5776 here, 0.0171 below MBF:
+  // its compliance in series with the bodies'.
+  // Bounds: issue 39's for the converged mesh, e_t within 0.01 and omega within 3 %, which this
+  // coarse case meets; psi2 within 0.1 (rolling's 0 is 0.84 away).
+  EXPECT_NEAR(r.e_t, mbf.tangential_restitution, 0.01);
+  EXPECT_NEAR(r.omega / mbf.spin, 1.0, 0.03);
+  EXPECT_NEAR(psi2, mbf.psi2, 0.1);
+  EXPECT_LT(psi2, -0.5);                    // the contact point's velocity has reversed
+  EXPECT_LT(r.energy_balance_error, 1e-3);  // measured 5.7e-5
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #pragma once
 /// @file choice_keys.hpp
-/// The enums behind the config's choice keys (substrate.shape, substrate.boundary, solver.model):
+/// The enums behind the config's choice keys (substrate.shape, substrate.boundary, solver.model,
+/// contact.friction_enforcement):
 /// their values and the parse of a key's text. Private to config_keys.cpp (src/fem/config).
 
 #include <fmt/format.h>
@@ -24,15 +25,20 @@ constexpr std::array kShapes{SubstrateShape::kFlat, SubstrateShape::kRigid,
 constexpr std::array kModels{SolverModel::kAxisymmetric, SolverModel::kThreeD};
 constexpr std::array kBoundaries{SubstrateBoundary::kFixed, SubstrateBoundary::kAbsorbing,
                                  SubstrateBoundary::kViscousSpring};
+constexpr std::array kEnforcements{FrictionEnforcement::kKinematic, FrictionEnforcement::kPenalty};
 constexpr std::span<const SubstrateShape> choices(SubstrateShape /*tag*/) { return kShapes; }
 constexpr std::span<const SolverModel> choices(SolverModel /*tag*/) { return kModels; }
 constexpr std::span<const SubstrateBoundary> choices(SubstrateBoundary /*tag*/) {
   return kBoundaries;
 }
+constexpr std::span<const FrictionEnforcement> choices(FrictionEnforcement /*tag*/) {
+  return kEnforcements;
+}
 
 template <class T>
-constexpr bool kIsChoice = std::is_same_v<T, SubstrateShape> || std::is_same_v<T, SolverModel> ||
-                           std::is_same_v<T, SubstrateBoundary>;
+constexpr bool kIsChoice =
+    std::is_same_v<T, SubstrateShape> || std::is_same_v<T, SolverModel> ||
+    std::is_same_v<T, SubstrateBoundary> || std::is_same_v<T, FrictionEnforcement>;
 
 template <class Enum>
 Enum parse_choice(std::string_view key, std::string_view text) {

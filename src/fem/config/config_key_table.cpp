@@ -91,6 +91,12 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       "contact.friction", "[-]", closed(0.0, 10.0), "Coulomb friction coefficient mu (3-D model)",
       +[](ImpactConfig& c) { return &c.contact.friction; }));
   t.push_back(entry(
+      "contact.friction_enforcement", "", std::nullopt,
+      "how the 3-D model holds stick: kinematic (the force that stops the relative tangential "
+      "motion over the step, capped at mu f_n; Taylor & Flanagan 1989) | penalty (a tangential "
+      "spring k_t = the normal penalty with a Coulomb return map: compliant)",
+      +[](ImpactConfig& c) { return &c.contact.enforcement; }));
+  t.push_back(entry(
       "mesh.h_min", "[m]", open_closed(0.0, 1.0),
       "element size at the contact (3-D model: with this and mesh.contact_elements unset, a/4)",
       +[](ImpactConfig& c) { return &c.mesh.h_min; }));

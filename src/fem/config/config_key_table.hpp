@@ -26,12 +26,13 @@ using Accessor = std::variant<double* (*)(ImpactConfig&),
                               SubstrateShape* (*)(ImpactConfig&),
                               SolverModel* (*)(ImpactConfig&),
                               PlaneAngle* (*)(ImpactConfig&),
-                              SubstrateBoundary* (*)(ImpactConfig&)>;
+                              SubstrateBoundary* (*)(ImpactConfig&),
+                              FrictionEnforcement* (*)(ImpactConfig&)>;
 
 inline constexpr KeyKind kKindOf[] = {
     KeyKind::number,      KeyKind::integer,  KeyKind::integer, KeyKind::yield_stress,
     KeyKind::number_list, KeyKind::material, KeyKind::path,    KeyKind::choice,
-    KeyKind::choice,      KeyKind::number,   KeyKind::choice};
+    KeyKind::choice,      KeyKind::number,   KeyKind::choice,  KeyKind::choice};
 
 struct KeyEntry {
   ConfigKeyInfo info;

@@ -163,6 +163,11 @@ void check_model(const ImpactConfig& c) {
     if (c.contact.friction != 0.0)
       throw_invalid("contact.friction", c.contact.friction,
                     "0 with the axisymmetric model (friction needs solver.model = 3d)");
+    if (c.contact.enforcement != ContactConfig{}.enforcement)
+      throw_invalid("contact.friction_enforcement", to_string(c.contact.enforcement),
+                    fmt::format("{} (the default) with the axisymmetric model (friction needs "
+                                "solver.model = 3d)",
+                                to_string(ContactConfig{}.enforcement)));
     return;
   }
   if (c.impact.angle.radians > 0.0 && c.impact.angle.in_degrees() < kMinObliqueAngle) {

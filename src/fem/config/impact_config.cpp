@@ -77,6 +77,10 @@ std::string_view to_string(SubstrateBoundary boundary) {
   return "fixed";
 }
 
+std::string_view to_string(FrictionEnforcement enforcement) {
+  return enforcement == FrictionEnforcement::kPenalty ? "penalty" : "kinematic";
+}
+
 std::string_view to_string(SolverModel model) {
   return model == SolverModel::kThreeD ? "3d" : "axisymmetric";
 }

@@ -49,6 +49,7 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
   // Slaves below this height look for the block's surface; higher ones cannot touch it [m].
   const double search_below = top_height(m, s) + 0.5 * m.h_contact;
   const auto& slaves = m.mesh.sphere_surface_nodes;
+  s.touching.clear();
   for (std::size_t k = 0; k < slaves.size(); ++k) {
     const auto n = static_cast<std::size_t>(slaves[k]);
     SlaveContact c;
@@ -61,11 +62,19 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
     const double v_rel[3] = {s.node[n].vx - v_master[0], s.node[n].vy - v_master[1],
                              s.node[n].vz - v_master[2]};
     const double du[3] = {v_rel[0] * dt, v_rel[1] * dt, v_rel[2] * dt};
-    const FrictionUpdate f =
-        coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
-    s.traction[k] = {f.t[0], f.t[1], f.t[2]};
-    s.energy.friction += f.dissipation;
+    FrictionUpdate f;  // the penalty's (the kinematic friction comes after this loop)
+    if (!m.kinematic_friction) {
+      f = coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
+      s.traction[k] = {f.t[0], f.t[1], f.t[2]};
+      s.energy.friction += f.dissipation;
+    }
     if (!(fn > 0.0)) continue;
+    if (m.kinematic_friction && m.friction > 0.0)
+      s.touching.push_back({.slave = k,
+                            .normal = {c.normal[0], c.normal[1], c.normal[2]},
+                            .masters = c.masters,
+                            .weight = {c.weight[0], c.weight[1], c.weight[2], c.weight[3]},
+                            .normal_force = fn});
     penetrating = true;
     s.penetration_max = std::max(s.penetration_max, -c.gap);
     const double force[3] = {fn * c.normal[0] + f.t[0], fn * c.normal[1] + f.t[1],
@@ -77,6 +86,7 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
     normal_force += fn * c.normal[2];
     stored += normal.energy + friction_stored_energy(f.t, stiffness);
   }
+  if (m.kinematic_friction && m.friction > 0.0) kinematic_friction_forces(m, s, s.dt);
   s.energy.contact = stored;
   s.force = normal_force;
   return penetrating;

@@ -159,6 +159,7 @@ HexModel make_model(const ImpactConfig& config) {
   index_elements(m);
   set_time_scales(config, dt_critical, m);
   m.solver = &config.solver;
+  m.kinematic_friction = config.contact.enforcement == FrictionEnforcement::kKinematic;
   return m;
 }
 
@@ -178,6 +179,7 @@ HexState initial_state(const HexModel& m) {
   s.eps_p.assign(ne, 0.0);
   for (Vec& q : s.hourglass) q.assign(ne, 0.0);
   s.traction.assign(m.mesh.sphere_surface_nodes.size(), {0.0, 0.0, 0.0});
+  s.friction_link.assign(m.mesh.sphere_surface_nodes.size(), {});
   s.t = m.t_start;
   s.dt = m.dt_initial;
   s.sphere_velocity = -m.velocity;

@@ -8,8 +8,9 @@
 /// hourglass control (hex8.hpp, hourglass.hpp), the J2 material point, the Hughes-Winget rotation
 /// and the bulk viscosity of the axisymmetric solver (the same kernels), penalty contact of node
 /// on plane or on the block top's smooth surface (penalty_contact.hpp's normal law,
-/// spline_surface.hpp) with the Coulomb return map (coulomb_friction.hpp), central differences at
-/// the elements' stable step.
+/// spline_surface.hpp) with Coulomb friction (coulomb_friction.hpp: the kinematic stick of
+/// hex_friction.cpp, or the tangential penalty's return map), central differences at the
+/// elements' stable step.
 /// x is the tangential direction of the impact (the sphere moves towards +x), z the normal (up).
 ///
 /// The 3-D solver's model (constant) and state (mutable), shared by its steps (hex_step.cpp),
@@ -77,6 +78,8 @@ struct HexModel : solver::RunConstants {
   double v_tangent = 0.0;    // [m/s] (towards +x)
   double friction = 0.0;     // mu [-]
   double h_contact = 0.0;    // [m]
+  // Stick enforced kinematically (kinematic_friction) instead of by the tangential penalty.
+  bool kinematic_friction = false;
   const SolverConfig* solver = nullptr;
 };
 
@@ -91,14 +94,40 @@ struct NodeForce {
   double x, y, z;
 };
 
+// Where a slave's kinematic friction force (HexState::traction) acts: the master nodes and
+// their weights (masters[0] < 0: the rigid flat), and the slave's relative velocity when it was
+// set, v^{n+1/2} [m/s]; its work is booked a step later, from v^{n+3/2} (friction_work).
+struct SlaveFriction {
+  std::array<int, 4> masters{-1, -1, -1, -1};
+  std::array<double, 4> weight{};
+  std::array<double, 3> v_before{};
+};
+
+// A slave that touches this step, for the kinematic friction pass: its index among the slaves,
+// the unit contact normal [-], the master nodes and weights (masters[0] < 0: the rigid flat) and
+// the normal force [N].
+struct FrictionContact {
+  std::size_t slave = 0;
+  double normal[3] = {0.0, 0.0, 1.0};
+  std::array<int, 4> masters{-1, -1, -1, -1};
+  std::array<double, 4> weight{};
+  double normal_force = 0.0;
+  double t[3] = {0.0, 0.0, 0.0};       // friction force on the slave [N]
+  double v_pred[3] = {0.0, 0.0, 0.0};  // relative velocity at the step's end without it [m/s]
+  double mass = 0.0;                   // effective mass for the slave alone [kg]
+};
+
 // The mutable part (half model); the running sums in its base.
 struct HexState : solver::RunState {
   std::vector<NodeKinematics> node;
   std::vector<NodeForce> nodal_force;
-  std::array<Vec, 6> stress;                    // per element: xx, yy, zz, xy, yz, zx [Pa]
-  Vec eps_p;                                    // per element [-]
-  std::array<Vec, 12> hourglass;                // per element: Q[d][a] at d * 4 + a [N]
-  std::vector<std::array<double, 3>> traction;  // friction force of each slave [N]
+  std::array<Vec, 6> stress;                       // per element: xx, yy, zz, xy, yz, zx [Pa]
+  Vec eps_p;                                       // per element [-]
+  std::array<Vec, 12> hourglass;                   // per element: Q[d][a] at d * 4 + a [N]
+  std::vector<std::array<double, 3>> traction;     // friction force of each slave [N]
+  std::vector<SlaveFriction> friction_link;        // where each slave's kinematic friction acts
+  std::vector<FrictionContact> touching;           // this step's contacts (scratch)
+  std::vector<std::array<double, 3>> friction_dv;  // velocity change by friction (scratch) [m/s]
 };
 
 // The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
@@ -119,10 +148,17 @@ std::array<double, 3> master_velocity(const SlaveContact& c, const HexState& s);
 void push_masters(const SlaveContact& c, const double* force, HexState& s);
 
 /// Penalty contact (the rigid flat z = 0 or the block's top; penalty_contact.hpp's normal law)
-/// and Coulomb friction (coulomb_friction.hpp): adds the contact forces to s.nodal_force, sets the
+/// and Coulomb friction (coulomb_friction.hpp; kinematic: kinematic_friction_forces after the
+/// normal forces): adds the contact forces to s.nodal_force, sets the
 /// contact force s.force (+ up), the stored energy s.energy.contact and the deepest penetration,
 /// adds the frictional work to s.energy.friction. Returns whether any slave penetrates.
 bool contact_forces(const HexModel& m, HexState& s, double dt);
+
+/// Kinematic Coulomb friction (coulomb_friction.hpp's kinematic_friction) at the contacts in
+/// s.touching, after every other force of the step is in s.nodal_force: books the work of the
+/// previous step's friction forces into s.energy.friction, sets s.traction and adds the new
+/// forces to s.nodal_force. dt [s] is the step the forces will act over (predicted).
+void kinematic_friction_forces(const HexModel& m, HexState& s, double dt);
 
 // The steps of the time loop (time_loop.hpp), found there by argument-dependent lookup.
 

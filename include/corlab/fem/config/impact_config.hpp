@@ -91,9 +91,25 @@ struct ImpactConditions {
   PlaneAngle angle;
 };
 
+/// How the 3-D model's contact enforces Coulomb friction's stick (docs/theory/solver3d.md,
+/// "Contact and friction"; coulomb_friction.hpp).
+enum class FrictionEnforcement : std::uint8_t {
+  /// Predictor-corrector (Taylor & Flanagan 1989): the force that stops the relative tangential
+  /// motion over the step, capped at mu f_n; no tangential compliance.
+  kKinematic,
+  /// A tangential penalty spring (k_t = the normal penalty) with a Coulomb return map: stick
+  /// needs a small relative displacement, in series with the bodies' own compliance.
+  kPenalty,
+};
+
+/// "kinematic" or "penalty".
+std::string_view to_string(FrictionEnforcement enforcement);
+
 /// The contact law beyond the normal penalty.
 struct ContactConfig {
   double friction = 0.0;  ///< Coulomb coefficient mu >= 0 (3-D model only) [-]
+  /// How stick is enforced (3-D model only).
+  FrictionEnforcement enforcement = FrictionEnforcement::kKinematic;
 };
 
 struct MeshConfig {

@@ -257,5 +257,25 @@ TEST(ConfigLimits, SubstrateBoundaryIsAChoiceOfTheFlatOnly) {
   EXPECT_EQ(to_string(c.substrate.boundary), "viscous_spring");
 }
 
+// contact.friction_enforcement (docs/theory/solver3d.md, "Contact and friction"): a choice key
+// of the 3-D model, kinematic by default; the axisymmetric model, which has no friction, refuses
+// the other value.
+TEST(ConfigLimits, FrictionEnforcementIsAChoiceOfThe3dModel) {
+  EXPECT_EQ(refusal({"contact.friction_enforcement=spring", "solver.model=3d"}),
+            "invalid contact.friction_enforcement = 'spring': must be one of kinematic, penalty");
+  EXPECT_EQ(refusal({"contact.friction_enforcement=penalty"}),
+            "invalid contact.friction_enforcement = 'penalty': must be kinematic (the default) "
+            "with the axisymmetric model (friction needs solver.model = 3d)");
+  EXPECT_EQ(refusal({"contact.friction_enforcement=kinematic"}), "");
+  EXPECT_EQ(refusal({"contact.friction_enforcement=penalty", "solver.model=3d", "impact.angle=40",
+                     "contact.friction=0.1", "substrate.shape=rigid"}),
+            "");
+  ImpactConfig c;
+  EXPECT_EQ(c.contact.enforcement, FrictionEnforcement::kKinematic);
+  apply_setting(c, "contact.friction_enforcement", "penalty");
+  EXPECT_EQ(c.contact.enforcement, FrictionEnforcement::kPenalty);
+  EXPECT_EQ(to_string(c.contact.enforcement), "penalty");
+}
+
 }  // namespace
 }  // namespace corlab::fem

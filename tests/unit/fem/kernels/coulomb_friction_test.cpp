@@ -1,6 +1,9 @@
-// Penalty Coulomb friction (coulomb_friction.hpp): stick below mu f_n, slip capped at mu f_n
+// Coulomb friction (coulomb_friction.hpp). Penalty: stick below mu f_n, slip capped at mu f_n
 // opposing the motion, the dissipation of a sliding block equal to mu N x distance, the energy
 // of the tangential spring accounted for, and a turning normal keeping the force's magnitude.
+// Kinematic: one update stops a slave on a rigid master within the step, slip is capped at
+// mu f_n against the motion, repeated updates (projected Gauss-Seidel) settle two slaves that
+// share a master node, and the work booked from the velocities is the kinetic energy lost.
 // SPDX-License-Identifier: BSD-3-Clause
 #include "corlab/fem/kernels/coulomb_friction.hpp"
 
@@ -86,6 +89,74 @@ TEST(CoulombFriction, FrictionlessContactCarriesNoTangentialForce) {
   EXPECT_EQ(u.t[0], 0.0);
   EXPECT_TRUE(u.sliding);
   EXPECT_EQ(u.dissipation, 0.0);
+}
+
+// A node of mass m moving at v along x on a rigid master: one update's force, acting over dt,
+// brings its tangential velocity to 0 and leaves the normal one; the booked work is the kinetic
+// energy of the tangential motion it removed.
+TEST(KinematicFriction, OneUpdateStopsASlaveOnARigidMaster) {
+  const double mass = 2e-3;
+  const double dt = 1e-7;
+  const double v[3] = {0.3, -0.4, -1.0};  // the normal part (z) is left to the normal contact
+  const double t0[3] = {0.0, 0.0, 0.0};
+  const FrictionUpdate u = kinematic_friction(t0, kNormal, v, mass, dt, 1e5, 0.5);
+  EXPECT_FALSE(u.sliding);
+  const double after[3] = {v[0] + dt * u.t[0] / mass, v[1] + dt * u.t[1] / mass, v[2]};
+  EXPECT_NEAR(after[0], 0.0, 1e-15);
+  EXPECT_NEAR(after[1], 0.0, 1e-15);
+  EXPECT_EQ(u.t[2], 0.0);
+  EXPECT_EQ(u.dissipation, 0.0);
+  const double lost = 0.5 * mass * (v[0] * v[0] + v[1] * v[1]);
+  EXPECT_NEAR(-friction_work(u.t, v, after, dt), lost, 1e-12 * lost);
+}
+
+// The force to stop it exceeds mu f_n: slip, at mu f_n against the motion.
+TEST(KinematicFriction, SlipIsCappedAtMuFnAgainstTheMotion) {
+  const double v[3] = {0.6, 0.8, 0.0};
+  const double t0[3] = {0.0, 0.0, 0.0};
+  const FrictionUpdate u = kinematic_friction(t0, kNormal, v, 2e-3, 1e-7, 100.0, 0.3);
+  EXPECT_TRUE(u.sliding);
+  EXPECT_NEAR(u.t[0], -30.0 * 0.6, 1e-12);
+  EXPECT_NEAR(u.t[1], -30.0 * 0.8, 1e-12);
+  const FrictionUpdate none = kinematic_friction(t0, kNormal, v, 2e-3, 1e-7, 0.0, 0.3);
+  EXPECT_EQ(none.t[0], 0.0);
+  EXPECT_FALSE(none.sliding);
+}
+
+// Two slaves (masses m1, m2) on one free master node (mass M), all moving along x: the
+// coupled stick forces stop both relative motions, t1/m1 + (t1 + t2)/M = -v1/dt and the same
+// for 2. Repeating each slave's update with the other's force so far (projected Gauss-Seidel,
+// as hex_friction.cpp does) converges to them.
+TEST(KinematicFriction, RepeatedUpdatesSettleSlavesSharingAMaster) {
+  const double m1 = 1e-3;
+  const double m2 = 3e-3;
+  const double big = 2e-3;  // the master node
+  const double dt = 1e-7;
+  const double v1 = 0.5;  // relative velocities predicted without friction [m/s]
+  const double v2 = -0.2;
+  // Exact: [1/m1 + 1/M, 1/M; 1/M, 1/m2 + 1/M] (t1, t2) = -(v1, v2)/dt.
+  const double a = 1.0 / m1 + 1.0 / big;
+  const double b = 1.0 / big;
+  const double d = 1.0 / m2 + 1.0 / big;
+  const double det = a * d - b * b;
+  const double t1_exact = -(d * v1 - b * v2) / dt / det;
+  const double t2_exact = -(a * v2 - b * v1) / dt / det;
+  double t1[3] = {0.0, 0.0, 0.0};
+  double t2[3] = {0.0, 0.0, 0.0};
+  const double e1 = 1.0 / a;  // each slave's effective mass alone: 1 / (1/m + 1/M)
+  const double e2 = 1.0 / d;
+  for (int sweep = 0; sweep < 60; ++sweep) {
+    const double dv_master = dt * (t1[0] + t2[0]) / big;  // the master moves against both
+    const double r1[3] = {v1 + dt * t1[0] / m1 + dv_master, 0.0, 0.0};
+    const FrictionUpdate u1 = kinematic_friction(t1, kNormal, r1, e1, dt, 1e9, 0.5);
+    t1[0] = u1.t[0];
+    const double dv_master2 = dt * (t1[0] + t2[0]) / big;
+    const double r2[3] = {v2 + dt * t2[0] / m2 + dv_master2, 0.0, 0.0};
+    const FrictionUpdate u2 = kinematic_friction(t2, kNormal, r2, e2, dt, 1e9, 0.5);
+    t2[0] = u2.t[0];
+  }
+  EXPECT_NEAR(t1[0], t1_exact, 1e-9 * std::abs(t1_exact));
+  EXPECT_NEAR(t2[0], t2_exact, 1e-9 * std::abs(t1_exact));
 }
 
 }  // namespace

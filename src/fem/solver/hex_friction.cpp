@@ -1,0 +1,155 @@
+// The 3-D solver's kinematic Coulomb friction (hex_model.hpp, coulomb_friction.hpp): the
+// predictor-corrector stick of Taylor & Flanagan (1989, PRONTO-3D) on the normal penalty's
+// contacts, solved for all slaves together by projected Gauss-Seidel.
+// SPDX-License-Identifier: BSD-3-Clause
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "corlab/fem/kernels/coulomb_friction.hpp"
+#include "fem/solver/hex_model.hpp"
+
+namespace corlab::fem::hex_solver {
+namespace {
+
+// A node's velocity (its held components 0) [m/s], or its predicted velocity at the end of the
+// step dt [s] under its force now.
+void node_velocity(const HexModel& m, const HexState& s, std::size_t n, double dt, double* v) {
+  const NodeKinematics& k = s.node[n];
+  const NodeForce& f = s.nodal_force[n];
+  const double a = dt * m.inv_mass[n];
+  v[0] = m.free_x[n] * (k.vx + a * f.x);
+  v[1] = m.free_y[n] * (k.vy + a * f.y);
+  v[2] = m.free_z[n] * (k.vz + a * f.z);
+}
+
+// The slave's velocity relative to the master point (masters[0] < 0: the rigid flat, at rest)
+// [m/s], now (dt = 0) or predicted at the end of the step dt [s].
+void relative_velocity(const HexModel& m,
+                       const HexState& s,
+                       std::size_t slave_node,
+                       const std::array<int, 4>& masters,
+                       const std::array<double, 4>& weight,
+                       double dt,
+                       double* v) {
+  node_velocity(m, s, slave_node, dt, v);
+  for (std::size_t j = 0; j < 4 && masters[0] >= 0; ++j) {
+    double vm[3];
+    node_velocity(m, s, static_cast<std::size_t>(masters[j]), dt, vm);
+    for (int d = 0; d < 3; ++d) v[d] -= weight[j] * vm[d];
+  }
+}
+
+// The pair's effective mass for a tangential impulse on this slave alone, 1 / (1/m_s + sum_j
+// w_j^2 / m_j) [kg] (m_s on the rigid flat).
+double effective_mass(const HexModel& m, std::size_t slave_node, const FrictionContact& c) {
+  double inverse = m.inv_mass[slave_node];
+  for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j)
+    inverse += c.weight[j] * c.weight[j] * m.inv_mass[static_cast<std::size_t>(c.masters[j])];
+  return 1.0 / inverse;
+}
+
+// Books the work of the previous step's friction forces, which acted over 1/2 (dt_prev + dt),
+// from v^{n+1/2} (stored) and v^{n+3/2} (now), and clears them.
+void book_previous_work(const HexModel& m, HexState& s) {
+  const auto& slaves = m.mesh.sphere_surface_nodes;
+  const double acted = 0.5 * (s.dt_prev + s.dt);
+  for (std::size_t k = 0; k < slaves.size(); ++k) {
+    auto& t = s.traction[k];
+    if (t[0] == 0.0 && t[1] == 0.0 && t[2] == 0.0) continue;
+    const SlaveFriction& link = s.friction_link[k];
+    double v_after[3];
+    relative_velocity(m, s, static_cast<std::size_t>(slaves[k]), link.masters, link.weight, 0.0,
+                      v_after);
+    s.energy.friction -= friction_work(t.data(), link.v_before.data(), v_after, acted);
+    t = {0.0, 0.0, 0.0};
+  }
+}
+
+// The sweeps of projected Gauss-Seidel at most, and the change of a sweep that ends them: the
+// largest velocity change it made, over the model's approach speed [-].
+constexpr int kMaxSweeps = 200;
+constexpr double kSettled = 1e-9;
+
+}  // namespace
+
+void kinematic_friction_forces(const HexModel& m, HexState& s, double dt) {
+  book_previous_work(m, s);
+  if (s.touching.empty()) return;
+  const auto& slaves = m.mesh.sphere_surface_nodes;
+  s.friction_dv.resize(s.node.size(), {0.0, 0.0, 0.0});
+  for (FrictionContact& c : s.touching) {
+    const auto n = static_cast<std::size_t>(slaves[c.slave]);
+    relative_velocity(m, s, n, c.masters, c.weight, dt, c.v_pred);
+    c.mass = effective_mass(m, n, c);
+    // A slave on the symmetry plane moves in it: its friction acts in the plane, along the
+    // tangent of the normal projected into it.
+    if (m.free_y[n] == 0.0) {
+      c.v_pred[1] = 0.0;
+      const double in_plane = std::hypot(c.normal[0], c.normal[2]);
+      c.normal[0] /= in_plane;
+      c.normal[1] = 0.0;
+      c.normal[2] /= in_plane;
+    }
+  }
+  // Each sweep: every slave's force from its relative velocity with the others' forces so far
+  // (the velocity changes dv they make), until no sweep changes a velocity.
+  auto& dv = s.friction_dv;
+  const double settled = kSettled * m.velocity;
+  int sweep = 0;
+  for (double change = settled + 1.0; change > settled && sweep < kMaxSweeps; ++sweep) {
+    change = 0.0;
+    for (FrictionContact& c : s.touching) {
+      const auto n = static_cast<std::size_t>(slaves[c.slave]);
+      double v[3];
+      for (int d = 0; d < 3; ++d) v[d] = c.v_pred[d] + dv[n][static_cast<std::size_t>(d)];
+      for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j) {
+        const auto& dm = dv[static_cast<std::size_t>(c.masters[j])];
+        for (int d = 0; d < 3; ++d) v[d] -= c.weight[j] * dm[static_cast<std::size_t>(d)];
+      }
+      if (m.free_y[n] == 0.0) v[1] = 0.0;
+      const FrictionUpdate u =
+          kinematic_friction(c.t, c.normal, v, c.mass, dt, c.normal_force, m.friction);
+      double dt_force[3];
+      for (int d = 0; d < 3; ++d) {
+        dt_force[d] = dt * (u.t[d] - c.t[d]);
+        c.t[d] = u.t[d];
+      }
+      const auto add = [&](std::size_t node, double w) {
+        const double a = w * m.inv_mass[node];
+        dv[node][0] += m.free_x[node] * a * dt_force[0];
+        dv[node][1] += m.free_y[node] * a * dt_force[1];
+        dv[node][2] += m.free_z[node] * a * dt_force[2];
+      };
+      add(n, 1.0);
+      for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j)
+        add(static_cast<std::size_t>(c.masters[j]), -c.weight[j]);
+      change = std::max(change, std::sqrt(dt_force[0] * dt_force[0] + dt_force[1] * dt_force[1] +
+                                          dt_force[2] * dt_force[2]) /
+                                    c.mass);
+    }
+  }
+  for (FrictionContact& c : s.touching) {
+    const auto n = static_cast<std::size_t>(slaves[c.slave]);
+    s.traction[c.slave] = {c.t[0], c.t[1], c.t[2]};
+    SlaveFriction& link = s.friction_link[c.slave];
+    link.masters = c.masters;
+    link.weight = c.weight;
+    relative_velocity(m, s, n, c.masters, c.weight, 0.0, link.v_before.data());
+    dv[n] = {0.0, 0.0, 0.0};
+    NodeForce& fs = s.nodal_force[n];
+    fs.x += c.t[0];
+    fs.y += c.t[1];
+    fs.z += c.t[2];
+    for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j) {
+      const auto i = static_cast<std::size_t>(c.masters[j]);
+      dv[i] = {0.0, 0.0, 0.0};
+      NodeForce& fm = s.nodal_force[i];
+      fm.x -= c.weight[j] * c.t[0];
+      fm.y -= c.weight[j] * c.t[1];
+      fm.z -= c.weight[j] * c.t[2];
+    }
+  }
+}
+
+}  // namespace corlab::fem::hex_solver
