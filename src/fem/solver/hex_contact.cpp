@@ -72,8 +72,7 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
     if (m.kinematic_friction && m.friction > 0.0)
       s.touching.push_back({.slave = k,
                             .normal = {c.normal[0], c.normal[1], c.normal[2]},
-                            .masters = c.masters,
-                            .weight = {c.weight[0], c.weight[1], c.weight[2], c.weight[3]},
+                            .at = c,
                             .normal_force = fn});
     penetrating = true;
     s.penetration_max = std::max(s.penetration_max, -c.gap);

@@ -23,29 +23,38 @@ void node_velocity(const HexModel& m, const HexState& s, std::size_t n, double d
   v[2] = m.free_z[n] * (k.vz + a * f.z);
 }
 
-// The slave's velocity relative to the master point (masters[0] < 0: the rigid flat, at rest)
-// [m/s], now (dt = 0) or predicted at the end of the step dt [s].
+// Calls f(node, weight, mirror) for each master node of the contact point (none on the rigid
+// flat): its weight [-] and -1 where it stands as its mirror image across y = 0 [-].
+template <class F>
+void for_each_master(const SlaveContact& at, F&& f) {
+  for (std::size_t j = 0; j < at.masters.size() && at.masters[j].node >= 0; ++j)
+    f(static_cast<std::size_t>(at.masters[j].node), at.weight[j], at.masters[j].mirror);
+}
+
+// The slave's velocity relative to the master point (the rigid flat: at rest) [m/s], now
+// (dt = 0) or predicted at the end of the step dt [s].
 void relative_velocity(const HexModel& m,
                        const HexState& s,
                        std::size_t slave_node,
-                       const std::array<int, 4>& masters,
-                       const std::array<double, 4>& weight,
+                       const SlaveContact& at,
                        double dt,
                        double* v) {
   node_velocity(m, s, slave_node, dt, v);
-  for (std::size_t j = 0; j < 4 && masters[0] >= 0; ++j) {
+  for_each_master(at, [&](std::size_t node, double w, double mirror) {
     double vm[3];
-    node_velocity(m, s, static_cast<std::size_t>(masters[j]), dt, vm);
-    for (int d = 0; d < 3; ++d) v[d] -= weight[j] * vm[d];
-  }
+    node_velocity(m, s, node, dt, vm);
+    v[0] -= w * vm[0];
+    v[1] -= w * mirror * vm[1];
+    v[2] -= w * vm[2];
+  });
 }
 
 // The pair's effective mass for a tangential impulse on this slave alone, 1 / (1/m_s + sum_j
 // w_j^2 / m_j) [kg] (m_s on the rigid flat).
 double effective_mass(const HexModel& m, std::size_t slave_node, const FrictionContact& c) {
   double inverse = m.inv_mass[slave_node];
-  for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j)
-    inverse += c.weight[j] * c.weight[j] * m.inv_mass[static_cast<std::size_t>(c.masters[j])];
+  for_each_master(c.at,
+                  [&](std::size_t node, double w, double) { inverse += w * w * m.inv_mass[node]; });
   return 1.0 / inverse;
 }
 
@@ -59,8 +68,7 @@ void book_previous_work(const HexModel& m, HexState& s) {
     if (t[0] == 0.0 && t[1] == 0.0 && t[2] == 0.0) continue;
     const SlaveFriction& link = s.friction_link[k];
     double v_after[3];
-    relative_velocity(m, s, static_cast<std::size_t>(slaves[k]), link.masters, link.weight, 0.0,
-                      v_after);
+    relative_velocity(m, s, static_cast<std::size_t>(slaves[k]), link.at, 0.0, v_after);
     s.energy.friction -= friction_work(t.data(), link.v_before.data(), v_after, acted);
     t = {0.0, 0.0, 0.0};
   }
@@ -80,7 +88,7 @@ void kinematic_friction_forces(const HexModel& m, HexState& s, double dt) {
   s.friction_dv.resize(s.node.size(), {0.0, 0.0, 0.0});
   for (FrictionContact& c : s.touching) {
     const auto n = static_cast<std::size_t>(slaves[c.slave]);
-    relative_velocity(m, s, n, c.masters, c.weight, dt, c.v_pred);
+    relative_velocity(m, s, n, c.at, dt, c.v_pred);
     c.mass = effective_mass(m, n, c);
     // A slave on the symmetry plane moves in it: its friction acts in the plane, along the
     // tangent of the normal projected into it.
@@ -103,10 +111,11 @@ void kinematic_friction_forces(const HexModel& m, HexState& s, double dt) {
       const auto n = static_cast<std::size_t>(slaves[c.slave]);
       double v[3];
       for (int d = 0; d < 3; ++d) v[d] = c.v_pred[d] + dv[n][static_cast<std::size_t>(d)];
-      for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j) {
-        const auto& dm = dv[static_cast<std::size_t>(c.masters[j])];
-        for (int d = 0; d < 3; ++d) v[d] -= c.weight[j] * dm[static_cast<std::size_t>(d)];
-      }
+      for_each_master(c.at, [&](std::size_t node, double w, double mirror) {
+        v[0] -= w * dv[node][0];
+        v[1] -= w * mirror * dv[node][1];
+        v[2] -= w * dv[node][2];
+      });
       if (m.free_y[n] == 0.0) v[1] = 0.0;
       const FrictionUpdate u =
           kinematic_friction(c.t, c.normal, v, c.mass, dt, c.normal_force, m.friction);
@@ -115,15 +124,15 @@ void kinematic_friction_forces(const HexModel& m, HexState& s, double dt) {
         dt_force[d] = dt * (u.t[d] - c.t[d]);
         c.t[d] = u.t[d];
       }
-      const auto add = [&](std::size_t node, double w) {
+      const auto add = [&](std::size_t node, double w, double mirror) {
         const double a = w * m.inv_mass[node];
         dv[node][0] += m.free_x[node] * a * dt_force[0];
-        dv[node][1] += m.free_y[node] * a * dt_force[1];
+        dv[node][1] += m.free_y[node] * a * mirror * dt_force[1];
         dv[node][2] += m.free_z[node] * a * dt_force[2];
       };
-      add(n, 1.0);
-      for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j)
-        add(static_cast<std::size_t>(c.masters[j]), -c.weight[j]);
+      add(n, 1.0, 1.0);
+      for_each_master(c.at,
+                      [&](std::size_t node, double w, double mirror) { add(node, -w, mirror); });
       change = std::max(change, std::sqrt(dt_force[0] * dt_force[0] + dt_force[1] * dt_force[1] +
                                           dt_force[2] * dt_force[2]) /
                                     c.mass);
@@ -133,22 +142,15 @@ void kinematic_friction_forces(const HexModel& m, HexState& s, double dt) {
     const auto n = static_cast<std::size_t>(slaves[c.slave]);
     s.traction[c.slave] = {c.t[0], c.t[1], c.t[2]};
     SlaveFriction& link = s.friction_link[c.slave];
-    link.masters = c.masters;
-    link.weight = c.weight;
-    relative_velocity(m, s, n, c.masters, c.weight, 0.0, link.v_before.data());
+    link.at = c.at;
+    relative_velocity(m, s, n, c.at, 0.0, link.v_before.data());
     dv[n] = {0.0, 0.0, 0.0};
     NodeForce& fs = s.nodal_force[n];
     fs.x += c.t[0];
     fs.y += c.t[1];
     fs.z += c.t[2];
-    for (std::size_t j = 0; j < 4 && c.masters[0] >= 0; ++j) {
-      const auto i = static_cast<std::size_t>(c.masters[j]);
-      dv[i] = {0.0, 0.0, 0.0};
-      NodeForce& fm = s.nodal_force[i];
-      fm.x -= c.weight[j] * c.t[0];
-      fm.y -= c.weight[j] * c.t[1];
-      fm.z -= c.weight[j] * c.t[2];
-    }
+    for_each_master(c.at, [&](std::size_t node, double, double) { dv[node] = {0.0, 0.0, 0.0}; });
+    push_masters(c.at, c.t, s);
   }
 }
 

@@ -95,22 +95,20 @@ struct NodeForce {
 };
 
 // Where a slave's kinematic friction force (HexState::traction) acts: the master nodes and
-// their weights (masters[0] < 0: the rigid flat), and the slave's relative velocity when it was
-// set, v^{n+1/2} [m/s]; its work is booked a step later, from v^{n+3/2} (friction_work).
+// their weights (`at`; no masters: the rigid flat), and the slave's relative velocity when it
+// was set, v^{n+1/2} [m/s]; its work is booked a step later, from v^{n+3/2} (friction_work).
 struct SlaveFriction {
-  std::array<int, 4> masters{-1, -1, -1, -1};
-  std::array<double, 4> weight{};
+  SlaveContact at;
   std::array<double, 3> v_before{};
 };
 
 // A slave that touches this step, for the kinematic friction pass: its index among the slaves,
-// the unit contact normal [-], the master nodes and weights (masters[0] < 0: the rigid flat) and
-// the normal force [N].
+// the unit contact normal [-], its master nodes and weights (`at`; no masters: the rigid flat)
+// and the normal force [N].
 struct FrictionContact {
   std::size_t slave = 0;
   double normal[3] = {0.0, 0.0, 1.0};
-  std::array<int, 4> masters{-1, -1, -1, -1};
-  std::array<double, 4> weight{};
+  SlaveContact at;
   double normal_force = 0.0;
   double t[3] = {0.0, 0.0, 0.0};       // friction force on the slave [N]
   double v_pred[3] = {0.0, 0.0, 0.0};  // relative velocity at the step's end without it [m/s]
