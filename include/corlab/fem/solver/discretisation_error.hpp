@@ -2,7 +2,8 @@
 #pragma once
 /// @file discretisation_error.hpp
 /// Discretisation-error estimate of a run's restitution coefficient from companion runs on
-/// meshes coarser everywhere by sqrt 2, 2 and 2 sqrt 2: h_min and h_max x r and the grading
+/// meshes coarser everywhere by sqrt 2, 2 and 2 sqrt 2 (the 3-D model: sqrt 2, 2^(3/4) and 2,
+/// those that keep the contact resolved; error_bar_ratios): h_min and h_max x r and the grading
 /// ratio to the power r (r graded layers of ratio g merged into one of ratio g^r), so that each
 /// companion is the run's mesh coarsened systematically, the graded far field included. The
 /// error bar is e +/- e_error with e_error from the scatter estimator (error_bar.hpp,
