@@ -7,25 +7,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <vector>
 
 #include "corlab/fem/solver/discretisation_error.hpp"
+#include "support/coverage_tally.hpp"
 
 namespace corlab::fem {
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 TEST(ErrorBarCoverage, TableTwoCorners) {
-  std::vector<double> bars, differences;
-  int inside = 0;
+  test::CoverageTally tally;
   for (const double yield : {300e6, 1000e6}) {
     for (const double velocity : {0.5, 5.0, 50.0}) {
       ImpactConfig c;  // the paper's mesh (0.25 mm at the contact), the estimator's calibration
@@ -37,17 +29,12 @@ TEST(ErrorBarCoverage, TableTwoCorners) {
       ASSERT_TRUE(std::isfinite(r.e_error)) << r.e_error_reason;
       const double d = std::abs(finer.e - r.e);
       std::printf("sigma_y %4.0f MPa, %4.1f m/s: e = %.5f +/- %.5f, e(h/2) = %.5f (%s)\n",
-                  yield * 1e-6, velocity, r.e, r.e_error, finer.e,
-                  d <= r.e_error ? "inside" : "OUTSIDE");
-      inside += d <= r.e_error ? 1 : 0;
-      bars.push_back(r.e_error);
-      differences.push_back(d);
+                  yield * 1e-6, velocity, r.e, r.e_error, finer.e, tally.add(r.e_error, d));
     }
   }
-  std::printf("inside %d of 6; median bar %.2e, median |e(h/2) - e(h)| %.2e\n", inside,
-              median(bars), median(differences));
-  EXPECT_GE(inside, 5);
-  EXPECT_LE(median(bars), 3.0 * median(differences));
+  tally.print();
+  EXPECT_GE(tally.inside, 5);
+  EXPECT_LE(test::median(tally.bars), 3.0 * test::median(tally.changes));
 }
 
 }  // namespace

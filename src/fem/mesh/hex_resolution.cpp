@@ -96,6 +96,7 @@ bool uses_default_3d_resolution(const ImpactConfig& config) {
 HexResolution hex_resolution(const ImpactConfig& config) {
   const double a = normal_contact_radius(config);
   HexResolution r;
+  r.contact_radius = a;
   r.boundary = config.substrate.boundary;
   if (!uses_default_3d_resolution(config)) {
     r.h_contact = config.mesh.h_min;

@@ -36,6 +36,18 @@ ImpactConfig coarsened(const ImpactConfig& config, double ratio) {
   return c;
 }
 
+std::vector<double> error_bar_ratios(const ImpactConfig& config) {
+  if (!uses_3d_model(config) || !config.mesh.file.empty())
+    return {kErrorBarRatios.begin(), kErrorBarRatios.end()};
+  std::vector<double> ratios(kErrorBarRatios3d.begin(), kErrorBarRatios3d.end());
+  const HexResolution r = hex_resolution(with_resolved_3d_mesh(config));
+  const double across = r.contact_radius / r.h_contact;  // elements across a at the run's mesh
+  // A relative margin keeps a/4's companion at 2h (a/2 to round-off).
+  std::erase_if(ratios,
+                [&](double q) { return across / q < kMinCompanionContactElements * (1 - 1e-9); });
+  return ratios;
+}
+
 namespace {
 
 /// One of the runs of an estimate: the run itself (ratio 1) or a companion.
@@ -80,7 +92,7 @@ void run_estimate_run(const ImpactConfig& config,
 
 /// The run's result (runs[0]) with e_coarse, the error bars and their reason from its
 /// companions (runs[1..]).
-ImpactResult combine_estimate(std::vector<EstimateRun>& runs) {
+ImpactResult combine_estimate(std::vector<EstimateRun>& runs, std::string reason) {
   ImpactResult fine = std::move(runs.front().result);
   if (fine.status == RunStatus::kCancelled) return fine;
   // The grids the estimator reads: the run's own (ratio 1) and its coarser companions.
@@ -88,7 +100,6 @@ ImpactResult combine_estimate(std::vector<EstimateRun>& runs) {
   std::vector<double> e_t{fine.e_t};
   std::vector<double> omega{fine.omega};
   std::vector<double> ratios{1.0};
-  std::string reason;
   for (std::size_t k = 1; k < runs.size(); ++k) {
     const double ratio = runs[k].ratio;
     if (!runs[k].invalid.empty()) {
@@ -152,8 +163,18 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   // The run itself first, then its companions dearest first; on a spare thread of the caller's
   // pool (a sweep's tail) two at a time. Each run is single-threaded and deterministic, so the
   // result does not depend on which thread ran what.
-  std::vector<EstimateRun> runs(1 + kErrorBarRatios.size());
-  for (std::size_t k = 0; k < kErrorBarRatios.size(); ++k) runs[k + 1].ratio = kErrorBarRatios[k];
+  const std::vector<double> companions = error_bar_ratios(config);
+  std::string reason;
+  if (uses_3d_model(config) && companions.size() < kErrorBarRatios3d.size()) {
+    const HexResolution r = hex_resolution(with_resolved_3d_mesh(config));
+    reason = fmt::format(
+        "{} of the 3-D companions left out: fewer than {:g} elements across the contact radius "
+        "(a/h = {:.3g} at the run's mesh)",
+        kErrorBarRatios3d.size() - companions.size(), kMinCompanionContactElements,
+        r.contact_radius / r.h_contact);
+  }
+  std::vector<EstimateRun> runs(1 + companions.size());
+  for (std::size_t k = 0; k < companions.size(); ++k) runs[k + 1].ratio = companions[k];
   // The run itself on this thread (its control's callbacks stay on the caller's thread), the
   // companions from `next` on whichever thread is free.
   std::atomic<std::size_t> next{1};
@@ -192,7 +213,7 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   for (const EstimateRun& run : runs) {
     if (run.error) std::rethrow_exception(run.error);
   }
-  return combine_estimate(runs);
+  return combine_estimate(runs, reason);
 }
 
 }  // namespace corlab::fem

@@ -30,9 +30,10 @@ inline constexpr double kDefaultBlockWaveFraction = 0.14;
 
 /// How the element size at the contact was chosen.
 struct HexResolution {
-  double h_contact = 0.0;     ///< element size at the contact [m]
-  bool model_choice = false;  ///< true: the model's default (no resolution key set)
-  std::string reason;         ///< one line: the rule, a/h and its measured basis
+  double h_contact = 0.0;       ///< element size at the contact [m]
+  double contact_radius = 0.0;  ///< the predicted contact radius a at the normal speed [m]
+  bool model_choice = false;    ///< true: the model's default (no resolution key set)
+  std::string reason;           ///< one line: the rule, a/h and its measured basis
   /// The flat's half-width and depth the model chose [m] (0: substrate.radius and .depth): with
   /// the resolution, neither size key nor substrate.boundary set, kDefaultBlockWaveFraction c_p
   /// t_c, at most the default 70 mm and 2000 h.

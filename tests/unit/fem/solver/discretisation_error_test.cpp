@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "corlab/core/error.hpp"
 #include "corlab/fem/solver/error_bar.hpp"
@@ -113,6 +115,32 @@ TEST(DiscretisationError, NoValidCompanionMeansNoErrorBar) {
   EXPECT_TRUE(std::isnan(r.e_error));
   EXPECT_TRUE(std::isnan(r.e_coarse));
   EXPECT_NE(r.e_error_reason.find("no companion mesh at 1.41h"), std::string::npos)
+      << r.e_error_reason;
+}
+
+TEST(DiscretisationError, ThreeDCompanionsKeepTheContactResolved) {
+  ImpactConfig c;
+  EXPECT_EQ(error_bar_ratios(c).size(), kErrorBarRatios.size());  // axisymmetric: all three
+  c.solver.model = SolverModel::kThreeD;
+  c.impact.angle = PlaneAngle::degrees(30.0);
+  c.mesh.h_min = c.mesh.h_max;  // h = a / contact_elements
+  for (const auto& [across, kept] : {std::pair{8.0, 3U}, std::pair{4.0, 3U}, std::pair{3.4, 2U},
+                                     std::pair{3.0, 1U}, std::pair{2.5, 0U}}) {
+    c.mesh.contact_elements = across;
+    const std::vector<double> ratios = error_bar_ratios(c);
+    EXPECT_EQ(ratios.size(), kept) << "a/h = " << across;
+    for (const double q : ratios) EXPECT_GE(across / q, kMinCompanionContactElements - 1e-9);
+  }
+  // With no companion left the run has no bar, and says why.
+  c.mesh.contact_elements = 2.5;  // a few thousand elements on the rigid flat
+  c.substrate.shape = SubstrateShape::kRigid;
+  c.impact.velocity = 10.0;  // a ~ R / 10
+  c.mesh.growth = 1.6;
+  const ImpactResult r = simulate_with_error_estimate(c);
+  EXPECT_EQ(r.status, RunStatus::kSeparated);
+  EXPECT_TRUE(std::isnan(r.e_error));
+  EXPECT_NE(r.e_error_reason.find("fewer than 2 elements across the contact radius"),
+            std::string::npos)
       << r.e_error_reason;
 }
 
