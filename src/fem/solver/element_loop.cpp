@@ -56,6 +56,7 @@ struct Block {
   double* __restrict qz;
   double* __restrict bv;                // viscous mean stress at the last update (kTrapezoid only)
   const double* __restrict step_scale;  // stable step / the physical one (mass scaling)
+  double* step_out;                     // each element's stable step, or null
   double* __restrict f_r;
   double* __restrict f_z;
 };
@@ -66,14 +67,16 @@ struct BlockLanes {
   alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
 };
 
-// The block of nb elements from e0: its lanes and its slices of the element state (the viscous
-// stress history only with `viscous_history`, i.e. subcycling).
-[[gnu::always_inline]] inline Block block_at(const ElementConstants& ec,
+// The block of nb elements from e0 of `pass`: its lanes and its slices of the element state (the
+// viscous stress history only with `viscous_history`, i.e. subcycling) and step scales.
+[[gnu::always_inline]] inline Block block_at(const ElementPass& pass,
                                              ElementState& es,
                                              int e0,
                                              int nb,
                                              BlockLanes& lanes,
                                              bool viscous_history) {
+  const double* scale =
+      pass.step_scale != nullptr ? pass.step_scale : pass.elements.step_scale.data();
   return Block{nb,
                &lanes.xr[0][0],
                &lanes.xz[0][0],
@@ -87,7 +90,8 @@ struct BlockLanes {
                es.qr.data() + e0,
                es.qz.data() + e0,
                viscous_history ? es.bv.data() + e0 : nullptr,
-               ec.step_scale.data() + e0,
+               scale + e0,
+               pass.step_out != nullptr ? pass.step_out + e0 : nullptr,
                &lanes.f_r[0][0],
                &lanes.f_z[0][0]};
 }
@@ -219,6 +223,9 @@ template <bool kTrapezoid, bool kStableStep>
     }
   }
   add_lane_sums<kStableStep>(out, b.nb, sums);
+  if constexpr (kStableStep) {
+    if (b.step_out != nullptr) std::copy_n(out.dt, b.nb, b.step_out);
+  }
 }
 
 // The first lane of the block whose element is inverted (volume or area not > 0) at the gathered
@@ -304,7 +311,7 @@ template <bool kSubcycled>
       }
     }
     const double omega_before = sums.omega_min;
-    const Block b = block_at(ec, es, e0, nb, lanes, kSubcycled);
+    const Block b = block_at(pass, es, e0, nb, lanes, kSubcycled);
     if (!kSubcycled || stable_step) {
       element_block<kSubcycled, true>(p, b, dt, sums);
     } else {
