@@ -56,7 +56,7 @@ struct Block {
   double* __restrict qz;
   double* __restrict bv;                // viscous mean stress at the last update (kTrapezoid only)
   const double* __restrict step_scale;  // stable step / the physical one (mass scaling)
-  double* step_out;                     // each element's stable step, or null
+  double* __restrict step_out;          // each element's stable step, or null
   double* __restrict f_r;
   double* __restrict f_z;
 };

@@ -131,9 +131,12 @@ TEST(InRunMassScaling, AFastImpactTakesFewerStepsWithTheBalanceClosed) {
   EXPECT_GT(on.in_run_steps_saved, 0.0);
   EXPECT_LE(on.in_run_added_mass_fraction, 1e-3);
   EXPECT_GT(on.energy_mass_scaling, 0.0);
-  // The mass joins with its momentum: no energy created, the balance no worse than 2x off's.
+  // The mass joins with its momentum: no energy created, the balance no worse than 2x off's
+  // (measured 1.77e-4 both, 2026-11-29, AMD EPYC AVX-512).
   EXPECT_LT(on.energy_balance_error, 2.0 * off.energy_balance_error + 1e-6);
-  // 1e-3 of the sphere's mass in the crater: e within 1 % of the run without.
+  // Measured: 1,816 vs 2,181 steps, 7 elements, 5.9e-4 of the sphere's mass, e 0.178877 vs
+  // 0.178993 (-6.5e-4 relative). Bound 1 %: 15x the measured change, as e moves by up to about
+  // the added mass fraction (solver.md section 12).
   EXPECT_NEAR(on.e, off.e, 1e-2 * off.e);
 }
 
