@@ -56,7 +56,6 @@ struct Block {
   double* __restrict qz;
   double* __restrict bv;                // viscous mean stress at the last update (kTrapezoid only)
   const double* __restrict step_scale;  // stable step / the physical one (mass scaling)
-  double* __restrict step_out;          // each element's stable step, or null
   double* __restrict f_r;
   double* __restrict f_z;
 };
@@ -67,16 +66,14 @@ struct BlockLanes {
   alignas(64) double f_r[4][kBlock], f_z[4][kBlock];
 };
 
-// The block of nb elements from e0 of `pass`: its lanes and its slices of the element state (the
-// viscous stress history only with `viscous_history`, i.e. subcycling) and step scales.
-[[gnu::always_inline]] inline Block block_at(const ElementPass& pass,
+// The block of nb elements from e0: its lanes and its slices of the element state (the viscous
+// stress history only with `viscous_history`, i.e. subcycling) and of the step scales.
+[[gnu::always_inline]] inline Block block_at(const double* step_scale,
                                              ElementState& es,
                                              int e0,
                                              int nb,
                                              BlockLanes& lanes,
                                              bool viscous_history) {
-  const double* scale =
-      pass.step_scale != nullptr ? pass.step_scale : pass.elements.step_scale.data();
   return Block{nb,
                &lanes.xr[0][0],
                &lanes.xz[0][0],
@@ -90,8 +87,7 @@ struct BlockLanes {
                es.qr.data() + e0,
                es.qz.data() + e0,
                viscous_history ? es.bv.data() + e0 : nullptr,
-               scale + e0,
-               pass.step_out != nullptr ? pass.step_out + e0 : nullptr,
+               step_scale + e0,
                &lanes.f_r[0][0],
                &lanes.f_z[0][0]};
 }
@@ -177,11 +173,10 @@ struct LaneStress {
 // added to `sums`. kTrapezoid (subcycling): the viscous work over the step is the trapezoid of
 // the viscous stress at its start (b.bv, updated) and end, the rule that matches the
 // product-form kinetic energy; else the stress at its end (as before subcycling).
-template <bool kTrapezoid, bool kStableStep>
-[[gnu::always_inline]] inline void element_block(const BodyParams& p,
-                                                 const Block& b,
-                                                 double dt,
-                                                 ElementSums& sums) {
+// kKeepSteps (in-run mass scaling): each lane's stable step also into step_out[lane].
+template <bool kTrapezoid, bool kStableStep, bool kKeepSteps = false>
+[[gnu::always_inline]] inline void element_block(
+    const BodyParams& p, const Block& b, double dt, ElementSums& sums, double* step_out = nullptr) {
   const double c = p.wave_speed;
   LaneResults out;
 #pragma GCC ivdep
@@ -223,9 +218,7 @@ template <bool kTrapezoid, bool kStableStep>
     }
   }
   add_lane_sums<kStableStep>(out, b.nb, sums);
-  if constexpr (kStableStep) {
-    if (b.step_out != nullptr) std::copy_n(out.dt, b.nb, b.step_out);
-  }
+  if constexpr (kKeepSteps) std::copy_n(out.dt, b.nb, step_out);
 }
 
 // The first lane of the block whose element is inverted (volume or area not > 0) at the gathered
@@ -264,6 +257,9 @@ template <bool kSubcycled>
   // Copies, not references into `pass`: the loop's stores could alias a referenced field.
   const BodyParams& p = pass.body;
   const ElementConstants& ec = pass.elements;
+  const double* step_scale =
+      pass.step_scale != nullptr ? pass.step_scale : pass.elements.step_scale.data();
+  double* const step_out = pass.step_out;
   ElementState& es = pass.state;
   const int begin = pass.begin;
   const int end = pass.end;
@@ -311,8 +307,10 @@ template <bool kSubcycled>
       }
     }
     const double omega_before = sums.omega_min;
-    const Block b = block_at(pass, es, e0, nb, lanes, kSubcycled);
-    if (!kSubcycled || stable_step) {
+    const Block b = block_at(step_scale, es, e0, nb, lanes, kSubcycled);
+    if (!kSubcycled && step_out != nullptr) {
+      element_block<false, true, true>(p, b, dt, sums, step_out + e0);
+    } else if (!kSubcycled || stable_step) {
       element_block<kSubcycled, true>(p, b, dt, sums);
     } else {
       element_block<kSubcycled, false>(p, b, dt, sums);
