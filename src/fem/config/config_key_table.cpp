@@ -199,6 +199,15 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
       "mass scaling: bound on the added inertia (F^2 - 1) rho v^2 / p_ref (axisymmetric model)",
       +[](ImpactConfig& c) { return &c.solver.mass_scaling_inertia; }));
   t.push_back(entry(
+      "solver.in_run_step_floor", "[-]", closed(0.0, 0.95, "below the run's first step"),
+      "in-run mass scaling: substrate elements whose stable step falls below this fraction of "
+      "the first step get mass during the run (0 = off; axisymmetric model, without subcycling)",
+      +[](ImpactConfig& c) { return &c.solver.in_run_step_floor; }));
+  t.push_back(entry(
+      "solver.in_run_added_mass", "[-]", closed(0.0, 1e-2, "1 % of the sphere's mass"),
+      "in-run mass scaling: bound on the mass it adds, a fraction of the sphere's mass",
+      +[](ImpactConfig& c) { return &c.solver.in_run_added_mass; }));
+  t.push_back(entry(
       "output.times", "[s]", closed(0.0, 10.0), "times at which to write VTU fields (a list)",
       +[](ImpactConfig& c) { return &c.output.field_times; }));
   t.push_back(entry(

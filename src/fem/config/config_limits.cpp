@@ -146,6 +146,10 @@ void check_unread_keys(const ImpactConfig& c) {
                no_scaling);
   check_unread("solver.mass_scaling_inertia", c.solver.mass_scaling_inertia,
                d.solver.mass_scaling_inertia, d.solver.mass_scaling_inertia, no_scaling);
+  check_unread("solver.in_run_step_floor", c.solver.in_run_step_floor, d.solver.in_run_step_floor,
+               0.0, no_scaling);
+  check_unread("solver.in_run_added_mass", c.solver.in_run_added_mass, d.solver.in_run_added_mass,
+               d.solver.in_run_added_mass, no_scaling);
   check_unread("solver.hourglass", c.solver.hourglass, d.solver.hourglass, d.solver.hourglass,
                "3d (its hexahedra take solver.hourglass_3d)");
   check_unread("mesh.transitions", c.mesh.transitions, d.mesh.transitions, 0.0,

@@ -67,8 +67,8 @@ struct BlockLanes {
 };
 
 // The block of nb elements from e0: its lanes and its slices of the element state (the viscous
-// stress history only with `viscous_history`, i.e. subcycling).
-[[gnu::always_inline]] inline Block block_at(const ElementConstants& ec,
+// stress history only with `viscous_history`, i.e. subcycling) and of the step scales.
+[[gnu::always_inline]] inline Block block_at(const double* step_scale,
                                              ElementState& es,
                                              int e0,
                                              int nb,
@@ -87,7 +87,7 @@ struct BlockLanes {
                es.qr.data() + e0,
                es.qz.data() + e0,
                viscous_history ? es.bv.data() + e0 : nullptr,
-               ec.step_scale.data() + e0,
+               step_scale + e0,
                &lanes.f_r[0][0],
                &lanes.f_z[0][0]};
 }
@@ -173,11 +173,10 @@ struct LaneStress {
 // added to `sums`. kTrapezoid (subcycling): the viscous work over the step is the trapezoid of
 // the viscous stress at its start (b.bv, updated) and end, the rule that matches the
 // product-form kinetic energy; else the stress at its end (as before subcycling).
-template <bool kTrapezoid, bool kStableStep>
-[[gnu::always_inline]] inline void element_block(const BodyParams& p,
-                                                 const Block& b,
-                                                 double dt,
-                                                 ElementSums& sums) {
+// kKeepSteps (in-run mass scaling): each lane's stable step also into step_out[lane].
+template <bool kTrapezoid, bool kStableStep, bool kKeepSteps = false>
+[[gnu::always_inline]] inline void element_block(
+    const BodyParams& p, const Block& b, double dt, ElementSums& sums, double* step_out = nullptr) {
   const double c = p.wave_speed;
   LaneResults out;
 #pragma GCC ivdep
@@ -219,6 +218,7 @@ template <bool kTrapezoid, bool kStableStep>
     }
   }
   add_lane_sums<kStableStep>(out, b.nb, sums);
+  if constexpr (kKeepSteps) std::copy_n(out.dt, b.nb, step_out);
 }
 
 // The first lane of the block whose element is inverted (volume or area not > 0) at the gathered
@@ -257,6 +257,9 @@ template <bool kSubcycled>
   // Copies, not references into `pass`: the loop's stores could alias a referenced field.
   const BodyParams& p = pass.body;
   const ElementConstants& ec = pass.elements;
+  const double* step_scale =
+      pass.step_scale != nullptr ? pass.step_scale : pass.elements.step_scale.data();
+  double* const step_out = pass.step_out;
   ElementState& es = pass.state;
   const int begin = pass.begin;
   const int end = pass.end;
@@ -304,8 +307,10 @@ template <bool kSubcycled>
       }
     }
     const double omega_before = sums.omega_min;
-    const Block b = block_at(ec, es, e0, nb, lanes, kSubcycled);
-    if (!kSubcycled || stable_step) {
+    const Block b = block_at(step_scale, es, e0, nb, lanes, kSubcycled);
+    if (!kSubcycled && step_out != nullptr) {
+      element_block<false, true, true>(p, b, dt, sums, step_out + e0);
+    } else if (!kSubcycled || stable_step) {
       element_block<kSubcycled, true>(p, b, dt, sums);
     } else {
       element_block<kSubcycled, false>(p, b, dt, sums);

@@ -127,6 +127,11 @@ struct ElementPass {
   int end;
   NodalArrays x;
   double dt;
+  /// In-run mass scaling (impact_step_mass.hpp): the step scales to use instead of
+  /// elements.step_scale (null: those), indexed as the elements.
+  const double* step_scale = nullptr;
+  /// Receives each element's stable step [s] at its index (null: not kept).
+  double* step_out = nullptr;
 };
 
 /// The pass at the nodal positions x.r, x.z [m] and velocities x.vr, x.vz [m/s]; x.fr/x.fz

@@ -86,6 +86,16 @@ void finish_axisymmetric(const ImpactModel& m,
   if (res.status == RunStatus::kSeparated) res.suspect = suspect_reason(res);
 }
 
+/// What the in-run mass scaling did (impact_step_mass.hpp), into the result.
+void in_run_scaling_fields(const ImpactModel& m, const ImpactState& s, ImpactResult& res) {
+  const solver::InRunScaling& sc = s.scaling;
+  if (!sc.on()) return;
+  res.in_run_added_mass_fraction = sc.added_mass / m.scaling.sphere_mass_physical;
+  res.in_run_scaled_elements = static_cast<int>(sc.scaled.size());
+  res.in_run_steps_saved = sc.steps_unscaled - static_cast<double>(s.step);
+  res.energy_mass_scaling = s.energy.mass_scaling;
+}
+
 }  // namespace
 
 ImpactResult run_impact(const ImpactConfig& config,
@@ -94,6 +104,7 @@ ImpactResult run_impact(const ImpactConfig& config,
   const auto wall_start = std::chrono::steady_clock::now();
   const ImpactModel m = solver::make_impact_model(config, mesh);
   ImpactState s = solver::make_initial_state(m);
+  solver::init_in_run_scaling(config.solver, m, s);
   // The substrate surface on the axis (the rigid flat: z = 0), for the crater depth.
   const double z_axis_surface = m.contact == ContactKind::kSegments ? s.z[m.masters[0]] : 0.0;
   ImpactResult res;
@@ -134,6 +145,7 @@ ImpactResult run_impact(const ImpactConfig& config,
     res.element_updates = s.element_updates;
     res.end_time = s.t;
   }
+  in_run_scaling_fields(m, s, res);
   solver::close_run(s, wall_start, control, res);
   return res;
 }

@@ -11,6 +11,7 @@
 
 #include "fem/solver/element_loop.hpp"
 #include "fem/solver/impact_model.hpp"
+#include "fem/solver/impact_step_mass.hpp"
 #include "fem/solver/run_state.hpp"
 #include "fem/solver/transit_ledger.hpp"
 
@@ -30,6 +31,9 @@ struct ImpactState : RunState {
   bool cycle_penetrating = false;    ///< any slave in contact during this major cycle
   double t_first_penetrating = 0.0;  ///< start of the cycle's first step in contact [s]
   TransitLedger transit;             ///< energy in transit between levels
+  /// In-run mass scaling (impact_step_mass.hpp; off unless solver.in_run_step_floor > 0): its
+  /// nodal masses and step scales replace the model's.
+  InRunScaling scaling;
 };
 
 /// The approach since the start [m]: the sphere's c.o.m. displacement towards the target less the

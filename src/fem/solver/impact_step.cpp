@@ -75,6 +75,23 @@ void add_sums(const ElementSums& a, ElementSums& sums) {
   if (sums.bad_element < 0) sums.bad_element = a.bad_element;
 }
 
+/// The substrate's element pass under in-run mass scaling (impact_step_mass.hpp): its stable
+/// steps kept, the elements below the floor raised, the pass's sums into `sums` (the sphere's).
+void substrate_scaled(const ImpactModel& m,
+                      ImpactState& s,
+                      const NodalArrays& x,
+                      ElementSums& sums) {
+  InRunScaling& sc = s.scaling;
+  ElementSums substrate;
+  element_loop(m.simd,
+               {m.substrate, m.elements, s.elements, m.n_sphere_elements, m.n_elements, x, s.dt,
+                sc.step_scale.data(), sc.step.data()},
+               substrate);
+  substrate.dt_min = scale_below_floor(m, s, substrate.dt_min);
+  add_sums(substrate, sums);
+  count_in_run_step(sc, sums.dt_min);
+}
+
 /// Element passes of one subcycled base step: levels 0..top, each over its own 2^L x dt; the
 /// windows of the nodes below each level L >= 1 closed in the energy-in-transit ledger.
 ElementSums subcycled_elements(const ImpactModel& m, ImpactState& s, int top) {
@@ -160,9 +177,18 @@ void apply_far_boundary(const ImpactModel& m, ImpactState& s, int top) {
 }  // namespace
 
 NodalArrays nodal_arrays(const ImpactModel& m, ImpactState& s) {
-  return NodalArrays{s.r.data(),      s.z.data(),      s.vr.data(),       s.vz.data(),
-                     s.fr.data(),     s.fz.data(),     m.mass.data(),     m.inv_mass.data(),
-                     m.free_r.data(), m.free_z.data(), m.is_sphere.data()};
+  const bool scaled = s.scaling.on();
+  return NodalArrays{s.r.data(),
+                     s.z.data(),
+                     s.vr.data(),
+                     s.vz.data(),
+                     s.fr.data(),
+                     s.fz.data(),
+                     scaled ? s.scaling.mass.data() : m.mass.data(),
+                     scaled ? s.scaling.inv_mass.data() : m.inv_mass.data(),
+                     m.free_r.data(),
+                     m.free_z.data(),
+                     m.is_sphere.data()};
 }
 
 double rebound_kinetic_energy(const ImpactModel& m, const ImpactState& s, const NodeSums& ns) {
@@ -267,9 +293,13 @@ ForceReport compute_forces(const ImpactModel& m, ImpactState& s) {
   ElementSums& sums = rep.elements;
   const NodalArrays x = nodal_arrays(m, s);
   element_loop(m.simd, {m.sphere, m.elements, s.elements, 0, m.n_sphere_elements, x, s.dt}, sums);
-  element_loop(m.simd,
-               {m.substrate, m.elements, s.elements, m.n_sphere_elements, m.n_elements, x, s.dt},
-               sums);
+  if (s.scaling.on()) {
+    substrate_scaled(m, s, x, sums);
+  } else {
+    element_loop(m.simd,
+                 {m.substrate, m.elements, s.elements, m.n_sphere_elements, m.n_elements, x, s.dt},
+                 sums);
+  }
   s.element_updates += m.n_elements;
   record_element_sums(m, s, rep);
   apply_far_boundary(m, s, -1);

@@ -175,6 +175,20 @@ const std::array kFields{
     CORLAB_RESULT_MEMBER(mass_scaling, "-", "base step / the physical one (1 = none)", kBoth),
     CORLAB_RESULT_MEMBER(
         added_mass_fraction, "-", "mass added by mass scaling / sphere mass", kBoth),
+    CORLAB_RESULT_MEMBER(in_run_added_mass_fraction,
+                         "-",
+                         "mass added by in-run mass scaling / sphere mass",
+                         kSummary),
+    CORLAB_RESULT_MEMBER(
+        in_run_scaled_elements, "-", "substrate elements in-run mass scaling scaled", kSummary),
+    CORLAB_RESULT_MEMBER(in_run_steps_saved,
+                         "-",
+                         "steps in-run mass scaling saved (estimate along the run)",
+                         kSummary),
+    CORLAB_RESULT_MEMBER(energy_mass_scaling,
+                         "J",
+                         "kinetic energy in-run mass scaling took out (momentum kept)",
+                         kSummary),
     CORLAB_MACHINE_MEMBER(
         simd, "-", "instruction set of the solver's hot loops (CORLAB_SIMD)", kSummary),
     ResultField{"corlab_build", "-", "corlab version and git commit of the run (provenance)",

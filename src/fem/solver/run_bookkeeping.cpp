@@ -43,7 +43,7 @@ std::optional<RunStatus> RunBookkeeping::sample(const RunState& s, double kineti
   v_com_prev_ = relative_velocity(s);
   const EnergySums& w = s.energy;
   const double total = kinetic + w.internal + w.hourglass + w.viscous + w.contact + w.friction +
-                       w.absorbed + w.boundary;
+                       w.absorbed + w.boundary + w.mass_scaling;
   const double balance = (total - energy_reference_) / m_.energy_initial;
   if (!std::isfinite(balance)) {
     balance_max_ = std::numeric_limits<double>::quiet_NaN();

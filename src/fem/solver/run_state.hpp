@@ -31,6 +31,9 @@ struct EnergySums {
   double friction = 0.0;   ///< frictional dissipation (0 without friction)
   double absorbed = 0.0;   ///< work taken out by the absorbing far boundary (dashpots.hpp)
   double boundary = 0.0;   ///< energy stored now in the viscous-spring boundary's springs
+  /// Kinetic energy taken out where in-run mass scaling added mass with the momentum kept
+  /// (impact_step_mass.hpp; 0 without it)
+  double mass_scaling = 0.0;
 };
 
 /// The trapezoidal integral of F d(delta) over the sampled (force, indentation) pairs: the

@@ -173,6 +173,13 @@ struct SolverConfig {
   /// Bound on the inertia that mass scaling adds, (F^2 - 1) rho v^2 / p_ref, rho the larger
   /// density, v the impact speed, p_ref the smaller of the Hertz p0 and the yield stresses [-].
   double mass_scaling_inertia = 1e-4;
+  /// In-run selective mass scaling (docs/theory/solver.md section 12, "In the run"): an element of
+  /// the substrate whose stable step falls below this fraction of the run's first step gets its
+  /// density raised, during the run, until its step is back above it (0 = off) [-].
+  double in_run_step_floor = 0.0;
+  /// Bound on the mass the in-run scaling adds, a fraction of the sphere's mass [-]: with a floor
+  /// of 0.35, e moved by <= 0.2 of its error bar on the paper's dearest run (solver.md 12).
+  double in_run_added_mass = 5e-4;
 };
 
 struct OutputConfig {

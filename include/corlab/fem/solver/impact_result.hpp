@@ -109,6 +109,13 @@ struct ImpactResult {
   /// Mass scaling (docs/theory/solver.md section 12): base step / the physical one (1 = none) [-]
   double mass_scaling = 1.0;
   double added_mass_fraction = 0.0;  ///< mass added by the scaling / the sphere's mass [-]
+  /// In-run mass scaling (solver.in_run_step_floor): mass it added / the sphere's mass [-]
+  double in_run_added_mass_fraction = 0.0;
+  int in_run_scaled_elements = 0;  ///< substrate elements it scaled [-]
+  /// Steps it saved: those the run would have needed at the scaled elements' own steps, less
+  /// those taken (an estimate along this run's path) [-]
+  double in_run_steps_saved = 0.0;
+  double energy_mass_scaling = 0.0;  ///< kinetic energy it took out, momentum kept [J]
   double end_time = 0.0;             ///< [s]
   double wall_s = 0.0;               ///< wall-clock time of the run [s]
   double element_steps_per_s = 0.0;  ///< throughput [1/s]
