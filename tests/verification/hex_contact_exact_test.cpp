@@ -11,6 +11,7 @@
 // 1.0009), too slowly for CI, so those bounds are the measured error at 1.5 mm with a margin
 // (docs/theory/solver3d.md, "The contact surface"). The faceted master fails them (e_t 0.8266 and
 // 0.9936 at 5 and 40 deg). SPDX-License-Identifier: BSD-3-Clause
+// SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -85,8 +85,9 @@ TEST(DemLammpsCompiled, OneFixLineWithEveryTableInPlaceOfThePythonHook) {
   EXPECT_EQ(pair_tables, 3);
   EXPECT_EQ(walls, 2);
   EXPECT_EQ(wall_tables, 4);
-  EXPECT_NE(compiled.find(" wall cylinder 2 0 0 0.050000000000000003 0 0.29999999999999999 type 1 "),
-            std::string::npos);
+  EXPECT_NE(
+      compiled.find(" wall cylinder 2 0 0 0.050000000000000003 0 0.29999999999999999 type 1 "),
+      std::string::npos);
 }
 
 TEST(DemLammpsCompiled, ConstantPairsLeaveNoFix) {
