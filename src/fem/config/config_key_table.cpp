@@ -130,7 +130,7 @@ void add_geometry_and_mesh_keys(std::vector<KeyEntry>& t) {
       +[](ImpactConfig& c) { return &c.mesh.file; }));
 }
 
-void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
+void add_solver_keys(std::vector<KeyEntry>& t) {
   t.push_back(entry(
       "solver.model", "", std::nullopt,
       "axisymmetric (normal impacts) | 3d (the 3-D half model: hexahedra, friction, oblique "
@@ -183,6 +183,9 @@ void add_solver_and_output_keys(std::vector<KeyEntry>& t) {
       "refuse, before meshing, a run estimated to need more element updates (elements x "
       "expected steps; raise it to run anyway)",
       +[](ImpactConfig& c) { return &c.solver.max_element_steps; }));
+}
+
+void add_step_control_and_output_keys(std::vector<KeyEntry>& t) {
   t.push_back(entry(
       "solver.subcycling_levels", "[-]", closed(0.0, 6.0, "2^6 = 64 base steps per major cycle"),
       "element subcycling: elements step at up to 2^this x the base step (0 = off; axisymmetric "
@@ -248,7 +251,8 @@ std::vector<KeyEntry> build_table() {
   add_material_keys<false>(t, {"substrate.material", "substrate.E", "substrate.nu", "substrate.rho",
                                "substrate.sigma_y", "substrate.hardening"});
   add_geometry_and_mesh_keys(t);
-  add_solver_and_output_keys(t);
+  add_solver_keys(t);
+  add_step_control_and_output_keys(t);
   return t;
 }
 
