@@ -2,11 +2,11 @@
 // error_bars.md "The 3-D model"): the CI-sized copy of scripts/error_bar_coverage_3d.py, two of
 // its seeded sample's cases (seed 20261129), one elastic and one elastic-plastic, each run with
 // its error estimate and again at h / sqrt 2. Each finer value must lie inside its bar (as
-// measured: 6 of 6). The bars' width is printed, not asserted: their median over the six,
-// relative to each value, was 5.5 x the median relative |x(h / sqrt 2) - x(h)| with the faceted
-// contact and 14 x with the smooth surface and kinematic stick (2.93e-2 against 2.11e-3: the
-// runs converge faster, the coarse companions scatter as before); issue 39's aim of 3 x is open
-// (docs/theory/error_bars.md, "The 3-D model").
+// measured: 6 of 6), and the bars must not grow wider: their median over the six, relative to
+// each value, was 5.5 x the median relative |x(h / sqrt 2) - x(h)| with the faceted contact and
+// is 14 x with the smooth surface and kinematic stick (2.93e-2 against 2.11e-3: the bars stayed,
+// the runs converge faster, so the change shrank); the bound, 7 before, is 18. Issue 39's aim of
+// 3 x is open (docs/theory/error_bars.md, "The 3-D model").
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
@@ -63,6 +63,7 @@ TEST(ErrorBarCoverage3d, TwoCasesOfTheSeededSample) {
   }
   tally.print();
   EXPECT_EQ(tally.inside, 6);
+  EXPECT_LE(test::median(tally.bars), 18.0 * test::median(tally.changes));
 }
 
 }  // namespace
