@@ -2,10 +2,11 @@
 """Coverage of the discretisation-error bars (issue 28; docs/theory/error_bars.md).
 
 Draws cases at random (seeded) from Table 2, the yield-velocity study and the FE dataset's box,
-runs each at its default mesh h and at the meshes the estimators use (coarser by sqrt 2, 2 and
-2 sqrt 2) and at h/2 (a subset also at h/4), then scores every estimator: the fraction of cases
-whose finer value lies inside e(h) +/- U, and the bar's median width against the median
-|e(h/2) - e(h)|. The runs go to OUT/runs.jsonl as they finish; a second call resumes.
+runs each at its default mesh h, at the coarser meshes of every companion set below and at h/2
+(a subset also at h/4), then scores every estimator on issue 28's companions and the scatter
+estimator on each companion set: the fraction of cases whose finer value lies inside e(h) +/- U,
+and the bar's median width against the median |e(h/2) - e(h)|. The runs go to OUT/runs.jsonl as
+they finish; a second call resumes (and runs only the meshes a new companion set adds).
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/error_bar_coverage.py --out out/coverage \
         [--seed 20261127]
@@ -36,8 +37,17 @@ SOURCES = {
     "yield_velocity": ROOT / "studies/paper/yield_velocity.toml",
     "dataset": ROOT / "studies/dataset/fe_restitution.toml",
 }
-# The meshes of every run: the default h, the estimators' coarser companions, h/2 (and h/4).
-COARSE_RATIOS = [1.0, math.sqrt(2.0), 2.0, 2.0 * math.sqrt(2.0)]
+# The companion sets scored, each with its scatter estimator (mesh ratios h_i / h): issue 28's,
+# corlab's (kErrorBarRatios, discretisation_error.hpp), on which the estimators were compared and
+# the scatter factor calibrated, and issue 43's cheaper candidate (not adopted: error_bars.md).
+COMPANION_SETS = {
+    "issue28": ("scatter", [math.sqrt(2.0), 2.0, 2.0 * math.sqrt(2.0)]),
+    "issue43": ("scatter_coarse", [2.0, 2.0 * math.sqrt(2.0), 4.0, 4.0 * math.sqrt(2.0)]),
+}
+# issue 28's grids: the default h and its companions, on which every estimator is scored.
+COARSE_RATIOS = [1.0] + COMPANION_SETS["issue28"][1]
+# The meshes of every run: the default h, every set's companions, h/2 (and h/4).
+RUN_RATIOS = sorted({q for _, ratios in COMPANION_SETS.values() for q in ratios} | {1.0})
 FINE_RATIO = 0.5
 FINEST_RATIO = 0.25
 
@@ -89,10 +99,10 @@ def run_one(case, ratio):
 def run_all(cases, finest_subset, out, jobs):
     path = out / "runs.jsonl"
     done = load_done(path)
-    todo = [(PAPER_CASE, q) for q in COARSE_RATIOS + PAPER_FINE
+    todo = [(PAPER_CASE, q) for q in RUN_RATIOS + PAPER_FINE
             if (PAPER_CASE["case"], q) not in done]
     for i, case in enumerate(cases):
-        ratios = COARSE_RATIOS + [FINE_RATIO] + ([FINEST_RATIO] if i < finest_subset else [])
+        ratios = RUN_RATIOS + [FINE_RATIO] + ([FINEST_RATIO] if i < finest_subset else [])
         todo += [(case, q) for q in ratios if (case["case"], q) not in done]
     # The cheapest first: a partial study still has whole cases.
     todo.sort(key=lambda t: -t[1])
@@ -109,28 +119,36 @@ def run_all(cases, finest_subset, out, jobs):
     return load_done(path)
 
 
+def tally(cases, runs, name, ratios):
+    """Estimator `name` on the grids h x [1] + ratios: coverage of e(h/2) and e(h/4), the bars'
+    median width and the median |e(h/2) - e(h)|."""
+    grids = [1.0] + ratios
+    hits, total, hits4, total4, widths, diffs = 0, 0, 0, 0, [], []
+    for case in cases:
+        e = {q: runs.get((case["case"], q), {}).get("e", math.nan)
+             for q in grids + [FINE_RATIO, FINEST_RATIO]}
+        bar = corlab.error_bar(name, [e[q] for q in grids], grids)
+        if not math.isfinite(bar) or not math.isfinite(e[FINE_RATIO]):
+            continue
+        total += 1
+        hits += abs(e[FINE_RATIO] - e[1.0]) <= bar
+        widths.append(bar)
+        diffs.append(abs(e[FINE_RATIO] - e[1.0]))
+        if math.isfinite(e[FINEST_RATIO]):
+            total4 += 1
+            hits4 += abs(e[FINEST_RATIO] - e[1.0]) <= bar
+    median = (lambda v: statistics.median(v) if v else math.nan)
+    return {"cases": total, "covered": hits, "cases_h4": total4, "covered_h4": hits4,
+            "median_width": median(widths), "median_difference": median(diffs)}
+
+
 def score(cases, runs):
-    """Per estimator: coverage of e(h/2) and e(h/4), median bar width / median |e(h/2) - e(h)|."""
-    table = {}
-    for name in corlab.error_bar_estimators():
-        hits, total, hits4, total4, widths, diffs = 0, 0, 0, 0, [], []
-        for case in cases:
-            e = {q: runs.get((case["case"], q), {}).get("e", math.nan)
-                 for q in COARSE_RATIOS + [FINE_RATIO, FINEST_RATIO]}
-            bar = corlab.error_bar(name, [e[q] for q in COARSE_RATIOS], COARSE_RATIOS)
-            if not math.isfinite(bar) or not math.isfinite(e[FINE_RATIO]):
-                continue
-            total += 1
-            hits += abs(e[FINE_RATIO] - e[1.0]) <= bar
-            widths.append(bar)
-            diffs.append(abs(e[FINE_RATIO] - e[1.0]))
-            if math.isfinite(e[FINEST_RATIO]):
-                total4 += 1
-                hits4 += abs(e[FINEST_RATIO] - e[1.0]) <= bar
-        median = (lambda v: statistics.median(v) if v else math.nan)
-        table[name] = {"cases": total, "covered": hits, "cases_h4": total4, "covered_h4": hits4,
-                       "median_width": median(widths), "median_difference": median(diffs)}
-    return table
+    """Every estimator on issue 28's companions; each companion set with its estimator."""
+    table = {name: tally(cases, runs, name, COMPANION_SETS["issue28"][1])
+             for name in corlab.error_bar_estimators()}
+    sets = {name: tally(cases, runs, estimator, ratios)
+            for name, (estimator, ratios) in COMPANION_SETS.items()}
+    return table, sets
 
 
 def main():
@@ -148,24 +166,34 @@ def main():
     cases = sample_cases(a.cases, a.seed, a.max_wall)
     runs = load_done(out / "runs.jsonl") if a.score_only else run_all(
         cases, a.finest_subset, out, a.jobs)
-    table = score(cases, runs)
+    table, sets = score(cases, runs)
     paper = {q: runs.get((PAPER_CASE["case"], q), {}).get("e", math.nan)
-             for q in COARSE_RATIOS + PAPER_FINE}
-    (out / "coverage.json").write_text(json.dumps({"estimators": table, "paper_case": {
+             for q in RUN_RATIOS + PAPER_FINE}
+    (out / "coverage.json").write_text(json.dumps({"estimators": table, "companion_sets": {
+        name: dict(t, estimator=COMPANION_SETS[name][0], ratios=COMPANION_SETS[name][1])
+        for name, t in sets.items()}, "paper_case": {
         str(q): e for q, e in paper.items()}}, indent=2) + "\n")
     e1 = paper[1.0]
     print(f"paper case, h = 0.25 mm: e = {e1:.5f}")
-    for name in corlab.error_bar_estimators():
-        bar = corlab.error_bar(name, [paper[q] for q in COARSE_RATIOS], COARSE_RATIOS)
+    bars = [(name, name, COARSE_RATIOS) for name in corlab.error_bar_estimators()]
+    bars += [(f"{est} ({name})", est, [1.0] + q) for name, (est, q) in COMPANION_SETS.items()
+             if name != "issue28"]
+    for label, name, grids in bars:
+        bar = corlab.error_bar(name, [paper[q] for q in grids], grids)
         inside = ", ".join(f"{0.25 * q:.4g} mm {paper[q]:.5f} "
                            f"{'inside' if abs(paper[q] - e1) <= bar else 'OUTSIDE'}"
                            for q in PAPER_FINE)
-        print(f"  {name}: +/- {bar:.5f}; {inside}")
-    print("| estimator | e(h/2) inside | e(h/4) inside | median U | median abs(e(h/2) - e(h)) |")
-    print("|---|---|---|---|---|")
-    for name, t in table.items():
+        print(f"  {label}: +/- {bar:.5f}; {inside}")
+    print("| estimator (companions) | e(h/2) inside | e(h/4) inside | median U | "
+          "median abs(e(h/2) - e(h)) | width ratio |")
+    print("|---|---|---|---|---|---|")
+    rows = [(f"{name} (issue28)", t) for name, t in table.items()]
+    rows += [(f"{COMPANION_SETS[name][0]} ({name})", t) for name, t in sets.items()
+             if name != "issue28"]
+    for name, t in rows:
         print(f"| {name} | {t['covered']}/{t['cases']} | {t['covered_h4']}/{t['cases_h4']} | "
-              f"{t['median_width']:.2e} | {t['median_difference']:.2e} |")
+              f"{t['median_width']:.2e} | {t['median_difference']:.2e} | "
+              f"{t['median_width'] / t['median_difference']:.2f} |")
 
 
 if __name__ == "__main__":

@@ -9,7 +9,12 @@
 ///     changes with h: e does not converge monotonically); sigma^2 = mean over the coarser grids
 ///     of (e_i - e_1)^2 / (1 + h_i^2), and U = 2.5 sigma sqrt(1 + 1/4), the spread expected of
 ///     e(h/2) - e(h). The factor 2.5 was calibrated for >= 95 % coverage on one seeded sample
-///     and checked on another (docs/theory/error_bars.md).
+///     and checked on another (docs/theory/error_bars.md), with the coarser grids at sqrt 2, 2
+///     and 2 sqrt 2 (the axisymmetric model's companions; the 3-D model's use it too).
+///   - scatter_coarse: the same with the factor 2.0, calibrated the same way with the coarser
+///     grids at 2, 2 sqrt 2, 4 and 4 sqrt 2 (sigma from four values): issue 43's candidate for
+///     companions at 0.4 of the cost, not used by the solver (its median bar was 3.96 x the
+///     median change on the CI corners, where issue 28's criterion allows 3 x).
 ///   - two_grid: the two-grid GCI with p = 2 and Fs = 3 (Roache 1998): U = |e_1 - e_2h|.
 ///   - least_squares: after Eca & Hoekstra 2014 (J. Comput. Phys. 262:104-130), built for
 ///     scattered convergence: least-squares fits e_i = e_0 + alpha h_i^p (observed p), else with
@@ -45,7 +50,8 @@ ConvergenceFit fit_fixed_orders(std::span<const double> e,
                                 std::span<const double> weights,
                                 std::span<const double> orders);
 
-/// The estimators by name, the default first: "scatter", "two_grid", "least_squares".
+/// The estimators by name, the default first: "scatter", "scatter_coarse", "two_grid",
+/// "least_squares".
 const std::vector<std::string_view>& error_bar_estimators();
 
 /// The error bar U of e_1 [-]: e_1 +/- U. `e` and `h` as in the file comment (h[0] = 1); `name`

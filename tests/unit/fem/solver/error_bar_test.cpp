@@ -83,6 +83,17 @@ TEST(ErrorBar, ScatterIsTwoAndAHalfDeviationsOfTheFinerValue) {
   EXPECT_EQ(error_bar_estimators().front(), "scatter");
 }
 
+TEST(ErrorBar, ScatterCoarseIsTwoDeviationsOverItsFourCompanions) {
+  // Issue 43's candidate companions (2, 2 sqrt 2, 4, 4 sqrt 2 h): sigma from four values,
+  // the factor 2.0 calibrated on them.
+  const double d = 0.004;
+  const std::vector<double> e{0.5, 0.5 + d, 0.5, 0.5 - d, 0.5};
+  const std::vector<double> h{1.0, 2.0, 2.0 * std::sqrt(2.0), 4.0, 4.0 * std::sqrt(2.0)};
+  const double sigma = std::sqrt((d * d / 5.0 + d * d / 17.0) / 4.0);
+  EXPECT_NEAR(error_bar("scatter_coarse", e, h), 2.0 * sigma * std::sqrt(1.25), 1e-15);
+  EXPECT_NEAR(error_bar("scatter_coarse", e, h), 0.8 * error_bar("scatter", e, h), 1e-15);
+}
+
 TEST(ErrorBar, TwoGridIsTheGci) {
   const std::vector<double> e{0.5349, 0.5367, 0.5384, 0.5421};
   EXPECT_NEAR(error_bar("two_grid", e, kRatios), 0.5384 - 0.5349, 1e-15);
