@@ -185,7 +185,7 @@ void bind_simulate(py::module_& m) {
   m.def(
       "simulate",
       [](const py::dict& settings, std::optional<std::string> config_file, double mesh_ratio,
-         bool error_estimate) {
+         bool error_estimate, bool e_only) {
         fem::ImpactConfig config;
         if (config_file) config = fem::load_impact_config(*config_file);
         std::vector<std::string> items;
@@ -203,6 +203,7 @@ void bind_simulate(py::module_& m) {
         fem::SimulationControl control;
         control.cancel = &cancel;
         control.config_validated = true;  // above
+        control.e_only = e_only;
         const fem::ImpactResult result = run_interruptible(cancel, [&] {
           return error_estimate ? fem::simulate_with_error_estimate(config, control)
                                 : fem::simulate(config, control);
@@ -213,7 +214,7 @@ void bind_simulate(py::module_& m) {
         return result_dict(result, config);
       },
       py::arg("settings") = py::dict(), py::arg("config_file") = py::none(),
-      py::arg("mesh_ratio") = 1.0, py::arg("error_estimate") = false,
+      py::arg("mesh_ratio") = 1.0, py::arg("error_estimate") = false, py::arg("e_only") = false,
       R"(Runs one explicit FE impact (elastic sphere on an elastic-plastic substrate).
 
 settings: {key: value} with the keys of `corlab simulate --set` (SI units), e.g.
@@ -223,6 +224,8 @@ mesh_ratio: the built-in mesh that many times coarser everywhere (0.5: twice as 
   error estimate's companions are (corlab::fem::coarsened); 1 = as configured.
 error_estimate: also run the companions and set e_error, e_coarse (corlab simulate
   --error-estimate).
+e_only: end one short window after the last contact, as the error estimate's companions do
+  (SimulationControl::e_only): e, e_t and omega final, the energies and history cut short.
 Returns a dict: e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], ...,
 "config" (the case), "history" (numpy arrays: time [s], contact_force [N], indentation [m], ...).
 The GIL is released during the run; Ctrl-C stops it (KeyboardInterrupt). Bad input raises

@@ -39,8 +39,16 @@ inline constexpr std::array<double, 3> kErrorBarRatios3d{1.4142135623730951, 1.6
 /// bar +/- 0.048 where the axisymmetric solver's converged e is 0.0020 away;
 /// docs/theory/error_bars.md, "The 3-D model").
 inline constexpr double kMinCompanionContactElements = 2.0;
-/// The estimator simulate_with_error_estimate uses (error_bar_estimators()).
+/// The estimator simulate_with_error_estimate uses (error_bar_estimators()): every bar of the
+/// axisymmetric model, e_t's and omega's of the 3-D model.
 inline constexpr std::string_view kDefaultErrorBar = "scatter";
+/// The 3-D model's estimator of e (= e_n): the scatter estimator with a smaller factor, 1.5 (e_n
+/// converges systematically; docs/theory/error_bars.md, "The 3-D model").
+inline constexpr std::string_view kErrorBar3dNormal = "scatter_3d_e_n";
+
+/// The estimator of e's bar for `config`: kErrorBar3dNormal for the 3-D model, else
+/// kDefaultErrorBar.
+std::string_view error_bar_estimator(const ImpactConfig& config);
 
 /// The config meshed `ratio` times coarser (< 1: finer): mesh.h_min and mesh.h_max x ratio,
 /// mesh.contact_elements / ratio, mesh.growth^ratio (at most MeshConfig::kMaxGrowth); the
