@@ -11,7 +11,9 @@
 /// e = 0.5549, 0.5367, 0.5421, 0.5349, 0.5398 at h = 1, 0.5, 0.35, 0.25, 0.18 mm), which the
 /// two-grid GCI this replaced did not cover (37 of a seeded sample of 48 cases held e(h/2)
 /// within it, against 46 for this one). The companions add 55-76 % to a run
-/// (docs/dev/performance.md).
+/// (docs/dev/performance.md). The 3-D model's e (= e_n) takes the scatter estimator with a smaller
+/// factor (kErrorBar3dNormal), its e_t and omega the scatter estimator; each 3-D bar bounds the
+/// change to the mesh sqrt 2 finer, not the distance to the converged value.
 
 #include <array>
 #include <string_view>
