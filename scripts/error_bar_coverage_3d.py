@@ -6,19 +6,23 @@ Draws oblique cases at random (seeded): angles 2-80 deg, mu 0.1-0.4, alternately
 speeds 2-10 m/s) and elastic-plastic (the flat's sigma_y 300-1000 MPa, normal speeds 1-2.5 m/s,
 where the plastic contact stays below R/5, so that the companions up to 2h stay within the
 sphere mesh's bound R/20): the paper's steel pair scaled to a 2.5 mm sphere on a 2.5 mm block, at
-h = a/4 (the 3-D model's default a/h), at most R/20. Each case runs at h, at the coarser
-companions the estimators may use (sqrt 2 to 2 sqrt 2 h) and at h / sqrt 2 (h/2 would cost about
-16 runs at h), one run at a time, cheapest first; every run is appended to OUT/runs.csv as it
-finishes, and a second call resumes. Then it scores each companion set: per quantity, the
-fraction of cases whose h / sqrt 2 value lies inside the bar, and the median bar over the median
-|x(h / sqrt 2) - x(h)| (both relative to |x(h)|). A case whose every companion is beyond R/20
-has no bar and is not counted.
+h = a/4 (the 3-D model's default a/h), at most R/20. Each case runs at h (in full, as the
+estimate's run), at the companions sqrt 2, 2^(3/4) and 2 h and at h / sqrt 2 (for e only, as the
+estimate's companions: SimulationControl::e_only; h/2 would cost about 16 runs at h), one run at
+a time, cheapest first; every run is appended to OUT/runs.csv as it finishes, and a second call
+resumes (`--cases 12`: the sample's first 12, the same draws). Then it scores corlab's bars (e_n
+by scatter_3d_e_n, e_t and omega by scatter) and every estimator of
+corlab.error_bar_estimators() on the companions corlab keeps (>= 2 elements across the predicted
+contact radius): per quantity, the cases whose h / sqrt 2 value lies inside the bar, and the
+median bar over the median |x(h / sqrt 2) - x(h)| (both relative to |x(h)|); and the observed
+order p of each quantity, from x(h) - x(h / sqrt 2) = (1 - 2^(-p/2)) (x(h) - x*) against the
+nearest companion: p = -2 log2 |x(h / sqrt 2) - x(h)| / |x(h) - x(sqrt 2 h)|.
 
     PYTHONPATH=build/python nice /usr/bin/python3 scripts/error_bar_coverage_3d.py \
         --out out/coverage3d [--seed 20261129] [--cases 24] [--score-only]
 
-The estimator is corlab's (corlab.error_bar, one C++ implementation); this script only runs and
-counts.
+The estimators are corlab's (corlab.error_bar, one C++ implementation); this script only runs and
+counts, and `--score-only` re-estimates from runs.csv without running anything.
 """
 # SPDX-License-Identifier: BSD-3-Clause
 import argparse
@@ -36,18 +40,13 @@ import corlab
 QUANTITIES = ["e_n", "e_t", "omega"]
 # The finer mesh the bars are checked against: h / sqrt 2 (h / 2 costs 16 runs at h).
 REFERENCE = 2.0 ** -0.5
-# Every mesh ratio a case runs at, the reference last (the dearest).
-RATIOS = [2.0 ** 1.5, 2.0, 2.0 ** 0.75, 2.0 ** 0.5, 1.0, REFERENCE]
-# The companion sets scored: "today" the axisymmetric model's (sqrt 2, 2, 2 sqrt 2), which the 3-D
-# model used before issue 39; "resolved" those of them with at least MIN_CONTACT_ELEMENTS across
-# the predicted contact radius; "3d" corlab's 3-D set (error_bar_ratios): sqrt 2, 2^(3/4) and 2,
-# resolved.
-COMPANION_SETS = {
-    "today": [2.0 ** 0.5, 2.0, 2.0 ** 1.5],
-    "resolved": [2.0 ** 0.5, 2.0, 2.0 ** 1.5],
-    "3d": [2.0 ** 0.5, 2.0 ** 0.75, 2.0],
-}
+# corlab's 3-D companions (kErrorBarRatios3d), kept where MIN_CONTACT_ELEMENTS fit across a.
+COMPANIONS = [2.0 ** 0.5, 2.0 ** 0.75, 2.0]
 MIN_CONTACT_ELEMENTS = 2.0
+# The estimator corlab's 3-D estimate uses per quantity (error_bar_estimator, kDefaultErrorBar).
+CORLAB_3D = {"e_n": "scatter_3d_e_n", "e_t": "scatter", "omega": "scatter"}
+# Every mesh ratio a case runs at, cheapest first, the reference last (the dearest).
+RATIOS = COMPANIONS[::-1] + [1.0, REFERENCE]
 # The case's own mesh: a/4 (the 3-D model's default a/h), at most R/20 (the sphere mesh's bound),
 # graded fast (growth 1.6 up to 1 mm) so that h / sqrt 2 stays affordable.
 BASE = {
@@ -96,6 +95,25 @@ def load_runs(path, cases):
     return runs
 
 
+def run_one(case, q):
+    """One run of `case` at mesh ratio q: its runs.csv row."""
+    row = {k: case[k] for k in ("case", "angle", "velocity", "friction", "sigma_y")}
+    row["ratio"] = q
+    try:
+        r = corlab.simulate(case["settings"], mesh_ratio=q, e_only=q != 1.0)
+    except ValueError as err:  # a companion beyond R/20: left out, as corlab does
+        row.update(status="refused", a_over_h=math.nan)
+        print(f"{case['case']} ratio {q:.3f}: {err}", file=sys.stderr, flush=True)
+        return row
+    a_over_h = float(re.search(r"a/h = ([0-9.e+-]+)", r["mesh_reason"]).group(1))
+    row.update(a_over_h=a_over_h, e_n=r["e_n"], e_t=r["e_t"], omega=r["omega"],
+               elements=r["elements"], status=r["status"], wall_s=r["wall_s"])
+    print(f"{case['case']} ratio {q:.3f}: a/h {a_over_h:.3g} e_n {r['e_n']:.5f} "
+          f"e_t {r['e_t']:.5f} omega {r['omega']:.2f} ({r['status']}, "
+          f"{r['elements']} elements, {r['wall_s']:.1f} s)", file=sys.stderr, flush=True)
+    return row
+
+
 def run_all(cases, path):
     done = load_runs(path, cases)
     new = not path.exists()
@@ -106,25 +124,9 @@ def run_all(cases, path):
         # Case by case (a partial sample has whole cases), each cheapest first.
         for case in cases:
             for q in RATIOS:
-                if (case["case"], round(q, 6)) in done:
-                    continue
-                row = {k: case[k] for k in ("case", "angle", "velocity", "friction", "sigma_y")}
-                row["ratio"] = q
-                try:
-                    r = corlab.simulate(case["settings"], mesh_ratio=q)
-                except ValueError as err:  # a companion beyond R/20: left out, as corlab does
-                    row.update(status="refused", a_over_h=math.nan)
-                    print(f"{case['case']} ratio {q:.3f}: {err}", file=sys.stderr, flush=True)
-                else:
-                    a_over_h = float(re.search(r"a/h = ([0-9.e+-]+)", r["mesh_reason"]).group(1))
-                    row.update(a_over_h=a_over_h, e_n=r["e_n"], e_t=r["e_t"], omega=r["omega"],
-                               elements=r["elements"], status=r["status"], wall_s=r["wall_s"])
-                    print(f"{case['case']} ratio {q:.3f}: a/h {a_over_h:.3g} e_n {r['e_n']:.5f} "
-                          f"e_t {r['e_t']:.5f} omega {r['omega']:.2f} ({r['status']}, "
-                          f"{r['elements']} elements, {r['wall_s']:.1f} s)", file=sys.stderr,
-                          flush=True)
-                out.writerow(row)
-                f.flush()
+                if (case["case"], round(q, 6)) not in done:
+                    out.writerow(run_one(case, q))
+                    f.flush()
     return load_runs(path, cases)
 
 
@@ -135,50 +137,73 @@ def value(runs, case, q, quantity):
     return float(row[quantity])
 
 
-def companions_of(name, runs, case):
-    """The set's companions that ran (a refused one is left out, as corlab leaves it out)."""
+def companions_of(runs, case):
+    """corlab's companions that ran and keep the contact resolved (others are left out, as
+    corlab leaves them out)."""
     kept = []
-    for q in COMPANION_SETS[name]:
+    for q in COMPANIONS:
         row = runs.get((case, round(q, 6)))
-        if row is None or row["status"] != "separated":
-            continue
-        if name != "today" and float(row["a_over_h"]) < MIN_CONTACT_ELEMENTS * (1 - 1e-9):
-            continue
-        kept.append(q)
+        if row is not None and row["status"] == "separated" and \
+                float(row["a_over_h"]) >= MIN_CONTACT_ELEMENTS * (1 - 1e-9):
+            kept.append(q)
     return kept
 
 
-def score(cases, runs):
-    """Per companion set and quantity: cases with a bar, covered, the median bar and the median
+def median(v):
+    return statistics.median(v) if v else math.nan
+
+
+def score(cases, runs, names=None):
+    """Per estimator and quantity: cases with a bar, covered, the median bar and the median
     |x(h / sqrt 2) - x(h)|, and their ratio over the values relative to |x(h)| (omega spans
-    50-4000 rad/s over the sample: absolute medians would compare different cases)."""
+    30-4000 rad/s over the sample: absolute medians would compare different cases)."""
     table = {}
-    for name in COMPANION_SETS:
+    for name in names or ["corlab"] + corlab.error_bar_estimators():
         for quantity in QUANTITIES:
-            hits, widths, diffs, rel_widths, rel_diffs, worst = 0, [], [], [], [], 0.0
+            estimator = CORLAB_3D[quantity] if name == "corlab" else name
+            hits, widths, diffs, rel_widths, rel_diffs, misses = 0, [], [], [], [], []
             for case in cases:
-                ratios = [1.0] + companions_of(name, runs, case["case"])
+                ratios = [1.0] + companions_of(runs, case["case"])
                 x = [value(runs, case["case"], q, quantity) for q in ratios]
                 ref = value(runs, case["case"], REFERENCE, quantity)
-                bar = corlab.error_bar("scatter", x, ratios)
+                bar = corlab.error_bar(estimator, x, ratios)
                 if not (math.isfinite(bar) and math.isfinite(ref)):
                     continue
                 d = abs(ref - x[0])
                 hits += d <= bar
+                if d > bar:
+                    misses.append(f"{case['case'][-2:]} ({d / bar if bar > 0 else math.inf:.2f})")
                 widths.append(bar)
                 diffs.append(d)
                 rel_widths.append(bar / abs(x[0]))
                 rel_diffs.append(d / abs(x[0]))
-                worst = max(worst, d / bar if bar > 0 else math.inf)
-            n = len(widths)
-            median = (lambda v: statistics.median(v) if v else math.nan)
             rel = median(rel_diffs)
             table[f"{name}:{quantity}"] = {
-                "cases": n, "covered": hits, "median_bar": median(widths),
+                "cases": len(widths), "covered": hits, "median_bar": median(widths),
                 "median_change": median(diffs),
-                "width_ratio": median(rel_widths) / rel if n and rel > 0 else math.nan,
-                "worst_miss": worst}
+                "width_ratio": median(rel_widths) / rel if rel > 0 else math.nan,
+                "misses": misses}
     return table
+
+
+def observed_orders(cases, runs):
+    """Per quantity (and elastic / elastic-plastic): the median observed order p from the
+    nearest companion and the reference, and the cases with a p (both changes nonzero)."""
+    orders = {}
+    for quantity in QUANTITIES:
+        for kind in ("elastic", "elastic-plastic"):
+            p = []
+            for case in cases:
+                if (case["sigma_y"] is None) != (kind == "elastic"):
+                    continue
+                x = [value(runs, case["case"], q, quantity) for q in (REFERENCE, 1.0, 2.0 ** 0.5)]
+                fine, coarse = abs(x[0] - x[1]), abs(x[2] - x[1])
+                if all(map(math.isfinite, x)) and fine > 0 and coarse > 0:
+                    p.append(-2.0 * math.log2(fine / coarse))
+            orders[f"{quantity}:{kind}"] = {
+                "cases": len(p), "median_order": median(p),
+                "quartiles": statistics.quantiles(p, n=4)[::2] if len(p) > 1 else []}
+    return orders
 
 
 def main():
@@ -194,13 +219,25 @@ def main():
     path = out / "runs.csv"
     runs = load_runs(path, cases) if a.score_only else run_all(cases, path)
     table = score(cases, runs)
-    (out / "coverage.json").write_text(json.dumps(table, indent=2) + "\n")
-    print("| companions | quantity | inside | median bar | median change | ratio | worst |")
+    # corlab's bars on each kind: the elastic runs converge faster than their companions scatter
+    by_kind = {kind: score([c for c in cases if (c["sigma_y"] is None) == (kind == "elastic")],
+                           runs, ["corlab"]) for kind in ("elastic", "elastic-plastic")}
+    orders = observed_orders(cases, runs)
+    (out / "coverage.json").write_text(
+        json.dumps({"bars": table, "bars_by_kind": by_kind, "orders": orders}, indent=2) + "\n")
+    print("| estimator | quantity | inside | median bar | median change | width ratio | misses |")
     print("|---|---|---|---|---|---|---|")
-    for key, t in table.items():
+    rows = list(table.items()) + [(f"{key} ({kind})", t) for kind, kt in by_kind.items()
+                                  for key, t in kt.items()]
+    for key, t in rows:
         name, quantity = key.split(":")
         print(f"| {name} | {quantity} | {t['covered']}/{t['cases']} | {t['median_bar']:.3g} | "
-              f"{t['median_change']:.3g} | {t['width_ratio']:.2f} | {t['worst_miss']:.2f} |")
+              f"{t['median_change']:.3g} | {t['width_ratio']:.2f} | {', '.join(t['misses'])} |")
+    print("\n| quantity | cases | observed order p (median) | quartiles |")
+    print("|---|---|---|---|")
+    for key, o in orders.items():
+        quartiles = ", ".join(f"{v:.2f}" for v in o["quartiles"])
+        print(f"| {key} | {o['cases']} | {o['median_order']:.2f} | {quartiles} |")
 
 
 if __name__ == "__main__":

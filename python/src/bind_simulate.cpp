@@ -148,6 +148,24 @@ py::object json_to_python(const nlohmann::json& j) {
   return py::none();
 }
 
+// corlab.simulate's docstring.
+constexpr const char* kSimulateDoc =
+    R"(Runs one explicit FE impact (elastic sphere on an elastic-plastic substrate).
+
+settings: {key: value} with the keys of `corlab simulate --set` (SI units), e.g.
+  {"impact.velocity": 2.0, "substrate.material": "steel_ma2023,sy=700e6"}.
+config_file: optional TOML case file applied before `settings`.
+mesh_ratio: the built-in mesh that many times coarser everywhere (0.5: twice as fine), as the
+  error estimate's companions are (corlab::fem::coarsened); 1 = as configured.
+error_estimate: also run the companions and set e_error, e_coarse (corlab simulate
+  --error-estimate).
+e_only: end one short window after the last contact, as the error estimate's companions do
+  (SimulationControl::e_only): e, e_t and omega final, the energies and history cut short.
+Returns a dict: e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], ...,
+"config" (the case), "history" (numpy arrays: time [s], contact_force [N], indentation [m], ...).
+The GIL is released during the run; Ctrl-C stops it (KeyboardInterrupt). Bad input raises
+ValueError.)";
+
 void bind_simulate(py::module_& m) {
   // pybind11 keeps its NumPy API in a function-local static that imports numpy on first use: two
   // threads calling simulate() first at once deadlocked (one inside the static's guard, waiting
@@ -185,7 +203,7 @@ void bind_simulate(py::module_& m) {
   m.def(
       "simulate",
       [](const py::dict& settings, std::optional<std::string> config_file, double mesh_ratio,
-         bool error_estimate) {
+         bool error_estimate, bool e_only) {
         fem::ImpactConfig config;
         if (config_file) config = fem::load_impact_config(*config_file);
         std::vector<std::string> items;
@@ -203,6 +221,7 @@ void bind_simulate(py::module_& m) {
         fem::SimulationControl control;
         control.cancel = &cancel;
         control.config_validated = true;  // above
+        control.e_only = e_only;
         const fem::ImpactResult result = run_interruptible(cancel, [&] {
           return error_estimate ? fem::simulate_with_error_estimate(config, control)
                                 : fem::simulate(config, control);
@@ -213,20 +232,8 @@ void bind_simulate(py::module_& m) {
         return result_dict(result, config);
       },
       py::arg("settings") = py::dict(), py::arg("config_file") = py::none(),
-      py::arg("mesh_ratio") = 1.0, py::arg("error_estimate") = false,
-      R"(Runs one explicit FE impact (elastic sphere on an elastic-plastic substrate).
-
-settings: {key: value} with the keys of `corlab simulate --set` (SI units), e.g.
-  {"impact.velocity": 2.0, "substrate.material": "steel_ma2023,sy=700e6"}.
-config_file: optional TOML case file applied before `settings`.
-mesh_ratio: the built-in mesh that many times coarser everywhere (0.5: twice as fine), as the
-  error estimate's companions are (corlab::fem::coarsened); 1 = as configured.
-error_estimate: also run the companions and set e_error, e_coarse (corlab simulate
-  --error-estimate).
-Returns a dict: e, e_energy, F_max [N], delta_max [m], t_contact [s], energy_* [J], ...,
-"config" (the case), "history" (numpy arrays: time [s], contact_force [N], indentation [m], ...).
-The GIL is released during the run; Ctrl-C stops it (KeyboardInterrupt). Bad input raises
-ValueError.)");
+      py::arg("mesh_ratio") = 1.0, py::arg("error_estimate") = false, py::arg("e_only") = false,
+      kSimulateDoc);
 }
 
 }  // namespace corlab::python

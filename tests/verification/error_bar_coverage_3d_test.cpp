@@ -2,11 +2,14 @@
 // error_bars.md "The 3-D model"): the CI-sized copy of scripts/error_bar_coverage_3d.py, two of
 // its seeded sample's cases (seed 20261129), one elastic and one elastic-plastic, each run with
 // its error estimate and again at h / sqrt 2. Each finer value must lie inside its bar (as
-// measured: 6 of 6), and the bars must not grow wider: their median over the six, relative to
-// each value, was 5.5 x the median relative |x(h / sqrt 2) - x(h)| with the faceted contact and
-// is 14 x with the smooth surface and kinematic stick (2.93e-2 against 2.11e-3: the bars stayed,
-// the runs converge faster, so the change shrank); the bound, 7 before, is 18. Issue 39's aim of
-// 3 x is open (docs/theory/error_bars.md, "The 3-D model").
+// measured: 6 of 6). Width: the median of the six bars, relative to each value, is 10.7 x the
+// median relative |x(h / sqrt 2) - x(h)| (2.26e-2 against 2.11e-3), not issue 39's 3 x, and the
+// test holds it there (11 x). Why not 3 x: the elastic case has converged (its e_t moves 4e-4 from
+// h to h / sqrt 2) while its companions at 2 to 2.8 elements across the contact scatter by 1e-2,
+// so three of the six changes are far below any bar the companions can give, and a median over
+// six values of two cases is set by them. On the 24-case sample the bars are 2.7 (e_n), 3.6 (e_t)
+// and 4.0 (omega) times the median change; a 95 % bar on a change that is random, even with its
+// deviation known, is 1.96 / 0.674 = 2.9 times the median change (error_bars.md).
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
@@ -63,7 +66,7 @@ TEST(ErrorBarCoverage3d, TwoCasesOfTheSeededSample) {
   }
   tally.print();
   EXPECT_EQ(tally.inside, 6);
-  EXPECT_LE(test::median(tally.bars), 18.0 * test::median(tally.changes));
+  EXPECT_LE(test::median(tally.bars), 11.0 * test::median(tally.changes));
 }
 
 }  // namespace

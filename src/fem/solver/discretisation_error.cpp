@@ -91,8 +91,10 @@ void run_estimate_run(const ImpactConfig& config,
 }
 
 /// The run's result (runs[0]) with e_coarse, the error bars and their reason from its
-/// companions (runs[1..]).
-ImpactResult combine_estimate(std::vector<EstimateRun>& runs, std::string reason) {
+/// companions (runs[1..]); e's bar by `e_estimator` (error_bar_estimator).
+ImpactResult combine_estimate(std::vector<EstimateRun>& runs,
+                              std::string reason,
+                              std::string_view e_estimator) {
   ImpactResult fine = std::move(runs.front().result);
   if (fine.status == RunStatus::kCancelled) return fine;
   // The grids the estimator reads: the run's own (ratio 1) and its coarser companions.
@@ -134,7 +136,7 @@ ImpactResult combine_estimate(std::vector<EstimateRun>& runs, std::string reason
                     fine.status_detail.empty() ? "" : " (" + fine.status_detail + ")");
     return fine;
   }
-  fine.e_error = error_bar(kDefaultErrorBar, e, ratios);
+  fine.e_error = error_bar(e_estimator, e, ratios);
   // The tangential results of an oblique impact: the same estimator on the same grids. A normal
   // impact has neither: its e_t is NaN (so is e_t_error) and its spin is round-off, left
   // without a bar.
@@ -146,6 +148,10 @@ ImpactResult combine_estimate(std::vector<EstimateRun>& runs, std::string reason
 }
 
 }  // namespace
+
+std::string_view error_bar_estimator(const ImpactConfig& config) {
+  return uses_3d_model(config) ? kErrorBar3dNormal : kDefaultErrorBar;
+}
 
 ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
                                           const SimulationControl& control) {
@@ -213,7 +219,7 @@ ImpactResult simulate_with_error_estimate(const ImpactConfig& config,
   for (const EstimateRun& run : runs) {
     if (run.error) std::rethrow_exception(run.error);
   }
-  return combine_estimate(runs, reason);
+  return combine_estimate(runs, reason, error_bar_estimator(config));
 }
 
 }  // namespace corlab::fem

@@ -11,7 +11,9 @@
 /// e = 0.5549, 0.5367, 0.5421, 0.5349, 0.5398 at h = 1, 0.5, 0.35, 0.25, 0.18 mm), which the
 /// two-grid GCI this replaced did not cover (37 of a seeded sample of 48 cases held e(h/2)
 /// within it, against 46 for this one). The companions add 55-76 % to a run
-/// (docs/dev/performance.md).
+/// (docs/dev/performance.md). The 3-D model's e (= e_n) takes the scatter estimator with a smaller
+/// factor (kErrorBar3dNormal), its e_t and omega the scatter estimator; each 3-D bar bounds the
+/// change to the mesh sqrt 2 finer, not the distance to the converged value.
 
 #include <array>
 #include <string_view>
@@ -39,8 +41,16 @@ inline constexpr std::array<double, 3> kErrorBarRatios3d{1.4142135623730951, 1.6
 /// bar +/- 0.048 where the axisymmetric solver's converged e is 0.0020 away;
 /// docs/theory/error_bars.md, "The 3-D model").
 inline constexpr double kMinCompanionContactElements = 2.0;
-/// The estimator simulate_with_error_estimate uses (error_bar_estimators()).
+/// The estimator simulate_with_error_estimate uses (error_bar_estimators()): every bar of the
+/// axisymmetric model, e_t's and omega's of the 3-D model.
 inline constexpr std::string_view kDefaultErrorBar = "scatter";
+/// The 3-D model's estimator of e (= e_n): the scatter estimator with a smaller factor, 1.5 (e_n
+/// converges systematically; docs/theory/error_bars.md, "The 3-D model").
+inline constexpr std::string_view kErrorBar3dNormal = "scatter_3d_e_n";
+
+/// The estimator of e's bar for `config`: kErrorBar3dNormal for the 3-D model, else
+/// kDefaultErrorBar.
+std::string_view error_bar_estimator(const ImpactConfig& config);
 
 /// The config meshed `ratio` times coarser (< 1: finer): mesh.h_min and mesh.h_max x ratio,
 /// mesh.contact_elements / ratio, mesh.growth^ratio (at most MeshConfig::kMaxGrowth); the

@@ -121,9 +121,11 @@ TEST(DiscretisationError, NoValidCompanionMeansNoErrorBar) {
 TEST(DiscretisationError, ThreeDCompanionsKeepTheContactResolved) {
   ImpactConfig c;
   EXPECT_EQ(error_bar_ratios(c).size(), kErrorBarRatios.size());  // axisymmetric: all three
+  EXPECT_EQ(error_bar_estimator(c), kDefaultErrorBar);
   c.solver.model = SolverModel::kThreeD;
   c.impact.angle = PlaneAngle::degrees(30.0);
-  c.mesh.h_min = c.mesh.h_max;  // h = a / contact_elements
+  EXPECT_EQ(error_bar_estimator(c), kErrorBar3dNormal);  // e_n's narrower bar
+  c.mesh.h_min = c.mesh.h_max;                           // h = a / contact_elements
   for (const auto& [across, kept] : {std::pair{8.0, 3U}, std::pair{4.0, 3U}, std::pair{3.4, 2U},
                                      std::pair{3.0, 1U}, std::pair{2.5, 0U}}) {
     c.mesh.contact_elements = across;

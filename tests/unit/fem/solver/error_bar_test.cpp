@@ -94,6 +94,12 @@ TEST(ErrorBar, ScatterCoarseIsTwoDeviationsOverItsFourCompanions) {
   EXPECT_NEAR(error_bar("scatter_coarse", e, h), 0.8 * error_bar("scatter", e, h), 1e-15);
 }
 
+TEST(ErrorBar, The3dNormalBarIsTheScatterBarAtOneAndAHalfDeviations) {
+  const std::vector<double> e{0.8, 0.81, 0.79, 0.8};
+  EXPECT_NEAR(error_bar("scatter_3d_e_n", e, kRatios), 1.5 / 2.5 * error_bar("scatter", e, kRatios),
+              1e-15);
+}
+
 TEST(ErrorBar, TwoGridIsTheGci) {
   const std::vector<double> e{0.5349, 0.5367, 0.5384, 0.5421};
   EXPECT_NEAR(error_bar("two_grid", e, kRatios), 0.5384 - 0.5349, 1e-15);
