@@ -207,12 +207,14 @@ static_assert(sizeof(NodeKinematics) == 6 * sizeof(double) &&
   for (int c = 0; c < 6; ++c) __builtin_memcpy(dst[c] + l0, &out[c], sizeof(V8));
 }
 
-// Gathers the block's nodal values into the lanes: a full block eight lanes at a time
-// (gather_eight: 1.12x in BM_HexThroughput, docs/dev/performance.md), a run's short last block
-// value by value. Both copy bits: the results do not depend on which.
+// Gathers the block's nodal values into the lanes: at x86-64-v4 a full block eight lanes at a
+// time (gather_eight: 1.03-1.12x in BM_HexThroughput; at x86-64-v3 its 512-bit permutes split into
+// 256-bit ones and it ran 0.67x, docs/dev/performance.md), else value by value. Both copy bits:
+// the results do not depend on which.
+template <SimdLevel kLevel>
 [[gnu::always_inline]] inline void gather(
     const HexModel& m, const HexState& s, std::size_t e0, int nb, HexLanes& ln) {
-  if (nb == kBlock) {
+  if (kLevel == SimdLevel::kX86_64_V4 && nb == kBlock) {
     for (int i = 0; i < 8; ++i) {
       const int* nodes = m.corner[static_cast<std::size_t>(i)].data() + e0;
 #pragma GCC unroll 2
@@ -304,6 +306,7 @@ constexpr std::size_t kPrefetchBlocks = 2;
                  sc.hourglass_3d};
 }
 
+template <SimdLevel kLevel>
 [[gnu::always_inline]] inline solver::ElementSums pass_body(const HexModel& m,
                                                             HexState& s,
                                                             double dt) {
@@ -315,7 +318,7 @@ constexpr std::size_t kPrefetchBlocks = 2;
     for (std::size_t e0 = run.begin; e0 < run.end; e0 += kBlock) {
       const int nb = static_cast<int>(std::min<std::size_t>(kBlock, run.end - e0));
       if (e0 + (kPrefetchBlocks + 1) * kBlock <= run.end) prefetch_block_state(m, s, e0);
-      gather(m, s, e0, nb, ln);
+      gather<kLevel>(m, s, e0, nb, ln);
       const HexBlockState b = block_state(s, e0);
 #pragma GCC ivdep
       for (int l = 0; l < nb; ++l) lane_update(p, b, ln, l, dt, out);
@@ -331,6 +334,6 @@ CORLAB_SIMD_VARIANTS(solver::ElementSums,
                      hex_element_pass,
                      (const HexModel& m, HexState& s, double dt),
                      (m, s, dt),
-                     pass_body(m, s, dt))
+                     pass_body<kSimdLevel>(m, s, dt))
 
 }  // namespace corlab::fem::hex_solver
