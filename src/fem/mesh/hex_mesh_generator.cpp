@@ -186,7 +186,7 @@ HexMeshOptions hex_mesh_options_for(const ImpactConfig& config) {
   o.h_contact = resolution.h_contact;
   o.zone_radius = config.mesh.refine_factor * a;
   o.zone_depth = std::max(config.mesh.refine_depth * a, 2.0 * o.h_contact);
-  o.growth = config.mesh.growth;
+  o.growth = resolution.growth;
   o.h_max = std::max(config.mesh.h_max, o.h_contact);
   o.block = config.substrate.shape == SubstrateShape::kFlat;
   const bool chosen = resolution.block_size > 0.0;

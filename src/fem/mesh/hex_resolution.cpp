@@ -98,6 +98,7 @@ HexResolution hex_resolution(const ImpactConfig& config) {
   HexResolution r;
   r.contact_radius = a;
   r.boundary = config.substrate.boundary;
+  r.growth = config.mesh.growth;
   if (!uses_default_3d_resolution(config)) {
     r.h_contact = config.mesh.h_min;
     if (config.mesh.contact_elements > 0.0)
@@ -107,13 +108,17 @@ HexResolution hex_resolution(const ImpactConfig& config) {
     return r;
   }
   r.model_choice = true;
+  if (config.mesh.growth == MeshConfig{}.growth) r.growth = kDefaultGrowth3d;
   const double size = largest_size(config);
   const double h_finest = size / kMaxSizeOverElement;     // the limit's smallest h [m]
   const double h_coarsest = 0.05 * config.sphere.radius;  // the sphere's R / 20 [m]
   const double h_default = std::min(a / kDefaultContactElements, h_coarsest);
-  const std::string basis =
-      "a/4: Kharaz's e_t within 0.002 of a/6 (9.5 deg), inside its error bar "
-      "(docs/theory/solver3d.md)";
+  const std::string basis = fmt::format(
+      "a/4: Kharaz's e_t within 0.002 of a/6 (9.5 deg), inside its error bar; growth {:g} ({}) "
+      "(docs/theory/solver3d.md)",
+      r.growth,
+      r.growth == kDefaultGrowth3d ? "e_n, e_t, omega within 0.13 of their bars of 1.15's"
+                                   : "mesh.growth");
   if (default_block_keys(config) && config.sphere.radius <= kMaxSizeOverElement * h_default) {
     r.h_contact = h_default;
     r.block_size = default_block(config, a, h_default);
@@ -165,6 +170,7 @@ ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config) {
   ImpactConfig c = config;
   c.mesh.h_min = r.h_contact;
   c.mesh.contact_elements = 0.0;
+  c.mesh.growth = r.growth;
   c.mesh.h_max = std::max(c.mesh.h_max, c.mesh.h_min);
   if (r.block_size > 0.0) c.substrate.radius = c.substrate.depth = r.block_size;
   c.substrate.boundary = r.boundary;

@@ -28,6 +28,13 @@ inline constexpr double kMaxSizeOverElement = 2000.0;
 /// 0.0025 below the half-space's, and e_t at 9.5 deg within 0.0011 of a fixed 20 mm block's.
 inline constexpr double kDefaultBlockWaveFraction = 0.14;
 
+/// The grading the 3-D model chooses with its resolution (mesh.growth at its default, which is
+/// the axisymmetric model's 1.15): the size ratio of neighbouring elements outside the fine zone
+/// [-]. Measured on Kharaz's pair at 4, 10 and 40 deg (docs/theory/solver3d.md, "Default
+/// resolution"): e_n, e_t and omega within 0.13 of their error bars of 1.15's, with 2.1-2.4
+/// times fewer elements (1.3: e_t at 10 deg 0.19 of its bar; 1.5: omega at 40 deg 0.38).
+inline constexpr double kDefaultGrowth3d = 1.25;
+
 /// How the element size at the contact was chosen.
 struct HexResolution {
   double h_contact = 0.0;       ///< element size at the contact [m]
@@ -40,6 +47,9 @@ struct HexResolution {
   double block_size = 0.0;
   /// The far boundary the run uses: the config's, or viscous_spring with the model's block.
   SubstrateBoundary boundary = SubstrateBoundary::kFixed;
+  /// The grading the run uses: mesh.growth, or kDefaultGrowth3d with the model's resolution
+  /// where mesh.growth is at its default [-].
+  double growth = 0.0;
 };
 
 /// Whether the 3-D model chooses the resolution: solver.model = 3d with mesh.h_min and
@@ -56,7 +66,7 @@ HexResolution hex_resolution(const ImpactConfig& config);
 double contact_travel(const ImpactConfig& config);
 
 /// `config` with the resolution written into the keys (mesh.h_min = h, mesh.contact_elements =
-/// 0; the model's block size and boundary), so that a coarsened companion
+/// 0, mesh.growth; the model's block size and boundary), so that a coarsened companion
 /// (discretisation_error.hpp) scales the chosen size; `config` itself where a key is set.
 ImpactConfig with_resolved_3d_mesh(const ImpactConfig& config);
 

@@ -12,6 +12,7 @@
 #include "corlab/dataset/impact_box.hpp"
 #include "corlab/fem/config/config_keys.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
+#include "corlab/fem/mesh/hex_mesh_generator.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -84,17 +85,23 @@ TEST(HexResolution, NoFeasibleDefaultNamesTheKeys) {
 namespace corlab::fem {
 namespace {
 
-// The default block (issue 39): with neither substrate size key nor substrate.boundary set, the
-// plain Kharaz command gets kDefaultBlockWaveFraction c_p t_c with the viscous-spring boundary
-// (11.0 mm at 40 deg: c_p 5797 m/s, t_c 13.5 us at v_n = 2.99 m/s); a size key or the boundary
-// key keeps the user's block.
-TEST(HexResolution, DefaultBlockFollowsTheWavesTravelWithTheViscousSpringBoundary) {
+// The plain Kharaz command at 40 deg (docs/theory/solver3d.md): no mesh key.
+ImpactConfig plain_kharaz_40() {
   ImpactConfig c;
   apply_settings(c,
                  {"sphere.material=E=380e9,nu=0.23,rho=4000", "sphere.radius=2.5e-3",
                   "substrate.material=E=70e9,nu=0.25,rho=2500", "impact.velocity=3.9",
                   "solver.model=3d", "impact.angle=40", "contact.friction=0.092"},
                  "test");
+  return c;
+}
+
+// The default block (issue 39): with neither substrate size key nor substrate.boundary set, the
+// plain Kharaz command gets kDefaultBlockWaveFraction c_p t_c with the viscous-spring boundary
+// (11.0 mm at 40 deg: c_p 5797 m/s, t_c 13.5 us at v_n = 2.99 m/s); a size key or the boundary
+// key keeps the user's block.
+TEST(HexResolution, DefaultBlockFollowsTheWavesTravelWithTheViscousSpringBoundary) {
+  const ImpactConfig c = plain_kharaz_40();
   const HexResolution r = hex_resolution(c);
   ImpactConfig normal = c;
   normal.impact.velocity = normal_velocity(c);
@@ -113,6 +120,23 @@ TEST(HexResolution, DefaultBlockFollowsTheWavesTravelWithTheViscousSpringBoundar
     const HexResolution kr = hex_resolution(k);
     EXPECT_EQ(kr.block_size, 0.0) << key;
     EXPECT_EQ(kr.boundary, k.substrate.boundary) << key;
+  }
+}
+
+// The model's grading (issue 39 item 4): kDefaultGrowth3d with the model's resolution where
+// mesh.growth is at its default, written into the keys for the error bar's companions and used
+// by the generator; a set mesh.growth, or a resolution key, keeps the user's grading.
+TEST(HexResolution, ModelResolutionGradesByItsOwnGrowthUnlessTheKeyIsSet) {
+  const ImpactConfig c = plain_kharaz_40();
+  ASSERT_NE(kDefaultGrowth3d, MeshConfig{}.growth);
+  EXPECT_EQ(hex_resolution(c).growth, kDefaultGrowth3d);
+  EXPECT_EQ(with_resolved_3d_mesh(c).mesh.growth, kDefaultGrowth3d);
+  EXPECT_EQ(hex_mesh_options_for(c).growth, kDefaultGrowth3d);
+  for (const std::string key : {"mesh.growth=1.2", "mesh.contact_elements=3"}) {
+    ImpactConfig k = c;
+    apply_settings(k, {key}, "test");
+    EXPECT_EQ(hex_resolution(k).growth, k.mesh.growth) << key;
+    EXPECT_EQ(hex_mesh_options_for(k).growth, k.mesh.growth) << key;
   }
 }
 
