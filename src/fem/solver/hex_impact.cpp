@@ -158,6 +158,7 @@ HexModel make_model(const ImpactConfig& config) {
   set_penalties(m, config.solver.penalty_scale, dt_critical);
   index_elements(m);
   set_time_scales(config, dt_critical, m);
+  m.slave_points = make_slave_points(m, kContactPointsPerSide);
   m.solver = &config.solver;
   m.kinematic_friction = config.contact.enforcement == FrictionEnforcement::kKinematic;
   return m;

@@ -60,9 +60,13 @@ double grid_parameter(const std::vector<double>& lines, double x) {
 }  // namespace
 
 SlaveContact surface_contact(const HexModel& m, const HexState& s, std::size_t n) {
-  const MasterSurface& surface = m.surface;
   const NodeKinematics& slave = s.node[n];
   const double p[3] = {slave.x, slave.y, slave.z};
+  return surface_contact_at(m, s, p);
+}
+
+SlaveContact surface_contact_at(const HexModel& m, const HexState& s, const double* p) {
+  const MasterSurface& surface = m.surface;
   auto control = [&](long a, long b, double* x) {
     const ControlNode c = control_node(surface, a, b);
     const NodeKinematics& q = s.node[static_cast<std::size_t>(c.node)];
@@ -74,9 +78,8 @@ SlaveContact surface_contact(const HexModel& m, const HexState& s, std::size_t n
   // the surface.
   const SplineDomain domain{0.0, static_cast<double>(surface.nu - 1), -0.5,
                             static_cast<double>(surface.nv - 1)};
-  const SplineProjection f =
-      project_on_spline_surface(p, grid_parameter(m.mesh.top_x, slave.x),
-                                grid_parameter(m.mesh.top_y, slave.y), domain, control);
+  const SplineProjection f = project_on_spline_surface(
+      p, grid_parameter(m.mesh.top_x, p[0]), grid_parameter(m.mesh.top_y, p[1]), domain, control);
   SlaveContact c;
   c.gap = f.gap;
   for (int d = 0; d < 3; ++d) c.normal[d] = f.normal[d];

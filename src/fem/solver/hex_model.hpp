@@ -6,12 +6,12 @@
 /// at angle theta from the normal with Coulomb friction mu, modelled as the half (y >= 0) cut by
 /// the plane of the velocity and the normal. One-point hexahedra with Flanagan-Belytschko
 /// hourglass control (hex8.hpp, hourglass.hpp), the J2 material point, the Hughes-Winget rotation
-/// and the bulk viscosity of the axisymmetric solver (the same kernels), penalty contact of node
-/// on plane or on the block top's smooth surface (penalty_contact.hpp's normal law,
-/// spline_surface.hpp) with Coulomb friction (coulomb_friction.hpp: the kinematic stick of
-/// hex_friction.cpp, or the tangential penalty's return map), central differences at the
-/// elements' stable step.
-/// x is the tangential direction of the impact (the sphere moves towards +x), z the normal (up).
+/// and the bulk viscosity of the axisymmetric solver (the same kernels), penalty contact of the
+/// sphere's surface points on the plane or on the block top's smooth surface (penalty_contact.hpp's
+/// normal law, spline_surface.hpp) with Coulomb friction at its surface nodes
+/// (coulomb_friction.hpp: the kinematic stick of hex_friction.cpp, or the tangential penalty's
+/// return map), central differences at the elements' stable step. x is the tangential direction of
+/// the impact (the sphere moves towards +x), z the normal (up).
 ///
 /// The 3-D solver's model (constant) and state (mutable), shared by its steps (hex_step.cpp),
 /// element pass (hex_element_loop.cpp) and contact (hex_contact.cpp); the time loop, its
@@ -56,6 +56,24 @@ struct HexElementRun {
   Body body = Body::kSphere;
 };
 
+// The contact points per side of each of the sphere's slave faces [-]: 3 x 3 at the midpoints
+// of equal sub-squares of the face's parameters. The sphere's and the block's elements are both
+// h wide at the contact, so contact taken at the sphere's nodes alone samples the block's grid
+// in step and feels it (a normal impact a quarter element off a node of the grid leaves
+// omega R / v = 5.1e-3 at h = 1.5 mm); three points a side sample it out of step (1.9e-5;
+// two: 6.4e-4; docs/theory/solver3d.md, "The contact points").
+inline constexpr int kContactPointsPerSide = 3;
+
+// A contact point of the sphere: a point of one of its slave faces (all four nodes slaves),
+// the bilinear interpolation of the face's nodes with the weights w [-], and its penalty
+// [N/m].
+struct SlavePoint {
+  std::array<int, 4> node{};   // the face's nodes
+  std::array<int, 4> slave{};  // their indices among the slaves
+  double w[4] = {};
+  double penalty = 0.0;
+};
+
 // The constant part of a run (half model: RunConstants::extensive = 2; its velocity is the
 // normal approach speed).
 struct HexModel : solver::RunConstants {
@@ -67,7 +85,8 @@ struct HexModel : solver::RunConstants {
   Vec mass, inv_mass;                      // lumped [kg], [1/kg]
   Vec free_x, free_y, free_z;              // 0 where the dof is held (symmetry plane, base) [-]
   solver::Dashpots<3> dashpots;            // the absorbing far boundary (else none; base free)
-  Vec penalty;                             // per slave [N/m]
+  Vec penalty;                             // per slave node [N/m]
+  std::vector<SlavePoint> slave_points;    // where the normal contact acts on the sphere
   std::vector<int> top_nodes;              // the block's top nodes, each once (none: rigid)
   MasterSurface surface;                   // what the slaves meet on the block (none: rigid)
   std::size_t sphere_nodes = 0;            // nodes [0, n) are the sphere's
@@ -126,6 +145,7 @@ struct HexState : solver::RunState {
   std::vector<SlaveFriction> friction_link;        // where each slave's kinematic friction acts
   std::vector<FrictionContact> touching;           // this step's contacts (scratch)
   std::vector<std::array<double, 3>> friction_dv;  // velocity change by friction (scratch) [m/s]
+  Vec slave_normal_force;  // each slave node's share of the points' normal force (scratch) [N]
 };
 
 // The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
@@ -139,14 +159,24 @@ std::vector<int> block_top_nodes(const HexMesh& mesh);
 /// surface (hex_master_surface.hpp), from the start grid's parameters under its (x, y).
 SlaveContact surface_contact(const HexModel& m, const HexState& s, std::size_t n);
 
+/// The same for a point p [m] of the sphere's surface.
+SlaveContact surface_contact_at(const HexModel& m, const HexState& s, const double* p);
+
+/// The contact points of the model's slave faces (the sphere's surface faces whose four nodes
+/// are all slaves), n x n to a face [-]. The slaves' penalties m.penalty are spread over them
+/// with their total kept; a node among nodes of one penalty gets it back from its points. Throws
+/// InputError when the sphere has no such face.
+std::vector<SlavePoint> make_slave_points(const HexModel& m, int n);
+
 /// The masters' velocity at the slave's contact point [m/s] (0 on the rigid flat).
 std::array<double, 3> master_velocity(const SlaveContact& c, const HexState& s);
 
 /// Adds the reaction to the slave's contact force [N], shared by the weights, to the masters.
 void push_masters(const SlaveContact& c, const double* force, HexState& s);
 
-/// Penalty contact (the rigid flat z = 0 or the block's top; penalty_contact.hpp's normal law)
-/// and Coulomb friction (coulomb_friction.hpp; kinematic: kinematic_friction_forces after the
+/// Penalty contact of the sphere's contact points (the rigid flat z = 0 or the block's top;
+/// penalty_contact.hpp's normal law) and Coulomb friction at the slave nodes, each with its share
+/// of the normal force (coulomb_friction.hpp; kinematic: kinematic_friction_forces after the
 /// normal forces): adds the contact forces to s.nodal_force, sets the
 /// contact force s.force (+ up), the stored energy s.energy.contact and the deepest penetration,
 /// adds the frictional work to s.energy.friction. Returns whether any slave penetrates.

@@ -1,12 +1,14 @@
 // The 3-D model's contact with the deformable flat (hex_contact.cpp, hex_master_surface.cpp): a
-// slave finds the surface under it after the flat's top has moved sideways by more than one face
-// or risen above z = 0, as a yielding flat's does at 30 m/s (about 1 mm sideways and 0.5 mm up
-// for the paper's pair); the reaction goes to the nodes around it, mirrored across y = 0.
+// contact point finds the surface under it after the flat's top has moved sideways by more than
+// one face or risen above z = 0, as a yielding flat's does at 30 m/s (about 1 mm sideways and
+// 0.5 mm up for the paper's pair); the reaction goes to the nodes around it, mirrored across
+// y = 0. The sphere's contact points share its nodes' penalties exactly.
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "corlab/fem/mesh/hex_mesh_generator.hpp"
 #include "fem/solver/hex_model.hpp"
@@ -16,7 +18,8 @@ namespace {
 
 constexpr double kH = 1e-3;  // the top's face size in the fine zone [m]
 
-// A half block with 1 mm faces around the origin, and one slave node of the sphere.
+// A half block with 1 mm faces around the origin, and one slave node of the sphere, its contact
+// point on it.
 HexModel block_and_slave() {
   HexMeshOptions o;
   o.block = true;
@@ -38,6 +41,9 @@ HexModel block_and_slave() {
   m.contact = solver::ContactKind::kBlockSurface;
   m.h_contact = kH;
   m.penalty = {1e9};
+  const int n = m.mesh.num_nodes() - 1;
+  m.slave_points = {SlavePoint{
+      .node = {n, n, n, n}, .slave = {0, 0, 0, 0}, .w = {1.0, 0.0, 0.0, 0.0}, .penalty = 1e9}};
   return m;
 }
 
@@ -104,6 +110,57 @@ TEST(HexContact, SlaveOnTheSymmetryPlanePushesStraightDown) {
     EXPECT_EQ(s.nodal_force[n].y, 0.0);
   }
   EXPECT_NEAR(reaction, -slave.z, 1e-9);
+}
+
+// The points of the half sphere's slave faces: n x n to a face, their weights a partition of
+// unity; the slaves' stiffness is spread over them with its total kept, and where it goes with
+// the nodes' share of the faces, as their masses do (the symmetry plane's nodes have half the
+// faces and half the mass of the others), a node gets its own back from its points
+// (sum_q w_a(q) k_q = k_a): the points' contact is as stiff as the nodes' where they touch.
+TEST(HexContact, ContactPointsShareTheSlavesPenalties) {
+  HexMeshOptions o;
+  o.h_contact = 1.5e-3;
+  o.zone_radius = 4e-3;
+  o.zone_depth = 3e-3;
+  o.h_max = 6e-3;
+  HexModel m;
+  m.mesh = generate_hex_sphere(o);
+  m.sphere_elements = m.mesh.hexes.size();
+  m.mass.assign(static_cast<std::size_t>(m.mesh.num_nodes()), 1.0);
+  const auto& slaves = m.mesh.sphere_surface_nodes;
+  constexpr double kPenalty = 1e9;  // [N/m]
+  std::size_t lowest = 0;           // the slave at the sphere's lowest point
+  for (std::size_t k = 0; k < slaves.size(); ++k) {
+    const bool on_plane = m.mesh.y[static_cast<std::size_t>(slaves[k])] == 0.0;
+    m.penalty.push_back(on_plane ? 0.5 * kPenalty : kPenalty);
+    if (m.mesh.z[static_cast<std::size_t>(slaves[k])] <
+        m.mesh.z[static_cast<std::size_t>(slaves[lowest])])
+      lowest = k;
+  }
+  double nodes_total = 0.0;
+  for (const double k : m.penalty) nodes_total += k;
+  for (const int n : {1, 3}) {
+    SCOPED_TRACE(n);
+    const std::vector<SlavePoint> points = make_slave_points(m, n);
+    ASSERT_EQ(points.size() % static_cast<std::size_t>(n * n), 0U);
+    std::vector<double> stiffness(slaves.size(), 0.0);
+    double total = 0.0;
+    for (const SlavePoint& q : points) {
+      EXPECT_NEAR(q.w[0] + q.w[1] + q.w[2] + q.w[3], 1.0, 1e-15);
+      total += q.penalty;
+      for (std::size_t a = 0; a < 4; ++a) {
+        const auto k = static_cast<std::size_t>(q.slave[a]);
+        EXPECT_EQ(slaves[k], q.node[a]);
+        stiffness[k] += q.w[a] * q.penalty;
+      }
+    }
+    EXPECT_NEAR(total, nodes_total, 1e-12 * total);
+    EXPECT_NEAR(stiffness[lowest], m.penalty[lowest], 1e-12 * kPenalty);
+    for (std::size_t k = 0; k < slaves.size(); ++k) {
+      EXPECT_GT(stiffness[k], 0.5 * m.penalty[k]);
+      EXPECT_LT(stiffness[k], 2.0 * m.penalty[k]);
+    }
+  }
 }
 
 }  // namespace
