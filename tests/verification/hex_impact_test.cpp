@@ -182,25 +182,36 @@ TEST(HexImpact, ElasticPlasticNormalImpactMatchesTheAxisymmetricSolver) {
   EXPECT_LT(three_d.energy_balance_error, 5e-3);
 }
 
-// The paper's pair (the elastic sphere on the steel flat that yields) at 5 and 30 m/s, the 3-D
-// model at h = 1 mm against the axisymmetric one at h = 0.25 mm: +1.4 % and +0.8 %. The finer
-// 3-D meshes that come within 1 % at 1, 5 and 30 m/s are too slow for CI; their table and the
-// command that reruns it (studies/oblique/normal_3d_vs_axisymmetric.toml) are in solver3d.md.
+// The paper's pair (the elastic sphere on the steel flat that yields), the 3-D model against the
+// axisymmetric one at h = 0.25 mm. 5 m/s at h = 0.5 mm: +0.89 % (+2.16 % at 1 mm, where the
+// contact points of 0.9.0 raise the coarse mesh's e by 0.4 %: the 3-D e converges from above,
+// and the two meshes extrapolate to -0.4 %); 30 m/s at h = 1 mm: within 2 %. The finer 3-D
+// meshes at 1, 5 and 30 m/s and the command that reruns them
+// (studies/oblique/normal_3d_vs_axisymmetric.toml) are in solver3d.md.
 TEST(HexImpact, ThePapersPairMatchesTheAxisymmetricSolver) {
-  for (const double v : {5.0, 30.0}) {
-    SCOPED_TRACE(v);
+  struct Case {
+    double velocity;  // [m/s]
+    double h_min;     // [m]
+    double bound;     // on |e_3d / e_axisymmetric - 1| [-]
+  };
+  for (const Case k : {Case{5.0, 0.5e-3, 0.01}, Case{30.0, 1e-3, 0.02}}) {
+    SCOPED_TRACE(k.velocity);
     ImpactConfig c;
-    c.impact.velocity = v;
+    c.impact.velocity = k.velocity;
     c.solver.model = SolverModel::kThreeD;
-    c.mesh.h_min = 1e-3;
+    c.mesh.h_min = k.h_min;
     c.mesh.contact_elements = 0.0;
     validate(c);
     const auto [three_d, axisymmetric] = three_d_and_axisymmetric(c);
-    EXPECT_NEAR(three_d.e / axisymmetric.e, 1.0, 0.02);
+    EXPECT_NEAR(three_d.e / axisymmetric.e, 1.0, k.bound);
     EXPECT_LT(three_d.energy_balance_error, 5e-3);
-    // The quality guards apply to 3-D runs: this coarse mesh leaves hourglass energy of about
-    // 1 % of E0 (0.32 % at h = 0.5 mm), above the 0.5 % guard.
-    EXPECT_EQ(three_d.suspect.rfind("hourglass energy", 0), 0u) << three_d.suspect;
+    // The quality guards apply to 3-D runs: h = 1 mm leaves hourglass energy of about 1 % of
+    // E0, above the 0.5 % guard; h = 0.5 mm about 0.3 %, under it.
+    if (k.h_min > 0.75e-3) {
+      EXPECT_EQ(three_d.suspect.rfind("hourglass energy", 0), 0u) << three_d.suspect;
+    } else {
+      EXPECT_EQ(three_d.suspect, "");
+    }
     EXPECT_EQ(axisymmetric.suspect, "");
   }
 }
