@@ -1,8 +1,10 @@
 """An oblique-impact sweep of corlab's 3-D model as a table (issue 27): the rows that rebounded,
 by speed and angle, with their error bars, as CSV (--out) and as Markdown on standard output. With
---kharaz (the Kharaz et al. 2001 sweep) the Markdown compares with the measured points (the mean of
-the two digitisations, interpolated) and, given --mbf, with the elastic theory of Maw, Barber &
-Fawcett (example_mbf_oblique_table).
+--kharaz (the Kharaz et al. 2001 sweep) the Markdown is the validation table (issue 39, item 6):
+at each FE angle both digitisations of the measured points (each interpolated between its own
+points, absent outside them), whether the FE lies within their spread plus 0.02 in e_t and plus
+10 % in omega, and, given --mbf, the elastic theory of Maw, Barber & Fawcett
+(example_mbf_oblique_table).
 
     build/bin/corlab sweep studies/oblique/kharaz2001.toml --out OUT --error-estimate
     /usr/bin/python3 scripts/oblique_fe_table.py OUT/results.csv --kharaz \\
@@ -22,7 +24,17 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "verification", "dem"))
-from dem_oblique_check import measured  # noqa: E402  (the DEM table's reading of the points)
+from dem_oblique_check import KHARAZ, interpolate, measured  # noqa: E402  (the DEM table's reading)
+
+#: The digitisations of data/kharaz2001/measured_points.csv (column `source`), in table order.
+SOURCES = ("kratos_chung_ooi_2011", "mfix_di_renzo_di_maio_2004")
+#: Issue 39's validation bounds: the FE within the digitisations' spread plus E_T_MARGIN in e_t
+#: [-] and plus OMEGA_MARGIN of the measured value in omega [relative].
+E_T_MARGIN = 0.02
+OMEGA_MARGIN = 0.10
+#: A digitisation's end point stands for an angle this close beyond it [deg] (the 2 deg row: the
+#: readings start at 2.03 and 2.24 deg).
+END_TOLERANCE_DEG = 0.25
 
 #: The table's columns: the name there and the results.csv column it comes from.
 COLUMNS = (("impact_velocity", "velocity"), ("impact_angle_deg", "impact.angle"),
@@ -34,9 +46,12 @@ COLUMNS = (("impact_velocity", "velocity"), ("impact_angle_deg", "impact.angle")
 
 
 def fe_rows(results):
+    """The ok rows of a sweep's results.csv, or of a table this script wrote (its columns)."""
     with open(results) as f:
         rows = [r for r in csv.DictReader(f) if r["status"] == "ok"]
-    return sorted(({name: r[source] for name, source in COLUMNS} for r in rows),
+    table = bool(rows) and "impact_angle_deg" in rows[0]
+    return sorted(({name: r[name if table else source] for name, source in COLUMNS}
+                   for r in rows),
                   key=lambda r: (float(r["impact_velocity"]), float(r["impact_angle_deg"])))
 
 
@@ -73,19 +88,63 @@ def plain_markdown(rows):
     return "\n".join(lines)
 
 
+def reading(points, angle):
+    """One digitisation at `angle`: interpolated between its points, its first or last point
+    within END_TOLERANCE_DEG beyond them, else None."""
+    value = interpolate(points, angle)
+    if value is None and points:
+        x, y = min(points, key=lambda p: abs(p[0] - angle))
+        value = y if abs(x - angle) <= END_TOLERANCE_DEG else None
+    return value
+
+
+def digitisations(angle):
+    """{quantity: [the reading of each source in SOURCES that has one]} for e_t and omega."""
+    series = {}
+    with open(os.path.join(KHARAZ, "measured_points.csv")) as f:
+        for row in csv.DictReader(f):
+            series.setdefault((row["source"], row["quantity"]), []).append(
+                (float(row["impact_angle_deg"]), float(row["value"])))
+    out = {}
+    for quantity in ("e_t", "omega"):
+        values = [reading(series.get((s, quantity), []), angle) for s in SOURCES]
+        out[quantity] = [v for v in values if v is not None]
+    return out
+
+
+def within(value, readings, margin, relative):
+    """'yes'/'no' for `value` inside [min - m, max + m] of the readings (m = margin, or margin x
+    the reading where relative); '–' without a reading."""
+    if not readings or math.isnan(value):
+        return "–"
+    low, high = min(readings), max(readings)
+    if relative:
+        low, high = low * (1.0 - margin), high * (1.0 + margin)
+    else:
+        low, high = low - margin, high + margin
+    return "yes" if low <= value <= high else "no (%+.3g)" % (
+        value - (low if value < low else high))
+
+
 def markdown(rows, mbf):
-    lines = ["| θ [°] | e_t FE | e_t MBF | e_t meas. | ω FE [rad/s] | ω MBF | ω meas. "
-             "| angle FE [°] | angle meas. | e_n FE |", "|" + " --- |" * 10]
+    lines = ["| θ [°] | e_t FE | e_t MBF | e_t meas. (Kratos / MFIX) | within | ω FE [rad/s] "
+             "| ω MBF | ω meas. | within | angle FE [°] | angle meas. | e_n FE |",
+             "|" + " --- |" * 12]
     for r in rows:
         angle = float(r["impact_angle_deg"])
         m = measured(angle)
+        d = digitisations(angle)
         t = mbf.get(angle, {})
         f = {k: number(r[k]) for k in ("e_t", "e_t_error", "omega", "omega_error",
                                        "rebound_angle_com", "e_n", "e_n_error")}
-        lines.append("| %g | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %g | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             angle, cell(f["e_t"], f["e_t_error"]), cell(float(t["e_t"]) if t else None),
-            cell(m["e_t"]), cell(f["omega"], f["omega_error"], "%.1f"),
-            cell(float(t["omega"]) if t else None, spec="%.0f"), cell(m["omega"], spec="%.0f"),
+            " / ".join(cell(v) for v in d["e_t"]) or "–",
+            within(f["e_t"], d["e_t"], E_T_MARGIN, False),
+            cell(f["omega"], f["omega_error"], "%.1f"),
+            cell(float(t["omega"]) if t else None, spec="%.0f"),
+            " / ".join(cell(v, spec="%.0f") for v in d["omega"]) or "–",
+            within(f["omega"], d["omega"], OMEGA_MARGIN, True),
             cell(f["rebound_angle_com"], spec="%.2f"), cell(m["rebound_angle_com"], spec="%.2f"),
             cell(f["e_n"], f["e_n_error"])))
     return "\n".join(lines)
@@ -93,7 +152,7 @@ def markdown(rows, mbf):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("results", help="results.csv of the kharaz2001 sweep")
+    parser.add_argument("results", help="results.csv of the sweep, or a table written by --out")
     parser.add_argument("--kharaz", action="store_true",
                         help="compare with Kharaz et al.'s measured points (data/kharaz2001)")
     parser.add_argument("--mbf", help="with --kharaz: example_mbf_oblique_table (the theory)")
