@@ -3,12 +3,13 @@
 (R 2.5 mm, E 380 GPa, nu 0.23, rho 4000 kg/m^3) on a glass wall (E 70 GPa, nu 0.25) at 3.9 m/s
 and mu = 0.092, exported by `corlab dem --friction 0.092` (the normal part elastic, e = 1, as
 both bodies are elastic; corlab's FE gives 0.981-0.993, the energy elastic waves carry off) and
-run in LAMMPS, LIGGGHTS and YADE (Debian's, never mocked) at theta = 0..80 deg. Per code and angle: e_n, e_t = v_t'/v_t, omega
-[rad/s] (positive: the rolling sense of the incident motion), the rebound angles and the kinetic
-energy ratio; against the rigid-body sliding limit e_t = 1 - mu (1 + e_n)/tan(theta),
-omega R = 5/2 mu (1 + e_n) v_n, the measured points (data/kharaz2001) and corlab's FE (a table
-given by --fe-table, else data/kharaz2001/fe_oblique.csv where it exists, else the 40 deg point
-of docs/theory/solver3d.md).
+run in LAMMPS, LIGGGHTS and YADE (Debian's, never mocked) at theta = 0..80 deg. Per code and
+angle: e_n, e_t = v_t'/v_t, omega [rad/s] (positive: the rolling sense of the incident motion),
+the rebound angles and the kinetic energy ratio; against the rigid-body sliding limit
+e_t = 1 - mu (1 + e_n)/tan(theta), omega R = 5/2 mu (1 + e_n) v_n, the measured points
+(data/kharaz2001) and corlab's FE (a table given by --fe-table, else
+data/kharaz2001/fe_oblique.csv where it exists, else the 40 deg point of
+docs/theory/solver3d.md).
 
 Asserts (each failure is one line of the report):
 * the export: mu and k_t/a = 8 G* in dem_export.json equal to those computed here from E, nu;
