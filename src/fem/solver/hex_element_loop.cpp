@@ -207,6 +207,8 @@ static_assert(sizeof(NodeKinematics) == 6 * sizeof(double) &&
   for (int c = 0; c < 6; ++c) __builtin_memcpy(dst[c] + l0, &out[c], sizeof(V8));
 }
 
+static_assert(kBlock % 8 == 0, "gather_eight fills a full block eight lanes at a time");
+
 // Gathers the block's nodal values into the lanes: at x86-64-v4 a full block eight lanes at a
 // time (gather_eight: 1.03-1.12x in BM_HexThroughput; at x86-64-v3 its 512-bit permutes split into
 // 256-bit ones and it ran 0.67x, docs/dev/performance.md), else value by value. Both copy bits:
