@@ -10,8 +10,9 @@ h = a/4 (the 3-D model's default a/h), at most R/20. Each case runs at h (in ful
 estimate's run), at the companions sqrt 2, 2^(3/4) and 2 h and at h / sqrt 2 (for e only, as the
 estimate's companions: SimulationControl::e_only; h/2 would cost about 16 runs at h), one run at
 a time, cheapest first; every run is appended to OUT/runs.csv as it finishes, and a second call
-resumes (`--cases 12`: the sample's first 12, the same draws). Then it scores corlab's bars (e_n
-by scatter_3d_e_n, e_t and omega by scatter) and every estimator of
+resumes (`--cases 12`: the sample's first 12, the same draws; each row names the corlab build
+that made it). Then it scores corlab's bars (e_n by scatter_3d_e_n, e_t and omega by scatter_3d)
+and every estimator of
 corlab.error_bar_estimators() on the companions corlab keeps (>= 2 elements across the predicted
 contact radius): per quantity, the cases whose h / sqrt 2 value lies inside the bar, and the
 median bar over the median |x(h / sqrt 2) - x(h)| (both relative to |x(h)|); and the observed
@@ -44,7 +45,7 @@ REFERENCE = 2.0 ** -0.5
 COMPANIONS = [2.0 ** 0.5, 2.0 ** 0.75, 2.0]
 MIN_CONTACT_ELEMENTS = 2.0
 # The estimator corlab's 3-D estimate uses per quantity (error_bar_estimator, kDefaultErrorBar).
-CORLAB_3D = {"e_n": "scatter_3d_e_n", "e_t": "scatter", "omega": "scatter"}
+CORLAB_3D = {"e_n": "scatter_3d_e_n", "e_t": "scatter_3d", "omega": "scatter_3d"}
 # Every mesh ratio a case runs at, cheapest first, the reference last (the dearest).
 RATIOS = COMPANIONS[::-1] + [1.0, REFERENCE]
 # The case's own mesh: a/4 (the 3-D model's default a/h), at most R/20 (the sphere mesh's bound),
@@ -60,7 +61,7 @@ BASE = {
     "mesh.growth": 1.6,
 }
 FIELDS = ["case", "ratio", "angle", "velocity", "friction", "sigma_y", "a_over_h", "e_n", "e_t",
-          "omega", "elements", "status", "wall_s"]
+          "omega", "elements", "status", "wall_s", "corlab_build"]
 
 
 def sample_cases(count, seed):
@@ -107,7 +108,8 @@ def run_one(case, q):
         return row
     a_over_h = float(re.search(r"a/h = ([0-9.e+-]+)", r["mesh_reason"]).group(1))
     row.update(a_over_h=a_over_h, e_n=r["e_n"], e_t=r["e_t"], omega=r["omega"],
-               elements=r["elements"], status=r["status"], wall_s=r["wall_s"])
+               elements=r["elements"], status=r["status"], wall_s=r["wall_s"],
+               corlab_build=r["corlab_build"])
     print(f"{case['case']} ratio {q:.3f}: a/h {a_over_h:.3g} e_n {r['e_n']:.5f} "
           f"e_t {r['e_t']:.5f} omega {r['omega']:.2f} ({r['status']}, "
           f"{r['elements']} elements, {r['wall_s']:.1f} s)", file=sys.stderr, flush=True)
@@ -117,8 +119,10 @@ def run_one(case, q):
 def run_all(cases, path):
     done = load_runs(path, cases)
     new = not path.exists()
+    # A runs.csv from before a column was added keeps its own header (the new column left out).
+    fields = FIELDS if new else next(csv.reader(open(path)))
     with open(path, "a", newline="") as f:
-        out = csv.DictWriter(f, fieldnames=FIELDS)
+        out = csv.DictWriter(f, fieldnames=fields, extrasaction="ignore")
         if new:
             out.writeheader()
         # Case by case (a partial sample has whole cases), each cheapest first.

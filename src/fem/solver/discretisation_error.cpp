@@ -137,11 +137,11 @@ ImpactResult combine_estimate(std::vector<EstimateRun>& runs,
     return fine;
   }
   fine.e_error = error_bar(e_estimator, e, ratios);
-  // The tangential results of an oblique impact: the same estimator on the same grids. A normal
-  // impact has neither: its e_t is NaN (so is e_t_error) and its spin is round-off, left
+  // The tangential results of an oblique (3-D) impact: their estimator on the same grids. A
+  // normal impact has neither: its e_t is NaN (so is e_t_error) and its spin is round-off, left
   // without a bar.
-  fine.e_t_error = error_bar(kDefaultErrorBar, e_t, ratios);
-  if (std::isfinite(fine.e_t)) fine.omega_error = error_bar(kDefaultErrorBar, omega, ratios);
+  fine.e_t_error = error_bar(kErrorBar3dTangential, e_t, ratios);
+  if (std::isfinite(fine.e_t)) fine.omega_error = error_bar(kErrorBar3dTangential, omega, ratios);
   if (!std::isfinite(fine.e_error)) fine.e_error_reason = reason;
   fine.suspect = suspect_reason(fine);  // e above 1 is now judged against its error bar
   return fine;

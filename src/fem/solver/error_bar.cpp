@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <numbers>
 #include <string>
 
 #include "corlab/core/error.hpp"
@@ -32,6 +34,11 @@ constexpr double kCoarseScatterCoverageFactor = 2.0;
 // was 1.36 and 1.20 (of sigma sqrt(1 + 1/4)) on the two halves of the seeded 3-D sample, both
 // covered by 1.5 (docs/theory/error_bars.md, "The 3-D model").
 constexpr double kNormal3dCoverageFactor = 1.5;
+// scatter_3d: the 3-D bar's reference, the mesh 1/sqrt 2 times the run's [-]; the coverage its
+// factor is drawn for [-]; the draws of the scatter model that set the factor.
+constexpr double k3dReferenceRatio = 0.7071067811865476;
+constexpr double kModelCoverage = 0.95;
+constexpr std::size_t kModelDraws = std::size_t{1} << 18;
 // The free order's search interval and grid step.
 constexpr double kOrderMax = 8.0;
 constexpr double kOrderStep = 0.05;
@@ -138,16 +145,50 @@ double least_squares_bar(std::span<const double> e, std::span<const double> h) {
   return kPoorFitSafety * f.sigma / range * (error + f.sigma + misfit);
 }
 
-double scatter_bar(std::span<const double> e, std::span<const double> h, double factor) {
+/// The scatter model's sigma from the grids [-]: e(h_i) = e* + a scatter of standard deviation
+/// sigma h_i, so that e_i - e_1 has the variance sigma^2 (1 + h_i^2). NaN with no coarser grid.
+double scatter_sigma(std::span<const double> e, std::span<const double> h) {
   if (e.size() < 2) return kNaN;
-  // e(h_i) = e* + a scatter of standard deviation sigma h_i: e_i - e_1 has the variance
-  // sigma^2 (1 + h_i^2), and e(h/2) - e_1 the variance sigma^2 (1 + 1/4).
   double sum = 0.0;
   for (std::size_t i = 1; i < e.size(); ++i) {
     sum += (e[i] - e[0]) * (e[i] - e[0]) / (1.0 + h[i] * h[i]);
   }
-  const double sigma = std::sqrt(sum / static_cast<double>(e.size() - 1));
-  return factor * sigma * std::sqrt(1.25);
+  return std::sqrt(sum / static_cast<double>(e.size() - 1));
+}
+
+/// The axisymmetric bar and its variants: `factor` deviations of e(h/2) - e_1 (variance
+/// sigma^2 (1 + 1/4)).
+double scatter_bar(std::span<const double> e, std::span<const double> h, double factor) {
+  return factor * scatter_sigma(e, h) * std::sqrt(1.25);
+}
+
+/// SplitMix64 (Steele, Lea & Flood 2014): the same stream on every platform, unlike the
+/// standard library's distributions.
+struct SplitMix64 {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  /// Uniform in (0, 1].
+  double uniform() { return (static_cast<double>(next() >> 11) + 1.0) * 0x1.0p-53; }
+};
+
+/// scatter_3d: the scatter model's own 95 % factor for these grids, times sigma and the
+/// deviation of e(h / sqrt 2) - e_1 (variance sigma^2 (1 + 1/2)). The factor of the last grid
+/// set is kept (e_t and omega of one estimate share theirs).
+double scatter_3d_bar(std::span<const double> e, std::span<const double> h) {
+  const double sigma = scatter_sigma(e, h);
+  if (!std::isfinite(sigma)) return kNaN;
+  thread_local std::vector<double> last_h;
+  thread_local double last_factor = kNaN;
+  if (!std::equal(h.begin(), h.end(), last_h.begin(), last_h.end())) {
+    last_factor = scatter_model_factor(h, k3dReferenceRatio, kModelCoverage);
+    last_h.assign(h.begin(), h.end());
+  }
+  return last_factor * sigma * std::sqrt(1.0 + k3dReferenceRatio * k3dReferenceRatio);
 }
 
 double two_grid_bar(std::span<const double> e, std::span<const double> h) {
@@ -213,9 +254,39 @@ ConvergenceFit fit_free_order(std::span<const double> e,
   return lf.fit;
 }
 
+double scatter_model_factor(std::span<const double> h, double reference, double coverage) {
+  if (h.size() < 2) return kNaN;
+  // Draws of e_i = sigma h_i z_i (sigma = 1, z_i independent standard normal; Box-Muller) and of
+  // the reference's e_r = reference z_r: the ratio |e_r - e_1| / (sigma_hat sqrt(1 + reference^2))
+  // per draw, and its `coverage` quantile.
+  SplitMix64 rng{0x636f726c6162ULL};  // a fixed seed: the factor is a function of its arguments
+  std::vector<double> z;
+  const auto normal = [&]() {
+    if (z.empty()) {
+      const double r = std::sqrt(-2.0 * std::log(rng.uniform()));
+      const double angle = 2.0 * std::numbers::pi * rng.uniform();
+      z = {r * std::cos(angle), r * std::sin(angle)};
+    }
+    const double out = z.back();
+    z.pop_back();
+    return out;
+  };
+  std::vector<double> e(h.size());
+  std::vector<double> ratio(kModelDraws);
+  const double scale = std::sqrt(1.0 + reference * reference);
+  for (double& r : ratio) {
+    for (std::size_t i = 0; i < h.size(); ++i) e[i] = h[i] * normal();
+    const double e_ref = reference * normal();
+    r = std::abs(e_ref - e[0]) / (scatter_sigma(e, h) * scale);
+  }
+  const auto k = static_cast<std::ptrdiff_t>(std::ceil(coverage * kModelDraws)) - 1;
+  std::nth_element(ratio.begin(), ratio.begin() + k, ratio.end());
+  return ratio[static_cast<std::size_t>(k)];
+}
+
 const std::vector<std::string_view>& error_bar_estimators() {
-  static const std::vector<std::string_view> kNames{"scatter", "scatter_coarse", "two_grid",
-                                                    "least_squares", "scatter_3d_e_n"};
+  static const std::vector<std::string_view> kNames{
+      "scatter", "scatter_coarse", "two_grid", "least_squares", "scatter_3d_e_n", "scatter_3d"};
   return kNames;
 }
 
@@ -235,10 +306,11 @@ double error_bar(std::string_view name, std::span<const double> e, std::span<con
   if (name == "scatter") return scatter_bar(e, h, kScatterCoverageFactor);
   if (name == "scatter_coarse") return scatter_bar(e, h, kCoarseScatterCoverageFactor);
   if (name == "scatter_3d_e_n") return scatter_bar(e, h, kNormal3dCoverageFactor);
+  if (name == "scatter_3d") return scatter_3d_bar(e, h);
   if (name == "two_grid") return two_grid_bar(e, h);
   if (name == "least_squares") return least_squares_bar(e, h);
   throw_invalid("error bar estimator", std::string(name),
-                "scatter, scatter_coarse, two_grid, least_squares or scatter_3d_e_n");
+                "scatter, scatter_coarse, two_grid, least_squares, scatter_3d_e_n or scatter_3d");
 }
 
 }  // namespace corlab::fem

@@ -17,7 +17,11 @@
 ///     median change on the CI corners, where issue 28's criterion allows 3 x).
 ///   - scatter_3d_e_n: the scatter estimator with the factor 1.5: the 3-D model's e_n, which
 ///     converges systematically, so that the companions' spread over-states its next change
-///     (its e_t and omega keep "scatter"; docs/theory/error_bars.md, "The 3-D model").
+///     (docs/theory/error_bars.md, "The 3-D model").
+///   - scatter_3d: the 3-D model's e_t and omega. The same sigma; U = F sigma sqrt(1 + 1/2), the
+///     spread of e(h / sqrt 2) - e_1 (the 3-D bar's reference), with F the scatter model's own
+///     95 % point for the grids given (scatter_model_factor: 2.78 for sqrt 2, 2^(3/4) and 2 h),
+///     not a factor calibrated on a sample.
 ///   - two_grid: the two-grid GCI with p = 2 and Fs = 3 (Roache 1998): U = |e_1 - e_2h|.
 ///   - least_squares: after Eca & Hoekstra 2014 (J. Comput. Phys. 262:104-130), built for
 ///     scattered convergence: least-squares fits e_i = e_0 + alpha h_i^p (observed p), else with
@@ -53,8 +57,15 @@ ConvergenceFit fit_fixed_orders(std::span<const double> e,
                                 std::span<const double> weights,
                                 std::span<const double> orders);
 
+/// The factor F [-] for which |e(reference h) - e_1| <= F sigma_hat sqrt(1 + reference^2) holds
+/// with probability `coverage` [-] when e(h_i) = e* + sigma h_i z_i exactly (z_i independent
+/// standard normal; sigma_hat the scatter estimator's, from the grids h, h[0] = 1): the
+/// `coverage` quantile of 2^18 draws from a fixed seed, so a function of its arguments (+/- 0.3 %
+/// of the exact quantile). NaN with fewer than two grids.
+double scatter_model_factor(std::span<const double> h, double reference, double coverage);
+
 /// The estimators by name, the default first: "scatter", "scatter_coarse", "two_grid",
-/// "least_squares", "scatter_3d_e_n".
+/// "least_squares", "scatter_3d_e_n", "scatter_3d".
 const std::vector<std::string_view>& error_bar_estimators();
 
 /// The error bar U of e_1 [-]: e_1 +/- U. `e` and `h` as in the file comment (h[0] = 1); `name`

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "corlab/core/error.hpp"
@@ -98,6 +99,41 @@ TEST(ErrorBar, The3dNormalBarIsTheScatterBarAtOneAndAHalfDeviations) {
   const std::vector<double> e{0.8, 0.81, 0.79, 0.8};
   EXPECT_NEAR(error_bar("scatter_3d_e_n", e, kRatios), 1.5 / 2.5 * error_bar("scatter", e, kRatios),
               1e-15);
+}
+
+TEST(ErrorBar, The3dTangentialBarHoldsNinetyFivePercentOfItsOwnModel) {
+  // e(h_i) = e* + sigma h_i z_i at the 3-D companions and at h / sqrt 2, drawn with another
+  // generator than the factor's: the bar holds the reference value in 95 % of the draws.
+  const std::array<double, 4> h{1.0, std::sqrt(2.0), std::pow(2.0, 0.75), 2.0};
+  std::mt19937_64 rng(20261130);
+  std::normal_distribution<double> z;
+  const int draws = 20000;
+  int inside = 0;
+  for (int k = 0; k < draws; ++k) {
+    std::array<double, 4> e{};
+    for (std::size_t i = 0; i < h.size(); ++i) e[i] = 0.7 + 0.01 * h[i] * z(rng);
+    const double reference = 0.7 + 0.01 * z(rng) / std::sqrt(2.0);
+    inside += std::abs(reference - e[0]) <= error_bar("scatter_3d", e, h) ? 1 : 0;
+  }
+  // 95 % +/- 4 binomial deviations (0.15 % each) and the factor's own +/- 0.3 %.
+  EXPECT_NEAR(inside / static_cast<double>(draws), 0.95, 0.0075);
+}
+
+TEST(ErrorBar, The3dTangentialBarIsTheModelFactorOnTheFinerValuesSpread) {
+  const std::array<double, 4> h{1.0, std::sqrt(2.0), std::pow(2.0, 0.75), 2.0};
+  const std::array<double, 4> e{0.8, 0.81, 0.79, 0.8};
+  const double sigma = std::sqrt((1e-4 / 3.0 + 1e-4 / (1.0 + h[2] * h[2])) / 3.0);
+  const double f = scatter_model_factor(h, 1.0 / std::sqrt(2.0), 0.95);
+  EXPECT_NEAR(error_bar("scatter_3d", e, h), f * sigma * std::sqrt(1.5), 1e-15);
+  // Fewer companions, sigma from fewer values: a wider factor (Student-like); none, no bar.
+  const std::array<double, 3> two{1.0, std::sqrt(2.0), std::pow(2.0, 0.75)};
+  const std::array<double, 2> one{1.0, std::sqrt(2.0)};
+  const double f2 = scatter_model_factor(two, 1.0 / std::sqrt(2.0), 0.95);
+  EXPECT_GT(f2, f);
+  EXPECT_GT(scatter_model_factor(one, 1.0 / std::sqrt(2.0), 0.95), f2);
+  EXPECT_TRUE(std::isnan(scatter_model_factor(std::span(h).first(1), 0.5, 0.95)));
+  // A function of its arguments: the same factor every time.
+  EXPECT_EQ(scatter_model_factor(h, 1.0 / std::sqrt(2.0), 0.95), f);
 }
 
 TEST(ErrorBar, TwoGridIsTheGci) {
