@@ -11,7 +11,7 @@ estimate's run), at the companions sqrt 2, 2^(3/4) and 2 h and at h / sqrt 2 (fo
 estimate's companions: SimulationControl::e_only; h/2 would cost about 16 runs at h), one run at
 a time, cheapest first; every run is appended to OUT/runs.csv as it finishes, and a second call
 resumes (`--cases 12`: the sample's first 12, the same draws; each row names the corlab build
-that made it). Then it scores corlab's bars (e_n by scatter_3d_e_n, e_t and omega by scatter_3d)
+that made it). Then it scores corlab's bars (e_n by scatter_3d_e_n, e_t and omega by scatter)
 and every estimator of
 corlab.error_bar_estimators() on the companions corlab keeps (>= 2 elements across the predicted
 contact radius): per quantity, the cases whose h / sqrt 2 value lies inside the bar, and the
@@ -45,7 +45,7 @@ REFERENCE = 2.0 ** -0.5
 COMPANIONS = [2.0 ** 0.5, 2.0 ** 0.75, 2.0]
 MIN_CONTACT_ELEMENTS = 2.0
 # The estimator corlab's 3-D estimate uses per quantity (error_bar_estimator, kDefaultErrorBar).
-CORLAB_3D = {"e_n": "scatter_3d_e_n", "e_t": "scatter_3d", "omega": "scatter_3d"}
+CORLAB_3D = {"e_n": "scatter_3d_e_n", "e_t": "scatter", "omega": "scatter"}
 # Every mesh ratio a case runs at, cheapest first, the reference last (the dearest).
 RATIOS = COMPANIONS[::-1] + [1.0, REFERENCE]
 # The case's own mesh: a/4 (the 3-D model's default a/h), at most R/20 (the sphere mesh's bound),
@@ -182,12 +182,20 @@ def score(cases, runs, names=None):
                 rel_widths.append(bar / abs(x[0]))
                 rel_diffs.append(d / abs(x[0]))
             rel = median(rel_diffs)
+            width = median(rel_widths) / rel if rel > 0 else math.nan
             table[f"{name}:{quantity}"] = {
                 "cases": len(widths), "covered": hits, "median_bar": median(widths),
-                "median_change": median(diffs),
-                "width_ratio": median(rel_widths) / rel if rel > 0 else math.nan,
-                "misses": misses}
+                "median_change": median(diffs), "width_ratio": width,
+                "width_at_95": width * scale_to_95(widths, diffs), "misses": misses}
     return table
+
+
+def scale_to_95(bars, changes):
+    """The factor that scales every bar just enough to hold 95 % of the changes (the
+    ceil(0.95 n)-th smallest change / bar): the width the estimator's shape of bar would need to
+    meet the coverage (width_at_95 = width_ratio times it)."""
+    ratios = sorted(d / b if b > 0 else math.inf for b, d in zip(bars, changes))
+    return ratios[math.ceil(0.95 * len(ratios)) - 1] if ratios else math.nan
 
 
 def observed_orders(cases, runs):
@@ -229,14 +237,16 @@ def main():
     orders = observed_orders(cases, runs)
     (out / "coverage.json").write_text(
         json.dumps({"bars": table, "bars_by_kind": by_kind, "orders": orders}, indent=2) + "\n")
-    print("| estimator | quantity | inside | median bar | median change | width ratio | misses |")
-    print("|---|---|---|---|---|---|---|")
+    print("| estimator | quantity | inside | median bar | median change | width ratio | "
+          "width at 95 % | misses |")
+    print("|---|---|---|---|---|---|---|---|")
     rows = list(table.items()) + [(f"{key} ({kind})", t) for kind, kt in by_kind.items()
                                   for key, t in kt.items()]
     for key, t in rows:
         name, quantity = key.split(":")
         print(f"| {name} | {quantity} | {t['covered']}/{t['cases']} | {t['median_bar']:.3g} | "
-              f"{t['median_change']:.3g} | {t['width_ratio']:.2f} | {', '.join(t['misses'])} |")
+              f"{t['median_change']:.3g} | {t['width_ratio']:.2f} | {t['width_at_95']:.2f} | "
+              f"{', '.join(t['misses'])} |")
     print("\n| quantity | cases | observed order p (median) | quartiles |")
     print("|---|---|---|---|")
     for key, o in orders.items():
