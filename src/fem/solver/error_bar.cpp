@@ -255,6 +255,10 @@ ConvergenceFit fit_free_order(std::span<const double> e,
 }
 
 double scatter_model_factor(std::span<const double> h, double reference, double coverage) {
+  require_positive("error bar reference ratio", reference, "[-] (a mesh size over the run's own)");
+  if (!(coverage > 0.0 && coverage < 1.0)) {
+    throw_invalid("error bar coverage", coverage, "in (0, 1) [-]");
+  }
   if (h.size() < 2) return kNaN;
   // Draws of e_i = sigma h_i z_i (sigma = 1, z_i independent standard normal; Box-Muller) and of
   // the reference's e_r = reference z_r: the ratio |e_r - e_1| / (sigma_hat sqrt(1 + reference^2))

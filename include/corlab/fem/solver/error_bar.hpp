@@ -63,8 +63,9 @@ ConvergenceFit fit_fixed_orders(std::span<const double> e,
 /// The factor F [-] for which |e(reference h) - e_1| <= F sigma_hat sqrt(1 + reference^2) holds
 /// with probability `coverage` [-] when e(h_i) = e* + sigma h_i z_i exactly (z_i independent
 /// standard normal; sigma_hat the scatter estimator's, from the grids h, h[0] = 1): the
-/// `coverage` quantile of 2^18 draws from a fixed seed, so a function of its arguments (+/- 0.3 %
-/// of the exact quantile). NaN with fewer than two grids.
+/// `coverage` quantile of 2^18 draws from a fixed seed, so a function of its arguments (within
+/// about 0.3 % of the exact quantile). NaN with fewer than two grids; InputError for a reference
+/// that is not > 0 or a coverage outside (0, 1).
 double scatter_model_factor(std::span<const double> h, double reference, double coverage);
 
 /// The estimators by name, the default first: "scatter", "scatter_coarse", "two_grid",

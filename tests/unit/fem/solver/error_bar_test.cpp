@@ -134,6 +134,9 @@ TEST(ErrorBar, The3dTangentialBarIsTheModelFactorOnTheFinerValuesSpread) {
   EXPECT_TRUE(std::isnan(scatter_model_factor(std::span(h).first(1), 0.5, 0.95)));
   // A function of its arguments: the same factor every time.
   EXPECT_EQ(scatter_model_factor(h, 1.0 / std::sqrt(2.0), 0.95), f);
+  EXPECT_THROW(scatter_model_factor(h, 0.0, 0.95), InputError);
+  EXPECT_THROW(scatter_model_factor(h, 0.5, 1.0), InputError);
+  EXPECT_THROW(scatter_model_factor(h, 0.5, std::nan("")), InputError);
 }
 
 TEST(ErrorBar, TwoGridIsTheGci) {
