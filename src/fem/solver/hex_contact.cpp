@@ -1,6 +1,7 @@
 // The 3-D solver's contact: the sphere's contact points (n x n on each slave face) on the rigid
 // plane or on the flat's smooth surface (hex_master_surface.cpp), with the normal penalty law of
-// penalty_contact.hpp, and Coulomb friction at the slave nodes (hex_model.hpp).
+// penalty_contact.hpp, and Coulomb friction: kinematic at the same points (hex_friction.cpp), or
+// the tangential penalty at the slave nodes (hex_model.hpp).
 // SPDX-License-Identifier: BSD-3-Clause
 #include <algorithm>
 #include <array>
@@ -57,8 +58,10 @@ std::array<double, 3> point_position(const SlavePoint& q, const HexState& s) {
 // The normal penalty at the contact points: each point's force f n goes to its face's nodes
 // with the weights w_a and to its masters, so that it is -d(1/2 k g^2)/d(positions) (g the
 // point's gap, linear in its nodes); each slave node's share sum w_a f into
-// s.slave_normal_force. Sets the contact force s.force (+ up), the deepest penetration; returns
-// the stored energy [J] and, in `penetrating`, whether any point penetrates.
+// s.slave_normal_force (the tangential penalty's f_n), and each touching point into
+// s.touching (the kinematic friction's contacts, where m.friction > 0). Sets the contact force
+// s.force (+ up), the deepest penetration; returns the stored energy [J] and, in
+// `penetrating`, whether any point penetrates.
 double normal_contact_forces(const HexModel& m, HexState& s, bool& penetrating) {
   double stored = 0.0;
   double normal_force = 0.0;
@@ -66,7 +69,10 @@ double normal_contact_forces(const HexModel& m, HexState& s, bool& penetrating) 
   // Points below this height look for the block's surface; higher ones cannot touch it [m].
   const double search_below = top_height(m, s) + 0.5 * m.h_contact;
   s.slave_normal_force.assign(m.mesh.sphere_surface_nodes.size(), 0.0);
-  for (const SlavePoint& q : m.slave_points) {
+  s.touching.clear();
+  const bool kinematic = m.kinematic_friction && m.friction > 0.0;
+  for (std::size_t i = 0; i < m.slave_points.size(); ++i) {
+    const SlavePoint& q = m.slave_points[i];
     const std::array<double, 3> p = point_position(q, s);
     SlaveContact c;
     c.gap = project_on_rigid_flat(p[2]).gap;  // no block below: the plane of the top
@@ -85,6 +91,11 @@ double normal_contact_forces(const HexModel& m, HexState& s, bool& penetrating) 
       s.slave_normal_force[static_cast<std::size_t>(q.slave[a])] += q.w[a] * fn;
     }
     push_masters(c, force, s);
+    if (kinematic)
+      s.touching.push_back({.point = i,
+                            .normal = {c.normal[0], c.normal[1], c.normal[2]},
+                            .at = c,
+                            .normal_force = fn});
     normal_force += fn * c.normal[2];
     stored += normal.energy;
   }
@@ -157,9 +168,14 @@ std::vector<SlavePoint> make_slave_points(const HexModel& m, int n) {
 bool contact_forces(const HexModel& m, HexState& s, double dt) {
   bool penetrating = false;
   double stored = normal_contact_forces(m, s, penetrating);
+  if (m.kinematic_friction) {
+    if (m.friction > 0.0) kinematic_friction_forces(m, s, s.dt);
+    s.energy.contact = stored;
+    return penetrating;
+  }
+  // The tangential penalty: at each slave node, with its share of the points' normal force.
   const bool block = m.contact == solver::ContactKind::kBlockSurface;
   const auto& slaves = m.mesh.sphere_surface_nodes;
-  s.touching.clear();
   for (std::size_t k = 0; k < slaves.size(); ++k) {
     const auto n = static_cast<std::size_t>(slaves[k]);
     const double fn = s.slave_normal_force[k];
@@ -167,28 +183,20 @@ bool contact_forces(const HexModel& m, HexState& s, double dt) {
     // The slave's friction acts at its own point of the master, along its tangent plane.
     SlaveContact c;
     if (block && fn > 0.0) c = surface_contact(m, s, n);
-    if (!m.kinematic_friction) {
-      const std::array<double, 3> v_master = master_velocity(c, s);
-      const double du[3] = {(s.node[n].vx - v_master[0]) * dt, (s.node[n].vy - v_master[1]) * dt,
-                            (s.node[n].vz - v_master[2]) * dt};
-      const FrictionUpdate f =
-          coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
-      s.traction[k] = {f.t[0], f.t[1], f.t[2]};
-      s.energy.friction += f.dissipation;
-      if (!(fn > 0.0)) continue;
-      s.nodal_force[n].x += f.t[0];
-      s.nodal_force[n].y += f.t[1];
-      s.nodal_force[n].z += f.t[2];
-      push_masters(c, f.t, s);
-      stored += friction_stored_energy(f.t, stiffness);
-    } else if (fn > 0.0 && m.friction > 0.0) {
-      s.touching.push_back({.slave = k,
-                            .normal = {c.normal[0], c.normal[1], c.normal[2]},
-                            .at = c,
-                            .normal_force = fn});
-    }
+    const std::array<double, 3> v_master = master_velocity(c, s);
+    const double du[3] = {(s.node[n].vx - v_master[0]) * dt, (s.node[n].vy - v_master[1]) * dt,
+                          (s.node[n].vz - v_master[2]) * dt};
+    const FrictionUpdate f =
+        coulomb_friction(s.traction[k].data(), c.normal, du, fn, stiffness, m.friction);
+    s.traction[k] = {f.t[0], f.t[1], f.t[2]};
+    s.energy.friction += f.dissipation;
+    if (!(fn > 0.0)) continue;
+    s.nodal_force[n].x += f.t[0];
+    s.nodal_force[n].y += f.t[1];
+    s.nodal_force[n].z += f.t[2];
+    push_masters(c, f.t, s);
+    stored += friction_stored_energy(f.t, stiffness);
   }
-  if (m.kinematic_friction && m.friction > 0.0) kinematic_friction_forces(m, s, s.dt);
   s.energy.contact = stored;
   return penetrating;
 }

@@ -179,8 +179,11 @@ HexState initial_state(const HexModel& m) {
   for (Vec& c : s.stress) c.assign(ne, 0.0);
   s.eps_p.assign(ne, 0.0);
   for (Vec& q : s.hourglass) q.assign(ne, 0.0);
-  s.traction.assign(m.mesh.sphere_surface_nodes.size(), {0.0, 0.0, 0.0});
-  s.friction_link.assign(m.mesh.sphere_surface_nodes.size(), {});
+  // Kinematic friction acts at the contact points, the tangential penalty at the slave nodes.
+  const std::size_t carriers =
+      m.kinematic_friction ? m.slave_points.size() : m.mesh.sphere_surface_nodes.size();
+  s.traction.assign(carriers, {0.0, 0.0, 0.0});
+  s.friction_link.assign(m.kinematic_friction ? carriers : 0, {});
   s.t = m.t_start;
   s.dt = m.dt_initial;
   s.sphere_velocity = -m.velocity;

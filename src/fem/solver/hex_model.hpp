@@ -8,10 +8,10 @@
 /// hourglass control (hex8.hpp, hourglass.hpp), the J2 material point, the Hughes-Winget rotation
 /// and the bulk viscosity of the axisymmetric solver (the same kernels), penalty contact of the
 /// sphere's surface points on the plane or on the block top's smooth surface (penalty_contact.hpp's
-/// normal law, spline_surface.hpp) with Coulomb friction at its surface nodes
-/// (coulomb_friction.hpp: the kinematic stick of hex_friction.cpp, or the tangential penalty's
-/// return map), central differences at the elements' stable step. x is the tangential direction of
-/// the impact (the sphere moves towards +x), z the normal (up).
+/// normal law, spline_surface.hpp) with Coulomb friction (coulomb_friction.hpp: the kinematic
+/// stick of hex_friction.cpp at the same points, or the tangential penalty's return map at the
+/// surface nodes), central differences at the elements' stable step. x is the tangential direction
+/// of the impact (the sphere moves towards +x), z the normal (up).
 ///
 /// The 3-D solver's model (constant) and state (mutable), shared by its steps (hex_step.cpp),
 /// element pass (hex_element_loop.cpp) and contact (hex_contact.cpp); the time loop, its
@@ -113,36 +113,37 @@ struct NodeForce {
   double x, y, z;
 };
 
-// Where a slave's kinematic friction force (HexState::traction) acts: the master nodes and
-// their weights (`at`; no masters: the rigid flat), and the slave's relative velocity when it
-// was set, v^{n+1/2} [m/s]; its work is booked a step later, from v^{n+3/2} (friction_work).
+// Where a contact point's kinematic friction force (HexState::traction) acts: the master nodes
+// and their weights (`at`; no masters: the rigid flat), and the point's relative velocity when
+// it was set, v^{n+1/2} [m/s]; its work is booked a step later, from v^{n+3/2} (friction_work).
 struct SlaveFriction {
   SlaveContact at;
   std::array<double, 3> v_before{};
 };
 
-// A slave that touches this step, for the kinematic friction pass: its index among the slaves,
-// the unit contact normal [-], its master nodes and weights (`at`; no masters: the rigid flat)
-// and the normal force [N].
+// A contact point that touches this step, for the kinematic friction pass: its index in
+// HexModel::slave_points, the unit contact normal [-], its master nodes and weights (`at`; no
+// masters: the rigid flat) and its normal force [N].
 struct FrictionContact {
-  std::size_t slave = 0;
+  std::size_t point = 0;
   double normal[3] = {0.0, 0.0, 1.0};
   SlaveContact at;
   double normal_force = 0.0;
-  double t[3] = {0.0, 0.0, 0.0};       // friction force on the slave [N]
+  double t[3] = {0.0, 0.0, 0.0};       // friction force on the point [N]
   double v_pred[3] = {0.0, 0.0, 0.0};  // relative velocity at the step's end without it [m/s]
-  double mass = 0.0;                   // effective mass for the slave alone [kg]
+  double mass = 0.0;                   // effective mass for the point alone [kg]
 };
 
 // The mutable part (half model); the running sums in its base.
 struct HexState : solver::RunState {
   std::vector<NodeKinematics> node;
   std::vector<NodeForce> nodal_force;
-  std::array<Vec, 6> stress;                       // per element: xx, yy, zz, xy, yz, zx [Pa]
-  Vec eps_p;                                       // per element [-]
-  std::array<Vec, 12> hourglass;                   // per element: Q[d][a] at d * 4 + a [N]
-  std::vector<std::array<double, 3>> traction;     // friction force of each slave [N]
-  std::vector<SlaveFriction> friction_link;        // where each slave's kinematic friction acts
+  std::array<Vec, 6> stress;      // per element: xx, yy, zz, xy, yz, zx [Pa]
+  Vec eps_p;                      // per element [-]
+  std::array<Vec, 12> hourglass;  // per element: Q[d][a] at d * 4 + a [N]
+  // Friction force [N] of each contact point (kinematic) or slave node (penalty).
+  std::vector<std::array<double, 3>> traction;
+  std::vector<SlaveFriction> friction_link;        // where each point's kinematic friction acts
   std::vector<FrictionContact> touching;           // this step's contacts (scratch)
   std::vector<std::array<double, 3>> friction_dv;  // velocity change by friction (scratch) [m/s]
   Vec slave_normal_force;  // each slave node's share of the points' normal force (scratch) [N]
@@ -175,17 +176,20 @@ std::array<double, 3> master_velocity(const SlaveContact& c, const HexState& s);
 void push_masters(const SlaveContact& c, const double* force, HexState& s);
 
 /// Penalty contact of the sphere's contact points (the rigid flat z = 0 or the block's top;
-/// penalty_contact.hpp's normal law) and Coulomb friction at the slave nodes, each with its share
-/// of the normal force (coulomb_friction.hpp; kinematic: kinematic_friction_forces after the
-/// normal forces): adds the contact forces to s.nodal_force, sets the
+/// penalty_contact.hpp's normal law) and Coulomb friction (coulomb_friction.hpp): kinematic, at
+/// the touching contact points with their own normal force (kinematic_friction_forces after the
+/// normal forces), or the tangential penalty at the slave nodes with each node's share of the
+/// points' normal force: adds the contact forces to s.nodal_force, sets the
 /// contact force s.force (+ up), the stored energy s.energy.contact and the deepest penetration,
 /// adds the frictional work to s.energy.friction. Returns whether any slave penetrates.
 bool contact_forces(const HexModel& m, HexState& s, double dt);
 
-/// Kinematic Coulomb friction (coulomb_friction.hpp's kinematic_friction) at the contacts in
-/// s.touching, after every other force of the step is in s.nodal_force: books the work of the
-/// previous step's friction forces into s.energy.friction, sets s.traction and adds the new
-/// forces to s.nodal_force. dt [s] is the step the forces will act over (predicted).
+/// Kinematic Coulomb friction (coulomb_friction.hpp's kinematic_friction) at the contact points
+/// in s.touching (each point's relative velocity interpolated from its face's nodes with the
+/// weights w_a, its force spread back with the same weights), after every other force of the step
+/// is in s.nodal_force: books the work of the previous step's friction forces into
+/// s.energy.friction, sets s.traction and adds the new forces to s.nodal_force. dt [s] is the step
+/// the forces will act over (predicted).
 void kinematic_friction_forces(const HexModel& m, HexState& s, double dt);
 
 // The steps of the time loop (time_loop.hpp), found there by argument-dependent lookup.

@@ -2,7 +2,8 @@
 // contact point finds the surface under it after the flat's top has moved sideways by more than
 // one face or risen above z = 0, as a yielding flat's does at 30 m/s (about 1 mm sideways and
 // 0.5 mm up for the paper's pair); the reaction goes to the nodes around it, mirrored across
-// y = 0. The sphere's contact points share its nodes' penalties exactly.
+// y = 0. The sphere's contact points share its nodes' penalties exactly, and carry the kinematic
+// friction with their own normal force.
 // SPDX-License-Identifier: BSD-3-Clause
 #include <gtest/gtest.h>
 
@@ -160,6 +161,69 @@ TEST(HexContact, ContactPointsShareTheSlavesPenalties) {
       EXPECT_GT(stiffness[k], 0.5 * m.penalty[k]);
       EXPECT_LT(stiffness[k], 2.0 * m.penalty[k]);
     }
+  }
+}
+
+// Kinematic friction acts at the contact point, not at its face's nodes: one point in the middle
+// of a square face of four sliding nodes, pressed into the rigid flat. Below the Coulomb limit it
+// stops the point's predicted tangential velocity, the force spread over the nodes with the
+// point's weights (1/4 each); above it the force is mu times the point's normal force.
+HexModel sliding_face(double mu) {
+  HexModel m;
+  for (int a = 0; a < 4; ++a) {
+    m.mesh.x.push_back(a == 1 || a == 2 ? kH : 0.0);
+    m.mesh.y.push_back(a >= 2 ? kH : 0.0);
+    m.mesh.z.push_back(0.0);
+    m.mesh.node_body.push_back(Body::kSphere);
+  }
+  m.mesh.sphere_surface_nodes = {0, 1, 2, 3};
+  m.contact = solver::ContactKind::kRigidPlane;
+  m.h_contact = kH;
+  m.penalty = {1e6, 1e6, 1e6, 1e6};
+  m.mass = {1e-9, 1e-9, 1e-9, 1e-9};
+  m.inv_mass = {1e9, 1e9, 1e9, 1e9};
+  m.free_x = m.free_y = m.free_z = {1.0, 1.0, 1.0, 1.0};
+  m.slave_points = {SlavePoint{
+      .node = {0, 1, 2, 3}, .slave = {0, 1, 2, 3}, .w = {0.25, 0.25, 0.25, 0.25}, .penalty = 1e6}};
+  m.friction = mu;
+  m.kinematic_friction = true;
+  m.velocity = 1.0;
+  return m;
+}
+
+HexState pressed(const HexModel& m, double dt) {
+  HexState s;
+  for (std::size_t n = 0; n < 4; ++n)  // 1 um deep, sliding at 1 m/s along x
+    s.node.push_back({m.mesh.x[n], m.mesh.y[n], -1e-6, 1.0, 0.0, 0.0});
+  s.nodal_force.assign(4, NodeForce{0.0, 0.0, 0.0});
+  s.traction.assign(1, {0.0, 0.0, 0.0});
+  s.friction_link.assign(1, {});
+  s.dt = dt;
+  return s;
+}
+
+TEST(HexContact, KinematicFrictionActsAtTheContactPoint) {
+  constexpr double kDt = 1e-7;            // [s]
+  constexpr double kNormal = 1e6 * 1e-6;  // the point's normal force [N]
+  {
+    const HexModel m = sliding_face(10.0);  // sticks: m v / dt = 4e-3 N < 10 N
+    HexState s = pressed(m, kDt);
+    contact_forces(m, s, kDt);
+    double v = 0.0;  // the point's predicted velocity along x
+    for (std::size_t n = 0; n < 4; ++n) {
+      EXPECT_NEAR(s.nodal_force[n].z, 0.25 * kNormal, 1e-12);
+      v += 0.25 * (s.node[n].vx + kDt * m.inv_mass[n] * s.nodal_force[n].x);
+    }
+    EXPECT_NEAR(v, 0.0, 1e-9);
+    EXPECT_NEAR(s.traction[0][0], -4e-9 / kDt, 1e-12);
+  }
+  {
+    const HexModel m = sliding_face(1e-3);  // slips: 1e-3 N < 4e-3 N
+    HexState s = pressed(m, kDt);
+    contact_forces(m, s, kDt);
+    EXPECT_NEAR(s.traction[0][0], -1e-3 * kNormal, 1e-15);
+    for (std::size_t n = 0; n < 4; ++n)
+      EXPECT_NEAR(s.nodal_force[n].x, -0.25 * 1e-3 * kNormal, 1e-15);
   }
 }
 
