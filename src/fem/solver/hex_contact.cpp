@@ -57,8 +57,8 @@ std::array<double, 3> point_position(const SlavePoint& q, const HexState& s) {
 
 // The normal penalty at the contact points: each point's force f n goes to its face's nodes
 // with the weights w_a and to its masters, so that it is -d(1/2 k g^2)/d(positions) (g the
-// point's gap, linear in its nodes); each slave node's share sum w_a f into
-// s.slave_normal_force (the tangential penalty's f_n), and each touching point into
+// point's gap, linear in its nodes); with the tangential penalty each slave node's share
+// sum w_a f into s.slave_normal_force (its f_n), and each touching point into
 // s.touching (the kinematic friction's contacts, where m.friction > 0). Sets the contact force
 // s.force (+ up), the deepest penetration; returns the stored energy [J] and, in
 // `penetrating`, whether any point penetrates.
@@ -68,7 +68,9 @@ double normal_contact_forces(const HexModel& m, HexState& s, bool& penetrating) 
   const bool block = m.contact == solver::ContactKind::kBlockSurface;
   // Points below this height look for the block's surface; higher ones cannot touch it [m].
   const double search_below = top_height(m, s) + 0.5 * m.h_contact;
-  s.slave_normal_force.assign(m.mesh.sphere_surface_nodes.size(), 0.0);
+  // The nodes' shares only for the tangential penalty; the kinematic friction acts at the points.
+  const bool node_shares = !m.kinematic_friction;
+  if (node_shares) s.slave_normal_force.assign(m.mesh.sphere_surface_nodes.size(), 0.0);
   s.touching.clear();
   const bool kinematic = m.kinematic_friction && m.friction > 0.0;
   for (std::size_t i = 0; i < m.slave_points.size(); ++i) {
@@ -88,7 +90,7 @@ double normal_contact_forces(const HexModel& m, HexState& s, bool& penetrating) 
       f.x += q.w[a] * force[0];
       f.y += q.w[a] * force[1];
       f.z += q.w[a] * force[2];
-      s.slave_normal_force[static_cast<std::size_t>(q.slave[a])] += q.w[a] * fn;
+      if (node_shares) s.slave_normal_force[static_cast<std::size_t>(q.slave[a])] += q.w[a] * fn;
     }
     push_masters(c, force, s);
     if (kinematic)

@@ -146,7 +146,8 @@ struct HexState : solver::RunState {
   std::vector<SlaveFriction> friction_link;        // where each point's kinematic friction acts
   std::vector<FrictionContact> touching;           // this step's contacts (scratch)
   std::vector<std::array<double, 3>> friction_dv;  // velocity change by friction (scratch) [m/s]
-  Vec slave_normal_force;  // each slave node's share of the points' normal force (scratch) [N]
+  Vec slave_normal_force;  // tangential penalty: each slave node's share of the points' normal
+                           // force (scratch) [N]
 };
 
 // The top face of the block under (x, y) at the start positions, shifted by (di, dj) faces and
