@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <string>
 
 #include "corlab/core/error.hpp"
@@ -162,19 +162,11 @@ double scatter_bar(std::span<const double> e, std::span<const double> h, double 
   return factor * scatter_sigma(e, h) * std::sqrt(1.25);
 }
 
-/// SplitMix64 (Steele, Lea & Flood 2014): the same stream on every platform, unlike the
-/// standard library's distributions.
-struct SplitMix64 {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in (0, 1].
-  double uniform() { return (static_cast<double>(next() >> 11) + 1.0) * 0x1.0p-53; }
-};
+/// Uniform in (0, 1] from the standard's 64-bit Mersenne Twister, whose stream the standard fixes
+/// (its distributions it does not): the same draws on every platform [-].
+double uniform_open_closed(std::mt19937_64& rng) {
+  return (static_cast<double>(rng() >> 11) + 1.0) * 0x1.0p-53;
+}
 
 /// scatter_3d: the scatter model's own 95 % factor for these grids, times sigma and the
 /// deviation of e(h / sqrt 2) - e_1 (variance sigma^2 (1 + 1/2)). The factor of the last grid
@@ -263,12 +255,13 @@ double scatter_model_factor(std::span<const double> h, double reference, double 
   // Draws of e_i = sigma h_i z_i (sigma = 1, z_i independent standard normal; Box-Muller) and of
   // the reference's e_r = reference z_r: the ratio |e_r - e_1| / (sigma_hat sqrt(1 + reference^2))
   // per draw, and its `coverage` quantile.
-  SplitMix64 rng{0x636f726c6162ULL};  // a fixed seed: the factor is a function of its arguments
+  std::mt19937_64 rng{
+      0x636f726c6162ULL};  // a fixed seed: the factor is a function of its arguments
   std::vector<double> z;
   const auto normal = [&]() {
     if (z.empty()) {
-      const double r = std::sqrt(-2.0 * std::log(rng.uniform()));
-      const double angle = 2.0 * std::numbers::pi * rng.uniform();
+      const double r = std::sqrt(-2.0 * std::log(uniform_open_closed(rng)));
+      const double angle = 2.0 * std::numbers::pi * uniform_open_closed(rng);
       z = {r * std::cos(angle), r * std::sin(angle)};
     }
     const double out = z.back();

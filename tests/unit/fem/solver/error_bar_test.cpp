@@ -102,8 +102,9 @@ TEST(ErrorBar, The3dNormalBarIsTheScatterBarAtOneAndAHalfDeviations) {
 }
 
 TEST(ErrorBar, The3dTangentialBarHoldsNinetyFivePercentOfItsOwnModel) {
-  // e(h_i) = e* + sigma h_i z_i at the 3-D companions and at h / sqrt 2, drawn with another
-  // generator than the factor's: the bar holds the reference value in 95 % of the draws.
+  // e(h_i) = e* + sigma h_i z_i at the 3-D companions and at h / sqrt 2, drawn with another seed
+  // and normal transform than the factor's: the bar holds the reference value in 95 % of the
+  // draws.
   const std::array<double, 4> h{1.0, std::sqrt(2.0), std::pow(2.0, 0.75), 2.0};
   std::mt19937_64 rng(20261130);
   std::normal_distribution<double> z;
