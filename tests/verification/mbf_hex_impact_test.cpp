@@ -10,8 +10,9 @@
 // - psi1 = 0.5 (theta = 10.32 deg), mostly stuck: the small-angle regime, where e_t is the
 //   contact's tangential compliance and converges slowest; h = 1 mm (a/h = 3.75, 52,216 elements,
 //   about 30 CPU-s).
-// The quasi-static runs (v_n = 1 m/s) and their command are in docs/theory/solver3d.md, "The
-// small-angle reference". At psi1 = 0.5 and 10 m/s the normal penalty's compliance (about +0.03
+// A third case takes psi1 = 0.5 at v_n = 0.5 m/s with the normal penalty's compliance taken
+// out (two runs, about 200 CPU-s). The quasi-static runs (v_n = 1 m/s) and their command are in
+// docs/theory/solver3d.md, "The small-angle reference". At psi1 = 0.5 and 10 m/s the normal penalty's compliance (about +0.03
 // in e_t) and the impact's speed (about -0.03; MBF is quasi-static) nearly cancel: solver3d.md,
 // "The speed".
 //
@@ -22,6 +23,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <utility>
 
 #include "corlab/core/units.hpp"
 #include "corlab/fem/solver/simulate.hpp"
@@ -110,6 +113,73 @@ TEST(MbfHexImpact, SmallIncidenceOnTheElasticFlatFollowsMbf) {
   // Bounds: issue 39's, e_t within 0.01 and omega within 3 %.
   EXPECT_NEAR(c.fe.e_t, c.mbf.tangential_restitution, 0.01);
   EXPECT_NEAR(c.fe.omega / c.mbf.spin, 1.0, 0.03);
+}
+
+// The small-angle case at a quasi-static speed with the normal penalty's compliance taken out:
+// the steel pair scaled to R = 2.5 mm on a 10 mm viscous-spring block, v_n = 0.5 m/s, a/4, run
+// at two penalty scales; e_t and omega taken out linearly in the deepest penetration over
+// delta_max (solver3d.md, "The speed"). Each run about 100 CPU-s.
+TEST(MbfHexImpact, QuasiStaticSmallIncidenceWithoutThePenaltysComplianceFollowsMbf) {
+  constexpr double kMu = 0.3;
+  constexpr double kPsi1 = 0.5;
+  constexpr double kNormalVelocity = 0.5;  // [m/s]
+  struct Run {
+    double e_t, omega, penetration;  // [-], [rad/s], over delta_max [-]
+  };
+  double theta = 0.0;
+  const auto run = [&](double penalty_scale) {
+    ImpactConfig c;
+    c.sphere.material.yield_stress.reset();
+    c.substrate.material.yield_stress.reset();
+    const double nu = c.sphere.material.poisson_ratio;
+    theta = std::atan(kPsi1 * kMu / (2.0 * (1.0 - nu) / (2.0 - nu)));
+    c.solver.model = SolverModel::kThreeD;
+    c.impact.angle = PlaneAngle{theta};
+    c.impact.velocity = kNormalVelocity / std::cos(theta);
+    c.contact.friction = kMu;
+    c.sphere.radius = 2.5e-3;
+    c.substrate.radius = 0.01;
+    c.substrate.depth = 0.01;
+    c.substrate.boundary = SubstrateBoundary::kViscousSpring;
+    c.mesh.contact_elements = 4.0;
+    c.mesh.h_min = 1.25e-4;
+    c.mesh.h_max = 1e-3;
+    c.mesh.growth = 1.6;
+    c.solver.penalty_scale = penalty_scale;
+    validate(c);
+    const ImpactResult r = simulate(c);
+    expect_elastic_rebound(r);
+    return std::pair{c, Run{r.e_t, r.omega, r.penetration_max / r.delta_max}};
+  };
+  const auto [config, soft] = run(0.28);
+  const Run stiff = run(0.5).second;
+  // The penalty's compliance raises e_t (0.7599 at 0.28, 0.7495 at 0.5, penetration 3.9 % and
+  // 2.3 % of delta_max, measured).
+  ASSERT_GT(soft.penetration, stiff.penetration);
+  EXPECT_GT(soft.e_t, stiff.e_t);
+  const auto at_no_penetration = [&](double soft_value, double stiff_value) {
+    return stiff_value -
+           (soft_value - stiff_value) / (soft.penetration - stiff.penetration) * stiff.penetration;
+  };
+  const restitution::MbfRebound mbf =
+      restitution::mbf_rebound({.radius = config.sphere.radius,
+                                .density = config.sphere.material.density,
+                                .sphere_modulus = config.sphere.material.youngs_modulus,
+                                .sphere_poisson = config.sphere.material.poisson_ratio,
+                                .flat_modulus = config.substrate.material.youngs_modulus,
+                                .flat_poisson = config.substrate.material.poisson_ratio,
+                                .velocity = config.impact.velocity,
+                                .angle = theta / units::kDegree,
+                                .friction = kMu});
+  EXPECT_NEAR(mbf.psi1, kPsi1, 1e-12);
+  // Measured: e_t 0.7345 against MBF's 0.7416 (-0.0071), omega +2.2 %; at 1 m/s -0.0106 and
+  // +3.6 %, at 0.25 m/s -0.0043 and +1.2 % (the speed's share). Bounds: issue 39's.
+  const double e_t = at_no_penetration(soft.e_t, stiff.e_t);
+  const double omega = at_no_penetration(soft.omega, stiff.omega);
+  std::printf("no penetration: e_t %.4f (MBF %.4f), omega / MBF's %.4f\n", e_t,
+              mbf.tangential_restitution, omega / mbf.spin);
+  EXPECT_NEAR(e_t, mbf.tangential_restitution, 0.01);
+  EXPECT_NEAR(omega / mbf.spin, 1.0, 0.03);
 }
 
 }  // namespace
