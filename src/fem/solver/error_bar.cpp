@@ -255,8 +255,8 @@ double scatter_model_factor(std::span<const double> h, double reference, double 
   // Draws of e_i = sigma h_i z_i (sigma = 1, z_i independent standard normal; Box-Muller) and of
   // the reference's e_r = reference z_r: the ratio |e_r - e_1| / (sigma_hat sqrt(1 + reference^2))
   // per draw, and its `coverage` quantile.
-  std::mt19937_64 rng{
-      0x636f726c6162ULL};  // a fixed seed: the factor is a function of its arguments
+  // A fixed seed: the factor is a function of its arguments.
+  std::mt19937_64 rng{0x636f726c6162ULL};
   std::vector<double> z;
   const auto normal = [&]() {
     if (z.empty()) {
