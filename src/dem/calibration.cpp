@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/golden_section.hpp"
 #include "corlab/dem/contact_ode.hpp"
 #include "dem/detail/gsl_solvers.hpp"
 
@@ -63,7 +64,7 @@ CurveFit fit_one_parameter(const std::function<double(double param, double v)>& 
     }
   }
   const double width = (log_hi - log_lo) / kScan;
-  const double log_p = detail::golden_minimum(cost, best - width, best + width, 1e-9);
+  const double log_p = golden_section_minimum(cost, best - width, best + width, 1e-9);
   fit.parameter = std::exp(log_p);
   double sum = 0.0;
   for (std::size_t i = 0; i < velocities.size(); ++i) {

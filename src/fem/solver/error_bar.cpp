@@ -11,6 +11,7 @@
 #include <string>
 
 #include "corlab/core/error.hpp"
+#include "corlab/core/golden_section.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -220,27 +221,9 @@ ConvergenceFit fit_free_order(std::span<const double> e,
     }
   }
   if (!std::isfinite(best)) return {};
-  double a = std::max(best_p - kOrderStep, 1e-6), b = std::min(best_p + kOrderStep, kOrderMax);
-  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  // Golden-section search: each step keeps one of the two interior points and evaluates one new.
-  double c = b - golden * (b - a), d = a + golden * (b - a);
-  double rc = rss_at(c), rd = rss_at(d);
-  for (int it = 0; it < 40; ++it) {
-    if (rc < rd) {
-      b = d;
-      d = c;
-      rd = rc;
-      c = b - golden * (b - a);
-      rc = rss_at(c);
-    } else {
-      a = c;
-      c = d;
-      rc = rd;
-      d = a + golden * (b - a);
-      rd = rss_at(d);
-    }
-  }
-  const std::array<double, 1> orders{0.5 * (a + b)};
+  const double a = std::max(best_p - kOrderStep, 1e-6);
+  const double b = std::min(best_p + kOrderStep, kOrderMax);
+  const std::array<double, 1> orders{golden_section_minimum(rss_at, a, b, 1e-9)};
   LinearFit lf = solve_fixed(e, h, weights, orders);
   lf.fit.sigma = standard_deviation(lf.rss, e.size(), 3);
   return lf.fit;

@@ -1,6 +1,8 @@
 // The 3-D explicit impact solver (hex_model.hpp): its model and state; the time loop, its
 // bookkeeping and the result are the axisymmetric model's (time_loop.hpp).
 // SPDX-License-Identifier: BSD-3-Clause
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -14,6 +16,7 @@
 #include "corlab/fem/kernels/hex8.hpp"
 #include "corlab/fem/kernels/j2_plasticity.hpp"
 #include "corlab/fem/kernels/penalty_contact.hpp"
+#include "corlab/fem/kernels/rigid_body_mass.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/kernels/sym_tensor3.hpp"
 #include "corlab/fem/mesh/contact_estimate.hpp"
@@ -58,6 +61,52 @@ double lump_masses(HexModel& m) {
         dt_critical, element_stable_time_step(hex8_characteristic_length(g), body.wave_speed, 0.0));
   }
   return dt_critical;
+}
+
+// The sphere's lumped masses rescaled (rigid_body_mass.hpp) to the half sphere's mass
+// rho 2/3 pi R^3 [kg] and its moment 2/5 m R^2 [kg m^2] about the spin axis, the y axis through
+// the masses' centroid (its centre by the mesh's symmetry).
+void give_the_sphere_its_rigid_body_inertia(HexModel& m, const ImpactConfig& config) {
+  double mass = 0.0;
+  double cx = 0.0;
+  double cz = 0.0;
+  for (std::size_t n = 0; n < m.mass.size(); ++n) {
+    if (m.mesh.node_body[n] != Body::kSphere) continue;
+    mass += m.mass[n];
+    cx += m.mass[n] * m.mesh.x[n];
+    cz += m.mass[n] * m.mesh.z[n];
+  }
+  cx /= mass;
+  cz /= mass;
+  auto distance2 = [&](std::size_t n) {
+    const double dx = m.mesh.x[n] - cx;
+    const double dz = m.mesh.z[n] - cz;
+    return dx * dx + dz * dz;
+  };
+  MassMoments lumped;
+  for (std::size_t n = 0; n < m.mass.size(); ++n) {
+    if (m.mesh.node_body[n] != Body::kSphere) continue;
+    const double d2 = distance2(n);
+    lumped.m0 += m.mass[n];
+    lumped.m2 += m.mass[n] * d2;
+    lumped.m4 += m.mass[n] * d2 * d2;
+  }
+  const double radius = config.sphere.radius;
+  const double target =
+      config.sphere.material.density * 2.0 / 3.0 * units::kPi * radius * radius * radius;
+  const MassRescaling r = rigid_body_rescaling(lumped, target, 0.4 * target * radius * radius);
+  for (std::size_t n = 0; n < m.mass.size(); ++n) {
+    if (m.mesh.node_body[n] != Body::kSphere) continue;
+    const double factor = r.factor(distance2(n));
+    // The default meshes need 1.003-1.033; a factor far from 1 is a mesh that is not this sphere.
+    if (!(factor > 0.5 && factor < 2.0)) {
+      throw InputError(fmt::format(
+          "sphere mesh: its lumped mass and moment of inertia are {:.3g} and {:.3g} of a sphere "
+          "of sphere.radius = {} m; must be within a factor of 2 (is the mesh this sphere?)",
+          lumped.m0 / target, lumped.m2 / (0.4 * target * radius * radius), radius));
+    }
+    m.mass[n] *= factor;
+  }
 }
 
 // Each slave's penalty: the two-mass spring at the stability limit, against the face below it
@@ -134,6 +183,7 @@ HexModel make_model(const ImpactConfig& config) {
     body.wave_speed = mat.dilatational_wave_speed();
   }
   const double dt_critical = lump_masses(m);
+  give_the_sphere_its_rigid_body_inertia(m, config);
   const std::size_t nn = m.mass.size();
   m.inv_mass.resize(nn);
   for (std::size_t n = 0; n < nn; ++n) {
