@@ -92,8 +92,7 @@ void give_the_sphere_its_rigid_body_inertia(HexModel& m, const ImpactConfig& con
     lumped.m4 += m.mass[n] * d2 * d2;
   }
   const double radius = config.sphere.radius;
-  const double target =
-      config.sphere.material.density * 2.0 / 3.0 * units::kPi * radius * radius * radius;
+  const double target = 0.5 * sphere_mass(radius, config.sphere.material.density);  // half model
   const MassRescaling r = rigid_body_rescaling(lumped, target, 0.4 * target * radius * radius);
   for (std::size_t n = 0; n < m.mass.size(); ++n) {
     if (m.mesh.node_body[n] != Body::kSphere) continue;
