@@ -229,16 +229,17 @@ ConvergenceFit fit_free_order(std::span<const double> e,
   return lf.fit;
 }
 
-double scatter_model_factor(std::span<const double> h, double reference, double coverage) {
-  require_positive("error bar reference ratio", reference, "[-] (a mesh size over the run's own)");
-  if (!(coverage > 0.0 && coverage < 1.0)) {
-    throw_invalid("error bar coverage", coverage, "in (0, 1) [-]");
-  }
-  if (h.size() < 2) return kNaN;
-  // Draws of e_i = sigma h_i z_i (sigma = 1, z_i independent standard normal; Box-Muller) and of
-  // the reference's e_r = reference z_r: the ratio |e_r - e_1| / (sigma_hat sqrt(1 + reference^2))
-  // per draw, and its `coverage` quantile.
-  // A fixed seed: the factor is a function of its arguments.
+namespace {
+
+/// The scatter model's draws for the grids h (h[0] = 1) and the reference mesh: e_i = sigma h_i
+/// z_i (sigma = 1, z_i independent standard normal; Box-Muller) and e_r = reference z_r. Per
+/// draw, the change |e_r - e_1| and the scale sigma_hat sqrt(1 + reference^2) it is compared with.
+/// A fixed seed: what is drawn is a function of the arguments.
+struct ScatterModelDraws {
+  std::vector<double> change, scale;
+};
+
+ScatterModelDraws draw_scatter_model(std::span<const double> h, double reference) {
   std::mt19937_64 rng{0x636f726c6162ULL};
   std::vector<double> z;
   const auto normal = [&]() {
@@ -252,16 +253,52 @@ double scatter_model_factor(std::span<const double> h, double reference, double 
     return out;
   };
   std::vector<double> e(h.size());
-  std::vector<double> ratio(kModelDraws);
-  const double scale = std::sqrt(1.0 + reference * reference);
-  for (double& r : ratio) {
+  ScatterModelDraws d{std::vector<double>(kModelDraws), std::vector<double>(kModelDraws)};
+  const double spread = std::sqrt(1.0 + reference * reference);
+  for (std::size_t k = 0; k < kModelDraws; ++k) {
     for (std::size_t i = 0; i < h.size(); ++i) e[i] = h[i] * normal();
     const double e_ref = reference * normal();
-    r = std::abs(e_ref - e[0]) / (scatter_sigma(e, h) * scale);
+    d.change[k] = std::abs(e_ref - e[0]);
+    d.scale[k] = scatter_sigma(e, h) * spread;
   }
-  const auto k = static_cast<std::ptrdiff_t>(std::ceil(coverage * kModelDraws)) - 1;
-  std::nth_element(ratio.begin(), ratio.begin() + k, ratio.end());
-  return ratio[static_cast<std::size_t>(k)];
+  return d;
+}
+
+/// The q quantile (0 < q < 1) of v, as the ceil(q n)-th smallest value; v is reordered.
+double quantile(std::vector<double>& v, double q) {
+  const auto k = static_cast<std::ptrdiff_t>(std::ceil(q * static_cast<double>(v.size()))) - 1;
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[static_cast<std::size_t>(k)];
+}
+
+/// The factor F for which change <= F scale in the `coverage` share of the draws.
+double model_factor(const ScatterModelDraws& d, double coverage) {
+  std::vector<double> ratio(d.change.size());
+  for (std::size_t k = 0; k < ratio.size(); ++k) ratio[k] = d.change[k] / d.scale[k];
+  return quantile(ratio, coverage);
+}
+
+void require_model_arguments(double reference, double coverage) {
+  require_positive("error bar reference ratio", reference, "[-] (a mesh size over the run's own)");
+  if (!(coverage > 0.0 && coverage < 1.0)) {
+    throw_invalid("error bar coverage", coverage, "in (0, 1) [-]");
+  }
+}
+
+}  // namespace
+
+double scatter_model_factor(std::span<const double> h, double reference, double coverage) {
+  require_model_arguments(reference, coverage);
+  if (h.size() < 2) return kNaN;
+  return model_factor(draw_scatter_model(h, reference), coverage);
+}
+
+double scatter_model_width(std::span<const double> h, double reference, double coverage) {
+  require_model_arguments(reference, coverage);
+  if (h.size() < 2) return kNaN;
+  ScatterModelDraws d = draw_scatter_model(h, reference);
+  const double factor = model_factor(d, coverage);
+  return factor * quantile(d.scale, 0.5) / quantile(d.change, 0.5);
 }
 
 const std::vector<std::string_view>& error_bar_estimators() {

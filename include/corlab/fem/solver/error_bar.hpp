@@ -68,6 +68,14 @@ ConvergenceFit fit_fixed_orders(std::span<const double> e,
 /// that is not > 0 or a coverage outside (0, 1).
 double scatter_model_factor(std::span<const double> h, double reference, double coverage);
 
+/// The width [-] of the bar F sigma_hat sqrt(1 + reference^2) (F = scatter_model_factor) under
+/// the same model: the median bar over the median |e(reference h) - e_1|, over the same draws.
+/// 3.6 on the 3-D model's companions (sqrt 2, 2^(3/4) and 2 h, reference 1/sqrt 2): where a
+/// quantity's next change is scatter of this kind, a bar holding 95 % is that much wider than the
+/// change (docs/theory/error_bars.md, "The 3-D model"). NaN and InputError as
+/// scatter_model_factor.
+double scatter_model_width(std::span<const double> h, double reference, double coverage);
+
 /// The estimators by name, the default first: "scatter", "scatter_coarse", "two_grid",
 /// "least_squares", "scatter_3d_e_n", "scatter_3d".
 const std::vector<std::string_view>& error_bar_estimators();
