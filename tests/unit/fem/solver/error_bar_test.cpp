@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "corlab/core/error.hpp"
+#include "support/coverage_tally.hpp"
 
 namespace corlab::fem {
 namespace {
@@ -159,13 +159,9 @@ TEST(ErrorBar, TheScatterModelsWidthIsOverThreeOnTheThreeCompanions) {
     bars.push_back(error_bar("scatter_3d", e, h));
     changes.push_back(std::abs(finer - e[0]));
   }
-  const auto median = [](std::vector<double>& v) {
-    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
   const double width = scatter_model_width(h, reference, 0.95);
   // The medians of 40,000 draws: about 1 % each.
-  EXPECT_NEAR(median(bars) / median(changes), width, 0.03 * width);
+  EXPECT_NEAR(test::median(bars) / test::median(changes), width, 0.03 * width);
   EXPECT_GT(width, 3.4);
   EXPECT_LT(width, 3.8);
   // Two companions: sigma_hat from fewer values, a wider bar still.
