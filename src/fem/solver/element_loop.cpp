@@ -13,6 +13,7 @@
 #include "corlab/fem/kernels/hourglass.hpp"
 #include "corlab/fem/kernels/objective_rate.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
+#include "fem/solver/lane_results.hpp"
 #include "fem/solver/simd_variants.hpp"
 
 namespace corlab::fem::solver {
@@ -99,29 +100,6 @@ using BlockNodes = std::array<const int*, 4>;
           ec.corner[3].data() + e0};
 }
 
-// Per-lane results of a block (no reductions inside the lane loop, so it vectorises without
-// reassociation).
-struct LaneResults {
-  alignas(64) double w_int[kBlock], w_p[kBlock], w_hg[kBlock], w_v[kBlock];
-  alignas(64) double dt[kBlock], eps_p[kBlock], omega[kBlock];
-};
-
-// Adds the block's per-lane results to the pass's sums.
-template <bool kStableStep>
-[[gnu::always_inline]] inline void add_lane_sums(const LaneResults& out,
-                                                 int nb,
-                                                 ElementSums& sums) {
-  for (int l = 0; l < nb; ++l) {
-    sums.internal_work += out.w_int[l];
-    sums.plastic_work += out.w_p[l];
-    sums.hourglass_work += out.w_hg[l];
-    sums.viscous_work += out.w_v[l];
-    if constexpr (kStableStep) sums.dt_min = std::min(sums.dt_min, out.dt[l]);
-    sums.eps_p_max = std::max(sums.eps_p_max, out.eps_p[l]);
-    sums.omega_min = std::min(sums.omega_min, out.omega[l]);
-  }
-}
-
 // What the stress update of one lane hands to its force computation.
 struct LaneStress {
   AxisymTensor s;  // Cauchy stress after the update [Pa]
@@ -140,7 +118,7 @@ struct LaneStress {
                                                      const double* vr,
                                                      const double* vz,
                                                      double dt,
-                                                     LaneResults& out) {
+                                                     LaneResults<kBlock>& out) {
   double mr[4], mz[4];
 #pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) {
@@ -173,12 +151,17 @@ struct LaneStress {
 // added to `sums`. kTrapezoid (subcycling): the viscous work over the step is the trapezoid of
 // the viscous stress at its start (b.bv, updated) and end, the rule that matches the
 // product-form kinetic energy; else the stress at its end (as before subcycling).
-// kKeepSteps (in-run mass scaling): each lane's stable step also into step_out[lane].
+// kKeepSteps (in-run mass scaling): each lane's stable step also into step_out[lane]. e0: the
+// block's first element (for sums.bad_element).
 template <bool kTrapezoid, bool kStableStep, bool kKeepSteps = false>
-[[gnu::always_inline]] inline void element_block(
-    const BodyParams& p, const Block& b, double dt, ElementSums& sums, double* step_out = nullptr) {
+[[gnu::always_inline]] inline void element_block(const BodyParams& p,
+                                                 const Block& b,
+                                                 int e0,
+                                                 double dt,
+                                                 ElementSums& sums,
+                                                 double* step_out = nullptr) {
   const double c = p.wave_speed;
-  LaneResults out;
+  LaneResults<kBlock> out;
 #pragma GCC ivdep
   for (int l = 0; l < b.nb; ++l) {
     double r[4], z[4], vr[4], vz[4];
@@ -217,33 +200,8 @@ template <bool kTrapezoid, bool kStableStep, bool kKeepSteps = false>
       out.dt[l] = element_stable_time_step(length, c, xi) * b.step_scale[l];
     }
   }
-  add_lane_sums<kStableStep>(out, b.nb, sums);
+  add_lane_sums<kStableStep>(out, e0, b.nb, sums);
   if constexpr (kKeepSteps) std::copy_n(out.dt, b.nb, step_out);
-}
-
-// The first lane of the block whose element is inverted (volume or area not > 0) at the gathered
-// positions, or -1. Off the hot path: called once, in the block where the pass's smallest volume
-// stopped being positive.
-[[gnu::noinline, gnu::cold]] int first_inverted_lane(const BlockLanes& lanes, int nb) {
-  for (int l = 0; l < nb; ++l) {
-    double r[4], z[4];
-    for (int i = 0; i < 4; ++i) {
-      r[i] = lanes.xr[i][l];
-      z[i] = lanes.xz[i][l];
-    }
-    const Quad4Geometry g = quad4_geometry(r, z);
-    if (!(std::min(g.omega, g.area) > 0.0)) return l;
-  }
-  return -1;
-}
-
-// Names the pass's first inverted element (sums.bad_element), in the block of nb from e0 whose
-// update just took the smallest volume from `omega_before` to sums.omega_min.
-[[gnu::always_inline]] inline void note_inverted(
-    double omega_before, int e0, const BlockLanes& lanes, int nb, ElementSums& sums) {
-  if (!(sums.omega_min > 0.0) && omega_before > 0.0) {
-    sums.bad_element = e0 + std::max(0, first_inverted_lane(lanes, nb));
-  }
 }
 
 // One pass over the elements of `pass` (element_loop.hpp): gather, the block kernel, scatter.
@@ -306,16 +264,14 @@ template <bool kSubcycled>
         }
       }
     }
-    const double omega_before = sums.omega_min;
     const Block b = block_at(step_scale, es, e0, nb, lanes, kSubcycled);
     if (!kSubcycled && step_out != nullptr) {
-      element_block<false, true, true>(p, b, dt, sums, step_out + e0);
+      element_block<false, true, true>(p, b, e0, dt, sums, step_out + e0);
     } else if (!kSubcycled || stable_step) {
-      element_block<kSubcycled, true>(p, b, dt, sums);
+      element_block<kSubcycled, true>(p, b, e0, dt, sums);
     } else {
-      element_block<kSubcycled, false>(p, b, dt, sums);
+      element_block<kSubcycled, false>(p, b, e0, dt, sums);
     }
-    note_inverted(omega_before, e0, lanes, nb, sums);
     // Element by element (nodes are shared): the order of each node's sum is the element order.
     for (int l = 0; l < nb; ++l) {
 #pragma GCC unroll 4

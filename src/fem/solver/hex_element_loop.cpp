@@ -13,6 +13,7 @@
 #include "corlab/fem/kernels/objective_rate.hpp"
 #include "corlab/fem/kernels/stable_time_step.hpp"
 #include "corlab/fem/kernels/sym_tensor3.hpp"
+#include "fem/solver/lane_results.hpp"
 #include "fem/solver/simd_variants.hpp"
 
 namespace corlab::fem::hex_solver {
@@ -28,11 +29,7 @@ struct HexLanes {
   alignas(64) double fx[8][kBlock], fy[8][kBlock], fz[8][kBlock];
 };
 
-// Per-lane results (no reductions in the lane loop: it vectorises without reassociation).
-struct HexLaneResults {
-  alignas(64) double w_int[kBlock], w_p[kBlock], w_hg[kBlock], w_v[kBlock];
-  alignas(64) double dt[kBlock], eps_p[kBlock], volume[kBlock];
-};
+using HexLaneResults = solver::LaneResults<kBlock>;
 
 // One body's constants for the lane loop.
 struct HexBody {
@@ -134,7 +131,7 @@ struct HexBlockState {
   }
   const Hex8Geometry gm = hex8_geometry(mx, my, mz);
   const Hex8Geometry g = hex8_geometry(x, y, z);
-  out.volume[l] = std::min(g.volume, gm.volume);
+  out.omega[l] = std::min(g.volume, gm.volume);
   SymTensor3 sigma;
   const double vol_rate = lane_stress(p, b, l, gm, vx, vy, vz, dt, sigma, out);
   const double length = hex8_characteristic_length(g);
@@ -238,8 +235,8 @@ template <SimdLevel kLevel>
   }
 }
 
-// Subtracts the block's forces from the nodes, element by element (the sums' order, and so
-// their bits, do not depend on the block size) and adds its lanes' results to `sums`.
+// Subtracts the block's forces from the nodes, element by element (each node's sum in element
+// order, so its bits do not depend on the block size) and adds its lanes' results to `sums`.
 [[gnu::always_inline]] inline void scatter(const HexModel& m,
                                            HexState& s,
                                            std::size_t e0,
@@ -254,14 +251,8 @@ template <SimdLevel kLevel>
       s.nodal_force[n].y -= ln.fy[i][l];
       s.nodal_force[n].z -= ln.fz[i][l];
     }
-    sums.internal_work += out.w_int[l];
-    sums.plastic_work += out.w_p[l];
-    sums.hourglass_work += out.w_hg[l];
-    sums.viscous_work += out.w_v[l];
-    sums.dt_min = std::min(sums.dt_min, out.dt[l]);
-    sums.eps_p_max = std::max(sums.eps_p_max, out.eps_p[l]);
-    if (!(out.volume[l] > 0.0) && sums.bad_element < 0) sums.bad_element = static_cast<int>(e0) + l;
   }
+  solver::add_lane_sums<true>(out, static_cast<int>(e0), nb, sums);
 }
 
 // Prefetch of the cache line at p. An asm statement on x86-64: GCC drops __builtin_prefetch from

@@ -13,9 +13,9 @@ namespace corlab::fem::hex_solver {
 
 /// One pass at positions x^{n+1} and velocities v^{n+1/2} over the step dt [s]: rates at the
 /// mid-step geometry, stress update, and internal and hourglass forces at x^{n+1} subtracted from
-/// s.nodal_force [N]. The sums are the axisymmetric pass's (half model; bad_element: the first
-/// element whose volume at x^{n+1} or x^{n+1/2} is <= 0, after which the state is meaningless and
-/// the run stops).
+/// s.nodal_force [N]. The sums are the axisymmetric pass's (lane_results.hpp; half model;
+/// omega_min: the smallest element volume at x^{n+1} or x^{n+1/2} [m^3]; bad_element: the first
+/// element where that is not > 0, after which the state is meaningless and the run stops).
 solver::ElementSums hex_element_pass(SimdLevel level, const HexModel& m, HexState& s, double dt);
 
 }  // namespace corlab::fem::hex_solver
