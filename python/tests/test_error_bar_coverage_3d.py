@@ -53,6 +53,29 @@ def test_stored_sample_per_quantity(seed):
             assert t["width_ratio"] <= width, f"{label}: width {t['width_ratio']:.3f}"
 
 
+# The candidate written down before the sixth sample (docs/theory/error_bars.md, "A candidate
+# for 0.11.0's bars"): every 3-D factor x 0.9. Per seed and quantity: cases inside and the width,
+# as measured (the width 0.01 above it). Adopted only where the sixth sample gives >= 23 and <= 3.
+CANDIDATE = {
+    20261133: {"e_n": (23, 2.97), "e_t": (23, 2.96), "omega": (24, 2.61)},
+    20261134: {"e_n": (22, 31.82), "e_t": (24, 3.09), "omega": (23, 3.11)},
+}
+
+
+@pytest.mark.parametrize("seed", sorted(CANDIDATE))
+def test_the_narrower_candidate_as_scored(seed):
+    cases = coverage.sample_cases(24, seed)
+    runs = coverage.load_runs(
+        ROOT / "data" / "error_bar_coverage" / f"3d_seed{seed}" / "runs.csv", cases)
+    table = coverage.score(cases, runs, ["corlab"], bar_scale=0.9)
+    for quantity, (inside, width) in CANDIDATE[seed].items():
+        t = table[f"corlab:{quantity}"]
+        assert t["covered"] == inside, f"seed {seed} {quantity}: {t['covered']} of 24 inside"
+        assert width - 0.01 <= t["width_ratio"] <= width, f"seed {seed} {quantity}"
+    if seed == 20261134:  # the rule: rejected for every quantity (width above 3)
+        assert all(table[f"corlab:{q}"]["width_ratio"] > 3.0 for q in CANDIDATE[seed])
+
+
 def test_score_counts_a_bar_that_misses():
     """score() itself: a case whose finer value lies outside its bar is a miss, one inside is
     covered (the bar of the `scatter` estimator from two companions, computed here by hand)."""

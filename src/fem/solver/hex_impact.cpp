@@ -176,10 +176,7 @@ HexModel make_model(const ImpactConfig& config) {
   m.contact = options.block ? solver::ContactKind::kBlockSurface : solver::ContactKind::kRigidPlane;
   for (const Body b : {Body::kSphere, Body::kSubstrate}) {
     const Material& mat = b == Body::kSphere ? config.sphere.material : config.substrate.material;
-    BodyMaterial& body = m.bodies[static_cast<std::size_t>(b)];
-    body.material = solver::material_point(mat);
-    body.density = mat.density;
-    body.wave_speed = mat.dilatational_wave_speed();
+    m.bodies[static_cast<std::size_t>(b)] = body_material(mat);
   }
   const double dt_critical = lump_masses(m);
   give_the_sphere_its_rigid_body_inertia(m, config);

@@ -49,6 +49,11 @@ struct BodyMaterial {
   double wave_speed = 0.0;  // c_d [m/s]
 };
 
+// The constants of the body of material `mat` [SI].
+inline BodyMaterial body_material(const Material& mat) {
+  return {solver::material_point(mat), mat.density, mat.dilatational_wave_speed()};
+}
+
 // A run of consecutive elements of one body [begin, end).
 struct HexElementRun {
   std::size_t begin = 0;
