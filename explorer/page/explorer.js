@@ -287,7 +287,8 @@ function downloadCsv() {
   document.body.append(a);
   a.click();
   a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
+  // Revoked late: a busy browser may start reading the blob seconds after the click.
+  setTimeout(() => URL.revokeObjectURL(url), 60000);
 }
 
 function copyButton(pre, label = "copy") {

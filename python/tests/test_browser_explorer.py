@@ -114,19 +114,34 @@ def test_dem_section_quotes_the_recommended_lammps_route(browser, corlab_bin,  #
     assert repr(routes["LAMMPS"]["max_abs_error"])[:8] in text
 
 
+def finished_download(folder, timeout=30.0):
+    """The one file chromium downloaded into folder, once it is complete: the final name can be
+    seen, empty, before chromium has written it (CI read 0 rows once, stop 53). Complete = no
+    NAME.crdownload left, and the file non-empty with the same size on two looks 0.2 s apart."""
+    end = time.monotonic() + timeout
+    last = None
+    while time.monotonic() < end:
+        files = sorted(folder.iterdir())
+        partial = [f for f in files if f.suffix == ".crdownload"]
+        done = [f for f in files if f.suffix != ".crdownload"]
+        if len(done) == 1 and not partial:
+            size = done[0].stat().st_size
+            if size > 0 and size == last:
+                return done[0]
+            last = size
+        time.sleep(0.2)
+    raise AssertionError(f"no finished download in {timeout} s: {list(folder.iterdir())}")
+
+
 def test_csv_download_holds_every_model_at_every_speed(browser, corlab_bin,  # noqa: F811
                                                        tmp_path):
     state = open_explorer(browser)
     browser.execute_cdp_cmd("Page.setDownloadBehavior",
                             {"behavior": "allow", "downloadPath": str(tmp_path)})
     browser.find_element("id", "download-csv").click()
-    end = time.monotonic() + 30
-    while not list(tmp_path.glob("*.csv")) and time.monotonic() < end:
-        time.sleep(0.1)
-    files = list(tmp_path.glob("*.csv"))
-    assert len(files) == 1, list(tmp_path.iterdir())
-    assert files[0].name == "corlab_e_v_alumina_ma2023_on_aluminium_ma2023.csv"
-    rows = list(csv.DictReader(io.StringIO(files[0].read_text())))
+    downloaded = finished_download(tmp_path)
+    assert downloaded.name == "corlab_e_v_alumina_ma2023_on_aluminium_ma2023.csv"
+    rows = list(csv.DictReader(io.StringIO(downloaded.read_text())))
     result = state["result"]
     assert len(rows) == len(result["models"]) * len(result["velocity"])
     v = result["velocity"]
