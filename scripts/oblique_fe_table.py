@@ -4,7 +4,9 @@ by speed and angle, with their error bars, as CSV (--out) and as Markdown on sta
 at each FE angle both digitisations of the measured points (each interpolated between its own
 points, absent outside them), whether the FE lies within their spread plus 0.02 in e_t and plus
 10 % in omega, and, given --mbf, the elastic theory of Maw, Barber & Fawcett
-(example_mbf_oblique_table).
+(example_mbf_oblique_table); then the readings against the sphere's rigid-body relation
+(consistency_markdown): where e_t and omega were both read, which omega the e_t readings imply
+and whether any model that obeys the relation can meet both bounds.
 
     build/bin/corlab sweep studies/oblique/kharaz2001.toml --out OUT --error-estimate
     /usr/bin/python3 scripts/oblique_fe_table.py OUT/results.csv --kharaz \\
@@ -24,7 +26,8 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "verification", "dem"))
-from dem_oblique_check import KHARAZ, interpolate, measured  # noqa: E402  (the DEM table's reading)
+# The DEM table's reading of the digitisations, and Kharaz's sphere radius [m].
+from dem_oblique_check import KHARAZ, RADIUS, interpolate, measured  # noqa: E402
 
 #: The digitisations of data/kharaz2001/measured_points.csv (column `source`), in table order.
 SOURCES = ("kratos_chung_ooi_2011", "mfix_di_renzo_di_maio_2004")
@@ -35,6 +38,9 @@ OMEGA_MARGIN = 0.10
 #: A digitisation's end point stands for an angle this close beyond it [deg] (the 2 deg row: the
 #: readings start at 2.03 and 2.24 deg).
 END_TOLERANCE_DEG = 0.25
+
+#: A homogeneous sphere's moment of inertia over m R^2 [-]: the relation below.
+GYRATION = 0.4
 
 #: The table's columns: the name there and the results.csv column it comes from.
 COLUMNS = (("impact_velocity", "velocity"), ("impact_angle_deg", "impact.angle"),
@@ -117,11 +123,7 @@ def within(value, readings, margin, relative):
     the reading where relative); '–' without a reading."""
     if not readings or math.isnan(value):
         return "–"
-    low, high = min(readings), max(readings)
-    if relative:
-        low, high = low * (1.0 - margin), high * (1.0 + margin)
-    else:
-        low, high = low - margin, high + margin
+    low, high = bounds(readings, margin, relative)
     return "yes" if low <= value <= high else "no (%+.3g)" % (
         value - (low if value < low else high))
 
@@ -150,6 +152,62 @@ def markdown(rows, mbf):
     return "\n".join(lines)
 
 
+def implied_omega(e_t, speed, angle, radius=RADIUS, gyration=GYRATION):
+    """The rebound spin [rad/s] that e_t [-] implies for a sphere of `radius` [m] hit at `speed`
+    [m/s] and `angle` [deg] from the normal, from rest: the tangential impulse acts at the contact
+    point, so m (1 - e_t) v_t = I omega / R, omega = (1 - e_t) v sin(angle) / (gyration R). Any
+    contact law whose force acts at the contact point obeys it (MBF exactly; the FE within its
+    lever arm R - delta and the normal pressure's offset)."""
+    return (1.0 - e_t) * speed * math.sin(math.radians(angle)) / (gyration * radius)
+
+
+def bounds(readings, margin, relative):
+    """[low, high] of `within`: the readings' spread widened by the margin."""
+    low, high = min(readings), max(readings)
+    if relative:
+        return low * (1.0 - margin), high * (1.0 + margin)
+    return low - margin, high + margin
+
+
+def consistency(angle, speed, d):
+    """The e_t and omega readings `d` (digitisations) at `angle` [deg], `speed` [m/s] against the
+    rigid-body relation: the omega their e_t implies [rad/s] (at the readings' mean), the measured
+    mean omega, and the e_t interval [-] that meets both the e_t bound and (through the relation)
+    the omega bound: (low, high), empty when low > high."""
+    e_low, e_high = bounds(d["e_t"], E_T_MARGIN, False)
+    w_low, w_high = bounds(d["omega"], OMEGA_MARGIN, True)
+    v_t = speed * math.sin(math.radians(angle))
+    # omega falls as e_t rises: the omega bound's high end gives the lowest e_t.
+    e_from_w = (1.0 - w_high * GYRATION * RADIUS / v_t, 1.0 - w_low * GYRATION * RADIUS / v_t)
+    e_t = sum(d["e_t"]) / len(d["e_t"])
+    return {"implied_omega": implied_omega(e_t, speed, angle),
+            "omega": sum(d["omega"]) / len(d["omega"]),
+            "both": (max(e_low, e_from_w[0]), min(e_high, e_from_w[1]))}
+
+
+def consistency_markdown(rows):
+    """Where both e_t and omega were read: the readings against the rigid-body relation, and the
+    FE's own (1 - e_t) v_t / (omega R)."""
+    lines = ["| θ [°] | e_t meas. (mean) | ω it implies [rad/s] | ω meas. (mean) | ratio "
+             "| e_t meeting both bounds | FE (1 − e_t) v_t / (ω R) |", "|" + " --- |" * 7]
+    for r in rows:
+        angle = float(r["impact_angle_deg"])
+        d = digitisations(angle)
+        if not d["e_t"] or not d["omega"]:
+            continue
+        speed = float(r["impact_velocity"])
+        c = consistency(angle, speed, d)
+        low, high = c["both"]
+        e_t, omega = number(r["e_t"]), number(r["omega"])
+        fe_ratio = (1.0 - e_t) * speed * math.sin(math.radians(angle)) / (omega * RADIUS)
+        lines.append("| %g | %.4f | %.1f | %.1f | %.3f | %s | %.4f |" % (
+            angle, sum(d["e_t"]) / len(d["e_t"]), c["implied_omega"], c["omega"],
+            c["omega"] / c["implied_omega"],
+            "%.4f – %.4f" % (low, high) if low <= high else "none (%.4f > %.4f)" % (low, high),
+            fe_ratio))
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("results", help="results.csv of the sweep, or a table written by --out")
@@ -169,6 +227,8 @@ def main():
         return
     mbf = mbf_rows(args.mbf, [r["impact_angle_deg"] for r in rows]) if args.mbf else {}
     print(markdown(rows, mbf))
+    print()
+    print(consistency_markdown(rows))
 
 
 if __name__ == "__main__":
