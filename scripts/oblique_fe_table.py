@@ -176,9 +176,9 @@ def consistency(angle, speed, d):
     the omega bound: (low, high), empty when low > high."""
     e_low, e_high = bounds(d["e_t"], E_T_MARGIN, False)
     w_low, w_high = bounds(d["omega"], OMEGA_MARGIN, True)
-    v_t = speed * math.sin(math.radians(angle))
-    # omega falls as e_t rises: the omega bound's high end gives the lowest e_t.
-    e_from_w = (1.0 - w_high * GYRATION * RADIUS / v_t, 1.0 - w_low * GYRATION * RADIUS / v_t)
+    # omega is linear in 1 - e_t and falls as e_t rises: omega's high end gives the lowest e_t.
+    per_unit = implied_omega(0.0, speed, angle)  # the spin [rad/s] at e_t = 0
+    e_from_w = (1.0 - w_high / per_unit, 1.0 - w_low / per_unit)
     e_t = sum(d["e_t"]) / len(d["e_t"])
     return {"implied_omega": implied_omega(e_t, speed, angle),
             "omega": sum(d["omega"]) / len(d["omega"]),
@@ -199,7 +199,7 @@ def consistency_markdown(rows):
         c = consistency(angle, speed, d)
         low, high = c["both"]
         e_t, omega = number(r["e_t"]), number(r["omega"])
-        fe_ratio = (1.0 - e_t) * speed * math.sin(math.radians(angle)) / (omega * RADIUS)
+        fe_ratio = GYRATION * implied_omega(e_t, speed, angle) / omega
         lines.append("| %g | %.4f | %.1f | %.1f | %.3f | %s | %.4f |" % (
             angle, sum(d["e_t"]) / len(d["e_t"]), c["implied_omega"], c["omega"],
             c["omega"] / c["implied_omega"],
