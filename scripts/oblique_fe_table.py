@@ -171,7 +171,7 @@ def bounds(readings, margin, relative):
 
 def consistency(angle, speed, d):
     """The e_t and omega readings `d` (digitisations) at `angle` [deg], `speed` [m/s] against the
-    rigid-body relation: the omega their e_t implies [rad/s] (at the readings' mean), the measured
+    rigid-body relation: the readings' mean e_t [-] and the omega it implies [rad/s], the measured
     mean omega, and the e_t interval [-] that meets both the e_t bound and (through the relation)
     the omega bound: (low, high), empty when low > high."""
     e_low, e_high = bounds(d["e_t"], E_T_MARGIN, False)
@@ -180,7 +180,7 @@ def consistency(angle, speed, d):
     per_unit = implied_omega(0.0, speed, angle)  # the spin [rad/s] at e_t = 0
     e_from_w = (1.0 - w_high / per_unit, 1.0 - w_low / per_unit)
     e_t = sum(d["e_t"]) / len(d["e_t"])
-    return {"implied_omega": implied_omega(e_t, speed, angle),
+    return {"e_t": e_t, "implied_omega": implied_omega(e_t, speed, angle),
             "omega": sum(d["omega"]) / len(d["omega"]),
             "both": (max(e_low, e_from_w[0]), min(e_high, e_from_w[1]))}
 
@@ -201,7 +201,7 @@ def consistency_markdown(rows):
         e_t, omega = number(r["e_t"]), number(r["omega"])
         fe_ratio = GYRATION * implied_omega(e_t, speed, angle) / omega
         lines.append("| %g | %.4f | %.1f | %.1f | %.3f | %s | %.4f |" % (
-            angle, sum(d["e_t"]) / len(d["e_t"]), c["implied_omega"], c["omega"],
+            angle, c["e_t"], c["implied_omega"], c["omega"],
             c["omega"] / c["implied_omega"],
             "%.4f – %.4f" % (low, high) if low <= high else "none (%.4f > %.4f)" % (low, high),
             fe_ratio))

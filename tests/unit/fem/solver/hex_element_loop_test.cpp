@@ -91,7 +91,8 @@ TEST(HexElementPass, ARigidTranslationLeavesNoStressAndNoForce) {
     }
     EXPECT_EQ(sums.bad_element, -1) << to_string(level);
     // The volume to round-off of coordinates up to 40 h.
-    EXPECT_NEAR(sums.omega_min, kSide * kSide * kSide, 1e-13 * kSide * kSide * kSide);
+    EXPECT_NEAR(sums.omega_min, kSide * kSide * kSide, 1e-13 * kSide * kSide * kSide)
+        << to_string(level);
     EXPECT_NEAR(sums.dt_min, row.cube_step(), 1e-14 * row.cube_step()) << to_string(level);
     const double work = 40.0 * 1e-12 * stress * 5.0 * kDt / kSide * kSide * kSide * kSide;  // [J]
     EXPECT_LE(std::abs(sums.internal_work), work) << to_string(level);
